@@ -1,0 +1,133 @@
+// The episode loop: sense -> decide (robot + humans) -> move all -> check -> record.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "crowdsim/agent_index.h"
+#include "crowdsim/collision_world.h"
+#include "crowdsim/lookahead.h"
+#include "crowdsim/policy.h"
+#include "crowdsim/scenario.h"
+#include "crowdsim/sensor.h"
+#include "crowdsim/sim_config.h"
+
+namespace crowdsim {
+
+enum class EpisodeStatus { kRunning, kSuccess, kCollisionHuman, kCollisionObstacle, kTimeout, kPolicyError };
+
+const char* EpisodeStatusName(EpisodeStatus s);
+
+/// A sensor configured on the robot.
+struct MountedSensor {
+  std::string name;       ///< plugin name, copied into SensorReading::sensor
+  const Sensor* sensor = nullptr;
+};
+
+/// The policies and sensors of one episode (not owned; reused across episodes by a worker).
+struct EpisodeAgents {
+  Policy* robot = nullptr;
+  std::vector<Policy*> humans;  ///< one per human in the scenario (or more)
+  std::vector<MountedSensor> sensors;
+};
+
+/// Positions of everybody at one time (rendering, tests).
+struct EpisodeFrame {
+  double time = 0.0;
+  AgentState robot;
+  std::vector<AgentState> humans;
+};
+
+/// Per-episode metrics (CrowdNav's and the paper's, plus ours).
+struct EpisodeResult {
+  EpisodeStatus status = EpisodeStatus::kRunning;
+  double time = 0.0;             ///< s at the end
+  int steps = 0;
+  int danger_steps = 0;          ///< steps with a human closer than discomfort_dist
+  double path_length = 0.0;      ///< m travelled by the robot
+  double min_human_distance = kInfinity;  ///< min surface distance robot-human over the episode
+  double discounted_return = 0.0;  ///< sum_t gamma^(t*dt*v_pref) r_t
+  double decision_time_us = 0.0;   ///< mean wall time of the robot's Decide
+  int humans_at_goal = 0;          ///< humans that reached their (first) goal
+  std::string error;               ///< policy_error message
+  std::vector<EpisodeFrame> trajectory;  ///< when recording
+};
+
+/// What one step did.
+struct StepInfo {
+  StepEvent event = StepEvent::kNone;
+  double reward = 0.0;
+  Action robot_action;
+  double min_human_distance = kInfinity;  ///< this step's swept surface distance
+};
+
+/// A running episode. Owns the state; the policies are borrowed.
+class Episode {
+ public:
+  Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAgents& agents,
+          bool record_trajectory = false);
+  ~Episode();
+
+  bool done() const { return result_.status != EpisodeStatus::kRunning; }
+  /// Advances one step (no-op when done).
+  StepInfo Step();
+  /// Runs to the end.
+  const EpisodeResult& Run();
+
+  const EpisodeResult& result() const { return result_; }
+  double time() const { return time_; }
+  const AgentState& robot() const { return robot_; }
+  std::span<const AgentState> humans() const { return humans_; }
+  const CollisionWorld& world() const { return world_; }
+  const Scenario& scenario() const { return scenario_; }
+  const SimConfig& sim() const { return sim_; }
+  /// The robot observation the last Step() gave to the robot policy.
+  const Observation& last_robot_observation() const { return robot_obs_; }
+
+ private:
+  class StepLookahead;
+  void Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
+             std::vector<SensorReading>* out) const;
+  void DecideHumans();
+  void Finish(EpisodeStatus status);
+  void Record();
+
+  const Scenario& scenario_;
+  SimConfig sim_;
+  EpisodeAgents agents_;
+  CollisionWorld world_;
+  bool record_;
+  PolicyNeeds robot_needs_;
+  std::vector<PolicyNeeds> human_needs_;
+
+  double time_ = 0.0;
+  int step_index_ = 0;
+  AgentState robot_;
+  std::vector<AgentState> humans_;
+  std::vector<std::size_t> human_goal_index_;
+  std::vector<bool> human_reached_;
+  std::vector<Action> human_actions_;
+  std::vector<AgentState> human_view_;   // agents humans see (humans + robot if visible)
+  AgentIndex human_index_;
+  Observation robot_obs_;
+  Observation human_obs_;
+  std::unique_ptr<StepLookahead> lookahead_;
+  double decision_time_total_us_ = 0.0;
+  EpisodeResult result_;
+};
+
+/// Evaluates what a robot move does, exactly as a real step would judge it (shared by the
+/// episode and the lookahead): swept robot-human test (CrowdNav: humans at their current
+/// velocity), swept robot-obstacle test, goal, discomfort, timeout.
+struct StepJudgement {
+  StepEvent event = StepEvent::kNone;
+  double reward = 0.0;
+  double min_human_distance = kInfinity;
+};
+StepJudgement JudgeRobotMove(const SimConfig& sim, const CollisionWorld& world,
+                             const AgentState& robot, const Vec2& robot_velocity,
+                             std::span<const AgentState> humans, double time_after);
+
+}  // namespace crowdsim

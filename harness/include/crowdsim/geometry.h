@@ -1,0 +1,68 @@
+// Plane geometry on axis-aligned rectangles and discs: the exact 2D narrow phase used by
+// collision checks and ray casts (Bullet culls, these functions decide).
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+
+namespace crowdsim {
+
+using Vec2 = Eigen::Vector2d;
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Axis-aligned rectangle given by its min and max corners (metres).
+struct Rect {
+  Vec2 min = Vec2::Zero();
+  Vec2 max = Vec2::Zero();
+
+  static Rect FromCorners(double x0, double y0, double x1, double y1) {
+    return Rect{Vec2(x0, y0), Vec2(x1, y1)};
+  }
+  Vec2 Center() const { return 0.5 * (min + max); }
+  Vec2 Size() const { return max - min; }
+  double Area() const { return (max.x() - min.x()) * (max.y() - min.y()); }
+  bool Contains(const Vec2& p) const {
+    return p.x() >= min.x() && p.x() <= max.x() && p.y() >= min.y() && p.y() <= max.y();
+  }
+  /// This rectangle grown by `margin` on every side (negative shrinks).
+  Rect Inflated(double margin) const {
+    return Rect{min - Vec2(margin, margin), max + Vec2(margin, margin)};
+  }
+  bool Overlaps(const Rect& o) const {
+    return min.x() < o.max.x() && o.min.x() < max.x() && min.y() < o.max.y() && o.min.y() < max.y();
+  }
+  bool operator==(const Rect& o) const { return min == o.min && max == o.max; }
+};
+
+/// Disc (agents are discs).
+struct Circle {
+  Vec2 center = Vec2::Zero();
+  double radius = 0.0;
+};
+
+/// z of the 3D cross product of two plane vectors.
+inline double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+/// Distance from point p to segment a-b (CrowdNav's point_to_segment_dist).
+double PointToSegmentDistance(const Vec2& a, const Vec2& b, const Vec2& p);
+
+/// Distance from point p to rectangle r (0 inside).
+double PointToRectDistance(const Vec2& p, const Rect& r);
+
+/// True if the disc (c, radius) and the rectangle share interior points.
+bool DiscOverlapsRect(const Vec2& c, double radius, const Rect& r);
+
+/// Distance along the ray origin + t * dir (dir unit length) to the first point of `r`,
+/// kInfinity when it misses. 0 when the origin is inside.
+double RayRectDistance(const Vec2& origin, const Vec2& dir, const Rect& r);
+
+/// Distance along the ray to the first point of the disc, kInfinity when it misses,
+/// 0 when the origin is inside.
+double RayCircleDistance(const Vec2& origin, const Vec2& dir, const Vec2& center, double radius);
+
+/// First contact of a disc of `radius` moving from a to b with rectangle r, as a fraction of
+/// the motion in [0, 1]; kInfinity when it never touches. 0 when it overlaps at a.
+double SweptDiscRectTime(const Vec2& a, const Vec2& b, double radius, const Rect& r);
+
+}  // namespace crowdsim

@@ -1,0 +1,43 @@
+// The plugin ABI: every plugin shared library exports exactly one descriptor through a
+// Boost.DLL alias. The host reads `abi_version` (always the first field) before anything else.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include <boost/dll/alias.hpp>
+
+#include "crowdsim/params.h"
+#include "crowdsim/policy.h"
+#include "crowdsim/sensor.h"
+#include "crowdsim/world_source.h"
+
+namespace crowdsim {
+
+/// Bump when any interface or this descriptor changes layout.
+inline constexpr std::uint32_t kPluginAbiVersion = 1;
+
+/// Name of the exported alias.
+inline constexpr const char* kPluginAliasName = "crowdsim_plugin_v1";
+
+enum class PluginKind : std::uint32_t { kPolicy = 1, kSensor = 2, kWorld = 3 };
+
+const char* PluginKindName(PluginKind k);
+
+/// The one object a plugin exports. Only the factory matching `kind` is set.
+struct PluginDescriptor {
+  std::uint32_t abi_version;  ///< must stay the first member
+  PluginKind kind;
+  const char* name;           ///< unique name used in suites (e.g. "orca")
+  const char* description;    ///< one line
+  ParamSchema (*schema)();
+  std::unique_ptr<Policy> (*make_policy)(const Params&);
+  std::unique_ptr<Sensor> (*make_sensor)(const Params&);
+  std::unique_ptr<WorldSource> (*make_world)(const Params&);
+};
+
+}  // namespace crowdsim
+
+/// Exports `descriptor` (a crowdsim::PluginDescriptor variable with external linkage in the
+/// plugin's namespace scope) under the ABI alias. Use once per plugin library.
+#define CROWDSIM_EXPORT_PLUGIN(descriptor) BOOST_DLL_ALIAS(descriptor, crowdsim_plugin_v1)

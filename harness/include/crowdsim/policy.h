@@ -1,0 +1,44 @@
+// Policy plugin interface: decides a velocity for the robot or a human.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "crowdsim/action.h"
+#include "crowdsim/observation.h"
+#include "crowdsim/sim_config.h"
+#include "crowdsim/static_map.h"
+
+namespace crowdsim {
+
+enum class AgentRole { kRobot, kHuman };
+
+/// What a policy needs from the harness (checked before the first episode).
+struct PolicyNeeds {
+  bool map = false;        ///< gets Observation::map (privileged knowledge of the layout)
+  bool lookahead = false;  ///< robot only: gets Observation::lookahead
+  std::vector<std::string> sensors;  ///< robot only: sensor names that must be configured
+};
+
+/// Per-episode context handed to Reset.
+struct EpisodeContext {
+  const StaticMap* map = nullptr;
+  SimConfig sim;
+  AgentRole role = AgentRole::kRobot;
+  std::uint64_t seed = 0;   ///< this agent's own stream for the episode
+  int agent_id = 0;         ///< 0 = robot, 1.. = humans
+};
+
+class Policy {
+ public:
+  virtual ~Policy();
+  /// What the harness must provide; called once after construction.
+  virtual PolicyNeeds Needs() const { return {}; }
+  /// Called at the start of every episode (reset internal state, read the map).
+  virtual void Reset(const EpisodeContext& ctx);
+  /// The action for this step. Throwing ends the episode with status policy_error.
+  virtual Action Decide(const Observation& obs) = 0;
+};
+
+}  // namespace crowdsim

@@ -1,0 +1,29 @@
+// Sensor plugin interface: turns the world state into a robot observation.
+#pragma once
+
+#include <span>
+
+#include "crowdsim/agent_state.h"
+#include "crowdsim/observation.h"
+
+namespace crowdsim {
+
+class CollisionWorld;
+
+/// A read-only snapshot a sensor reads (the real state, or a lookahead's propagated state).
+struct SenseInput {
+  const AgentState& robot;
+  const Frame& frame;                    ///< the robot's sensor frame
+  std::span<const AgentState> humans;
+  const CollisionWorld& world;           ///< static rectangles (Bullet) and ray casts
+};
+
+class Sensor {
+ public:
+  virtual ~Sensor();
+  /// Fills `out` (its `sensor` name is set by the harness). Must be thread-compatible:
+  /// const, no hidden mutable state, so lookahead can call it freely.
+  virtual void Sense(const SenseInput& in, SensorReading* out) const = 0;
+};
+
+}  // namespace crowdsim

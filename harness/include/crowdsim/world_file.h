@@ -1,0 +1,61 @@
+// The world file (YAML): one static layout with optional precomputed start/goal pairs and
+// free points, written by the generators/importers and read by world plugins.
+//
+//   format: crowdsim-world/1
+//   name: rect1_test_007
+//   attribution: "..."              # source credit (floor plans)
+//   bounds: [xmin, ymin, xmax, ymax]
+//   rectangles: [[xmin, ymin, xmax, ymax], ...]
+//   robot_pairs: {train: [[sx, sy, gx, gy], ...], test: [...]}
+//   free_points: [[x, y], ...]      # sampled free space for humans (floor plans)
+//   stats: {free_area_m2: 61.2, ...}
+//
+// A world set file holds many layouts: `format: crowdsim-world-set/1`, `worlds: [<world>...]`.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "crowdsim/static_map.h"
+
+namespace crowdsim {
+
+class WorldFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct StartGoal {
+  Vec2 start = Vec2::Zero();
+  Vec2 goal = Vec2::Zero();
+};
+
+struct WorldFile {
+  std::string name;
+  std::string attribution;
+  Rect bounds;
+  std::vector<Rect> rectangles;
+  std::vector<StartGoal> train_pairs;
+  std::vector<StartGoal> test_pairs;
+  std::vector<Vec2> free_points;
+  std::vector<std::pair<std::string, double>> stats;  ///< in file order
+
+  /// The static map of this world (rectangles and bounds).
+  StaticMap ToStaticMap() const;
+};
+
+/// Reads one world; throws WorldFileError naming the file, line and key.
+WorldFile ReadWorldFile(const std::filesystem::path& path);
+/// Reads a world set; throws WorldFileError.
+std::vector<WorldFile> ReadWorldSet(const std::filesystem::path& path);
+
+/// Writes byte-stable YAML (fixed precision: 4 decimals), so regenerating gives identical
+/// files. Throws WorldFileError when the file cannot be written.
+void WriteWorldFile(const WorldFile& world, const std::filesystem::path& path);
+void WriteWorldSet(const std::vector<WorldFile>& worlds, const std::string& comment,
+                   const std::filesystem::path& path);
+
+}  // namespace crowdsim

@@ -1,0 +1,79 @@
+#include "crowdsim/params.h"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace crowdsim {
+
+const char* ParamTypeName(ParamType t) {
+  switch (t) {
+    case ParamType::kBool: return "bool";
+    case ParamType::kInt: return "int";
+    case ParamType::kDouble: return "number";
+    case ParamType::kString: return "string";
+    case ParamType::kDoubleList: return "list of numbers";
+  }
+  return "unknown";
+}
+
+std::string FormatParamValue(const ParamValue& v) {
+  std::ostringstream os;
+  std::visit(
+      [&os](const auto& x) {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, bool>) {
+          os << (x ? "true" : "false");
+        } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+          os << "[";
+          for (size_t i = 0; i < x.size(); ++i) os << (i ? ", " : "") << x[i];
+          os << "]";
+        } else {
+          os << x;
+        }
+      },
+      v);
+  return os.str();
+}
+
+const ParamValue& Params::Get(const std::string& name) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) {
+    throw std::out_of_range("parameter '" + name + "' is not in the plugin's schema");
+  }
+  return it->second;
+}
+
+bool Params::GetBool(const std::string& name) const { return std::get<bool>(Get(name)); }
+
+std::int64_t Params::GetInt(const std::string& name) const {
+  return std::get<std::int64_t>(Get(name));
+}
+
+double Params::GetDouble(const std::string& name) const {
+  const ParamValue& v = Get(name);
+  if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
+  return std::get<double>(v);
+}
+
+const std::string& Params::GetString(const std::string& name) const {
+  return std::get<std::string>(Get(name));
+}
+
+const std::vector<double>& Params::GetDoubleList(const std::string& name) const {
+  return std::get<std::vector<double>>(Get(name));
+}
+
+std::filesystem::path Params::ResolvePath(const std::string& value) const {
+  std::filesystem::path p(value);
+  if (p.is_absolute()) return p;
+  if (!base_dir_.empty() && std::filesystem::exists(base_dir_ / p)) return base_dir_ / p;
+  return p;
+}
+
+Params Params::Defaults(const ParamSchema& schema, std::filesystem::path base_dir) {
+  std::map<std::string, ParamValue> values;
+  for (const auto& spec : schema) values[spec.name] = spec.default_value;
+  return Params(std::move(values), std::move(base_dir));
+}
+
+}  // namespace crowdsim

@@ -1,0 +1,218 @@
+#include "crowdsim/plugin_registry.h"
+
+#include <boost/dll/shared_library.hpp>
+#include <cstdlib>
+#include <sstream>
+
+namespace crowdsim {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kPrefix = "crowdsim_";
+constexpr const char* kSuffix = ".so";
+
+std::vector<fs::path> DefaultSearchDirs() {
+  std::vector<fs::path> dirs{PluginRegistry::BuildPluginDir()};
+  if (const char* env = std::getenv("CROWDSIM_PLUGIN_PATH")) {
+    std::stringstream ss(env);
+    std::string item;
+    while (std::getline(ss, item, ':')) {
+      if (!item.empty()) dirs.emplace_back(item);
+    }
+  }
+  return dirs;
+}
+
+bool LooksLikePath(const std::string& s) {
+  return s.find('/') != std::string::npos || (s.size() > 3 && s.ends_with(kSuffix));
+}
+
+// Holds the library alive as long as the object made from it.
+template <typename T>
+struct Holder {
+  std::shared_ptr<boost::dll::shared_library> library;  // destroyed last
+  std::unique_ptr<T> object;
+};
+
+template <typename T>
+std::shared_ptr<T> Wrap(std::shared_ptr<boost::dll::shared_library> lib, std::unique_ptr<T> obj) {
+  auto holder = std::make_shared<Holder<T>>();
+  holder->library = std::move(lib);
+  holder->object = std::move(obj);
+  T* raw = holder->object.get();
+  return std::shared_ptr<T>(holder, raw);
+}
+
+template <typename T, typename Factory>
+std::shared_ptr<T> Make(const LoadedPlugin& p, PluginKind kind, Factory factory,
+                        const Params& params) {
+  const char* name = p.descriptor->name;
+  if (p.descriptor->kind != kind || factory == nullptr) {
+    throw PluginError("plugin '" + std::string(name) + "' (" + p.path.string() + ") is a " +
+                      PluginKindName(p.descriptor->kind) + " plugin, not a " +
+                      PluginKindName(kind) + " plugin, or it sets no " + PluginKindName(kind) +
+                      " factory. Use it where a " + PluginKindName(p.descriptor->kind) +
+                      " is expected, or fix its descriptor.");
+  }
+  std::unique_ptr<T> obj;
+  try {
+    obj = factory(params);
+  } catch (const std::exception& e) {
+    throw PluginError("plugin '" + std::string(name) + "' (" + p.path.string() +
+                      ") failed to create its " + PluginKindName(kind) + ": " + e.what() +
+                      ". Check its parameters against `crowdsim-bench list-plugins`.");
+  } catch (...) {
+    throw PluginError("plugin '" + std::string(name) + "' (" + p.path.string() +
+                      ") threw a non-standard exception from its factory. Fix the plugin.");
+  }
+  if (!obj) {
+    throw PluginError("plugin '" + std::string(name) + "' (" + p.path.string() +
+                      ") returned no object from its factory. Fix the plugin.");
+  }
+  return Wrap<T>(p.library, std::move(obj));
+}
+
+}  // namespace
+
+fs::path PluginRegistry::BuildPluginDir() { return CROWDSIM_BUILD_PLUGIN_DIR; }
+
+fs::path DataRoot() {
+  if (const char* env = std::getenv("CROWDSIM_DATA_DIR"); env && *env) return env;
+  return fs::path(CROWDSIM_BUILD_PLUGIN_DIR).parent_path().parent_path();
+}
+
+PluginRegistry::PluginRegistry() : search_dirs_(DefaultSearchDirs()) {}
+PluginRegistry::PluginRegistry(std::vector<fs::path> search_dirs)
+    : search_dirs_(std::move(search_dirs)) {}
+
+fs::path PluginRegistry::Resolve(const std::string& name_or_path) const {
+  if (LooksLikePath(name_or_path)) {
+    fs::path p(name_or_path);
+    if (!fs::exists(p)) {
+      throw PluginError("plugin file '" + name_or_path +
+                        "' does not exist. Give the path of a built plugin (.so), or a plugin "
+                        "name to search the plugin folders.");
+    }
+    return p;
+  }
+  std::string searched;
+  for (const auto& dir : search_dirs_) {
+    fs::path candidate = dir / (kPrefix + name_or_path + kSuffix);
+    if (fs::exists(candidate)) return candidate;
+    searched += "\n  " + candidate.string();
+  }
+  throw PluginError("no plugin named '" + name_or_path + "' was found; looked for:" + searched +
+                    "\nRun `crowdsim-bench list-plugins` to see the available plugins, build "
+                    "the project, add the folder of yours to CROWDSIM_PLUGIN_PATH, or give the "
+                    "path of its .so file.");
+}
+
+const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
+  std::error_code ec;
+  fs::path canonical = fs::weakly_canonical(path, ec);
+  if (ec) canonical = path;
+  const std::string key = canonical.string();
+  if (auto it = loaded_.find(key); it != loaded_.end()) return *it->second;
+
+  auto lib = std::make_shared<boost::dll::shared_library>();
+  try {
+    lib->load(canonical, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
+  } catch (const std::exception& e) {
+    throw PluginError("cannot load plugin file '" + key + "': " + e.what() +
+                      ". It is not a loadable shared library for this machine, or one of its "
+                      "dependencies is missing (check with `ldd " + key + "`). Rebuild it "
+                      "against this version of crowdsim-bench.");
+  }
+  if (!lib->has(kPluginAliasName)) {
+    throw PluginError("'" + key + "' is a shared library but not a crowdsim-bench plugin: it "
+                      "exports no '" + std::string(kPluginAliasName) + "' symbol. A plugin "
+                      "defines a crowdsim::PluginDescriptor and exports it with "
+                      "CROWDSIM_EXPORT_PLUGIN(descriptor) (see plugins/linear for an example).");
+  }
+  // Read the version through the alias before touching the rest of the descriptor.
+  const auto& version = lib->get_alias<const std::uint32_t>(kPluginAliasName);
+  if (version != kPluginAbiVersion) {
+    throw PluginError("plugin '" + key + "' was built for plugin ABI version " +
+                      std::to_string(version) + ", but this crowdsim-bench expects version " +
+                      std::to_string(kPluginAbiVersion) +
+                      ". Rebuild the plugin against the headers of this crowdsim-bench.");
+  }
+  const auto& desc = lib->get_alias<const PluginDescriptor>(kPluginAliasName);
+  if (desc.name == nullptr || desc.description == nullptr || desc.schema == nullptr) {
+    throw PluginError("plugin '" + key + "' has an incomplete descriptor (name, description "
+                      "and schema are required). Fix the plugin's descriptor.");
+  }
+  auto loaded = std::make_unique<LoadedPlugin>();
+  loaded->path = canonical;
+  loaded->library = std::move(lib);
+  loaded->descriptor = &desc;
+  try {
+    loaded->schema = desc.schema();
+  } catch (const std::exception& e) {
+    throw PluginError("plugin '" + key + "' threw while reporting its parameter schema: " +
+                      e.what() + ". Fix the plugin.");
+  }
+  const LoadedPlugin& ref = *loaded;
+  loaded_[key] = std::move(loaded);
+  return ref;
+}
+
+const LoadedPlugin& PluginRegistry::LoadAny(const std::string& name_or_path) {
+  return LoadPath(Resolve(name_or_path));
+}
+
+const LoadedPlugin& PluginRegistry::Load(const std::string& name_or_path, PluginKind kind) {
+  const LoadedPlugin& p = LoadAny(name_or_path);
+  if (p.descriptor->kind != kind) {
+    throw PluginError("plugin '" + name_or_path + "' (" + p.path.string() + ") is a " +
+                      PluginKindName(p.descriptor->kind) + " plugin, but a " +
+                      PluginKindName(kind) + " plugin is needed here. Run `crowdsim-bench "
+                      "list-plugins` to see the " + PluginKindName(kind) + " plugins.");
+  }
+  return p;
+}
+
+PluginRegistry::Found PluginRegistry::Discover() {
+  Found found;
+  std::map<std::string, bool> seen;
+  for (const auto& dir : search_dirs_) {
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) continue;
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+      const std::string file = entry.path().filename().string();
+      if (file.starts_with(kPrefix) && file.ends_with(kSuffix)) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+      const std::string file = f.filename().string();
+      const std::string name = file.substr(9, file.size() - 9 - 3);
+      if (seen[name]) continue;
+      seen[name] = true;
+      try {
+        found.plugins.push_back(&LoadPath(f));
+      } catch (const PluginError& e) {
+        found.problems.push_back(e.what());
+      }
+    }
+  }
+  return found;
+}
+
+std::shared_ptr<Policy> PluginRegistry::MakePolicy(const LoadedPlugin& p,
+                                                   const Params& params) const {
+  return Make<Policy>(p, PluginKind::kPolicy, p.descriptor->make_policy, params);
+}
+
+std::shared_ptr<Sensor> PluginRegistry::MakeSensor(const LoadedPlugin& p,
+                                                   const Params& params) const {
+  return Make<Sensor>(p, PluginKind::kSensor, p.descriptor->make_sensor, params);
+}
+
+std::shared_ptr<WorldSource> PluginRegistry::MakeWorld(const LoadedPlugin& p,
+                                                       const Params& params) const {
+  return Make<WorldSource>(p, PluginKind::kWorld, p.descriptor->make_world, params);
+}
+
+}  // namespace crowdsim

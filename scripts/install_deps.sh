@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages crowdsim-bench needs. Idempotent: installs only what is
+# missing, runs `apt-get update` at most once, and does nothing when all is present.
+# Usage: scripts/install_deps.sh [--no-torch]
+set -euo pipefail
+
+packages=(
+  build-essential cmake ccache pkg-config
+  libeigen3-dev libbullet-dev libyaml-cpp-dev
+  libboost-dev libboost-filesystem-dev libboost-system-dev
+  libboost-serialization-dev libboost-program-options-dev
+  libompl-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libpng-dev libcairo2-dev
+)
+if [[ "${1:-}" != "--no-torch" ]]; then
+  packages+=(libtorch-dev libopenblas0-pthread)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install_deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+echo "install_deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
