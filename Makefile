@@ -1,0 +1,36 @@
+# crowdsim-bench entry points. `make run` and `make test` do everything on a fresh Debian 12
+# machine: install what is missing (scripts/install_deps.sh), configure, build, run.
+BUILD ?= build
+JOBS ?= $(shell nproc)
+SUITE ?= suites/quick.yaml
+CMAKE_FLAGS ?=
+
+.PHONY: all deps configure build run test bench clean
+
+all: build
+
+deps:
+	@scripts/install_deps.sh
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+configure: deps $(BUILD)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD) -j$(JOBS)
+
+# Runs the default suite and prints its table.
+run: build
+	$(BUILD)/bin/crowdsim-bench run $(SUITE)
+
+# Builds and runs every unit and integration test (ctest prints its summary).
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 900
+
+# Runs every Google Benchmark (one core each, one after another).
+bench: build
+	@for b in $(BUILD)/bench/*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
+
+clean:
+	rm -rf $(BUILD)

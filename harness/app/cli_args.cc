@@ -1,0 +1,62 @@
+#include "cli_args.h"
+
+#include <algorithm>
+
+namespace crowdsim::cli {
+
+Args Args::Parse(const std::vector<std::string>& args, const std::vector<std::string>& with_value,
+                 const std::vector<std::string>& flags) {
+  Args a;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& s = args[i];
+    if (!s.starts_with("--")) {
+      a.positional.push_back(s);
+      continue;
+    }
+    std::string name = s, value;
+    bool inline_value = false;
+    if (auto eq = s.find('='); eq != std::string::npos) {
+      name = s.substr(0, eq);
+      value = s.substr(eq + 1);
+      inline_value = true;
+    }
+    if (std::find(flags.begin(), flags.end(), name) != flags.end()) {
+      if (inline_value) throw UsageError(name + " takes no value");
+      a.options[name] = "";
+    } else if (std::find(with_value.begin(), with_value.end(), name) != with_value.end()) {
+      if (!inline_value) {
+        if (i + 1 >= args.size()) throw UsageError(name + " needs a value");
+        value = args[++i];
+      }
+      a.options[name] = value;
+    } else {
+      std::string valid;
+      for (const auto& o : with_value) valid += " " + o;
+      for (const auto& o : flags) valid += " " + o;
+      throw UsageError("unknown option '" + name + "' (valid:" + (valid.empty() ? " none" : valid) + ")");
+    }
+  }
+  return a;
+}
+
+std::optional<std::string> Args::Get(const std::string& name) const {
+  auto it = options.find(name);
+  if (it == options.end()) return std::nullopt;
+  return it->second;
+}
+
+int Args::GetInt(const std::string& name, int fallback, int lo, int hi) const {
+  auto v = Get(name);
+  if (!v) return fallback;
+  try {
+    size_t used = 0;
+    const long x = std::stol(*v, &used);
+    if (used != v->size() || x < lo || x > hi) throw std::out_of_range("");
+    return static_cast<int>(x);
+  } catch (const std::exception&) {
+    throw UsageError(name + " must be a whole number in [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "], got '" + *v + "'");
+  }
+}
+
+}  // namespace crowdsim::cli

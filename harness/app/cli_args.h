@@ -1,0 +1,32 @@
+// Minimal command-line parsing for the crowdsim-bench subcommands.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace crowdsim::cli {
+
+/// A usage problem; main prints it with the subcommand's usage.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Positional arguments and --options of one subcommand.
+struct Args {
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> options;  ///< "--out" -> "DIR"; flags map to ""
+
+  /// Parses `args`; `with_value` names the options that take a value, `flags` those that do not.
+  static Args Parse(const std::vector<std::string>& args, const std::vector<std::string>& with_value,
+                    const std::vector<std::string>& flags);
+  bool Has(const std::string& name) const { return options.count(name) != 0; }
+  std::optional<std::string> Get(const std::string& name) const;
+  /// Integer option within [lo, hi], or `fallback` when absent.
+  int GetInt(const std::string& name, int fallback, int lo, int hi) const;
+};
+
+}  // namespace crowdsim::cli

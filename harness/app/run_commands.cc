@@ -1,0 +1,114 @@
+// run, validate and list-plugins.
+#include <cstdio>
+#include <iostream>
+#include <thread>
+
+#include "cli_args.h"
+#include "commands.h"
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/runner.h"
+#include "crowdsim/suite.h"
+
+namespace crowdsim::cli {
+namespace {
+
+/// Loads a suite or prints every error; nullopt on errors.
+std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry) {
+  SuiteLoadResult r = LoadSuite(file, registry);
+  if (!r.suite) {
+    for (const auto& e : r.errors) std::cerr << "error: " << e.Format() << "\n";
+    std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file << "\n";
+  }
+  return std::move(r.suite);
+}
+
+}  // namespace
+
+int RunCommand(const std::vector<std::string>& args) {
+  const Args a = Args::Parse(args, {"--out", "--jobs", "--episodes"}, {"--fresh", "--quiet"});
+  if (a.positional.size() != 1) throw UsageError("run needs exactly one suite file");
+  PluginRegistry registry;
+  auto suite = LoadOrReport(a.positional[0], registry);
+  if (!suite) return 2;
+  RunOptions opt;
+  if (auto out = a.Get("--out")) opt.out_dir = *out;
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  opt.jobs = a.GetInt("--jobs", hw, 1, 1024);
+  opt.episodes = a.GetInt("--episodes", -1, 1, 10'000'000);
+  opt.fresh = a.Has("--fresh");
+  opt.progress = !a.Has("--quiet");
+  try {
+    RunSummary s = RunSuite(*suite, registry, opt);
+    std::cout << "## " << suite->name;
+    if (!suite->description.empty()) std::cout << ": " << suite->description;
+    std::cout << "\n\n" << s.table_markdown << "\n";
+    std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
+              << s.episodes_run << " episodes run, " << s.episodes_resumed << " resumed)\n";
+  } catch (const RunError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+int ValidateCommand(const std::vector<std::string>& args) {
+  const Args a = Args::Parse(args, {}, {});
+  if (a.positional.empty()) throw UsageError("validate needs at least one suite file");
+  int status = 0;
+  for (const auto& file : a.positional) {
+    PluginRegistry registry;
+    auto suite = LoadOrReport(file, registry);
+    if (!suite) {
+      status = 2;
+      continue;
+    }
+    std::cout << file << ": ok (" << suite->rows.size() << " rows x " << suite->episodes
+              << " episodes, config hash " << suite->ConfigHash() << ")\n";
+  }
+  return status;
+}
+
+int ListPluginsCommand(const std::vector<std::string>& args) {
+  const Args a = Args::Parse(args, {}, {});
+  PluginRegistry registry;
+  for (const auto& p : a.positional) {
+    try {
+      registry.LoadAny(p);
+    } catch (const PluginError& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  std::cout << "plugin folders:";
+  for (const auto& d : registry.search_dirs()) std::cout << " " << d.string();
+  std::cout << "\n";
+  auto found = registry.Discover();
+  for (const auto& p : a.positional) found.plugins.push_back(&registry.LoadAny(p));
+  for (PluginKind kind : {PluginKind::kPolicy, PluginKind::kSensor, PluginKind::kWorld}) {
+    std::cout << "\n" << PluginKindName(kind) << " plugins:\n";
+    for (const auto* p : found.plugins) {
+      if (p->descriptor->kind != kind) continue;
+      std::cout << "  " << p->descriptor->name << " - " << p->descriptor->description << "\n"
+                << "      file: " << p->path.string() << "\n";
+      for (const auto& s : p->schema) {
+        std::cout << "      " << s.name << " (" << ParamTypeName(s.type)
+                  << ", default " << FormatParamValue(s.default_value);
+        if (s.type == ParamType::kInt || s.type == ParamType::kDouble || s.type == ParamType::kDoubleList) {
+          if (std::isfinite(s.min) || std::isfinite(s.max)) std::cout << ", range [" << s.min << ", " << s.max << "]";
+        }
+        if (!s.choices.empty()) {
+          std::cout << ", one of";
+          for (const auto& c : s.choices) std::cout << " " << c;
+        }
+        std::cout << "): " << s.doc << "\n";
+      }
+    }
+  }
+  if (!found.problems.empty()) {
+    std::cout << "\nfiles that failed to load:\n";
+    for (const auto& p : found.problems) std::cout << "  " << p << "\n";
+  }
+  return 0;
+}
+
+}  // namespace crowdsim::cli

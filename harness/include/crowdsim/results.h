@@ -1,0 +1,64 @@
+// Result files of a suite run: episodes.csv (one line per finished episode, appended as they
+// finish, so a crash loses nothing), table.md / table.csv (the paper's columns), manifest.json.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "crowdsim/metrics.h"
+#include "crowdsim/suite.h"
+
+namespace crowdsim {
+
+/// One line of episodes.csv.
+struct EpisodeLine {
+  std::string row;        ///< row label
+  int episode = 0;
+  std::uint64_t seed = 0;
+  std::string layout;
+  EpisodeRecord record;
+  int humans_at_goal = 0;
+  std::string error;
+};
+
+/// Header line of episodes.csv.
+std::string EpisodeCsvHeader();
+/// One CSV line (no newline).
+std::string FormatEpisodeLine(const EpisodeLine& e);
+/// Reads an episodes.csv; lines that are cut short (a crash mid-write) are skipped.
+std::vector<EpisodeLine> ReadEpisodesCsv(const std::filesystem::path& path);
+
+/// One finished row of the table.
+struct TableRow {
+  const RowSpec* spec = nullptr;
+  RowMetrics metrics;
+};
+
+std::string FormatTableMarkdown(const Suite& suite, const std::vector<TableRow>& rows);
+std::string FormatTableCsv(const Suite& suite, const std::vector<TableRow>& rows);
+
+/// Facts recorded in manifest.json besides the suite.
+struct RunFacts {
+  std::string started_utc;
+  std::string finished_utc;
+  int jobs = 1;
+  int episodes = 0;
+  double wall_seconds = 0.0;
+  std::map<std::string, std::string> world_identities;  ///< per row label
+};
+std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& rows,
+                               const RunFacts& facts);
+
+/// Reads the config_hash recorded in a manifest.json ("" if absent or unreadable).
+std::string ReadManifestConfigHash(const std::filesystem::path& path);
+
+/// Writes text to `path` atomically (temporary file, then rename).
+void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
+
+/// Current UTC time as ISO 8601.
+std::string NowUtc();
+
+}  // namespace crowdsim

@@ -1,0 +1,75 @@
+// A suite: the experiment description (YAML) resolved against the plugins it names.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "crowdsim/params.h"
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/sim_config.h"
+#include "crowdsim/world_source.h"
+
+namespace crowdsim {
+
+/// One problem in a suite file, located exactly.
+struct SuiteError {
+  std::string file;
+  int line = 0;    ///< 1-based; 0 = whole file
+  int column = 0;  ///< 1-based
+  std::string key_path;  ///< e.g. rows[1].sensors[0].beams
+  std::string message;   ///< what is wrong, the offending value and the valid choices
+  std::string Format() const;
+};
+
+/// A plugin chosen in the suite, with validated parameters.
+struct PluginUse {
+  std::string plugin;                    ///< name or .so path as written
+  const LoadedPlugin* loaded = nullptr;  ///< owned by the registry
+  Params params;
+};
+
+/// The humans of a row.
+struct HumansSpec {
+  int count = 5;
+  PluginUse policy;
+  HumanGoalMode goal_mode = HumanGoalMode::kStay;
+};
+
+/// One table row: a robot policy with its sensors in a world with humans.
+struct RowSpec {
+  std::string label;
+  PluginUse policy;
+  std::vector<PluginUse> sensors;
+  PluginUse world;
+  HumansSpec humans;
+  std::vector<std::pair<std::string, std::string>> info;  ///< extra table columns (model, ...)
+};
+
+struct Suite {
+  std::string name;
+  std::string description;
+  std::filesystem::path file;
+  int episodes = 500;
+  std::uint64_t seed = 0;
+  SimConfig sim;
+  std::vector<std::string> info_columns;  ///< order of the extra columns
+  std::vector<RowSpec> rows;
+  /// Canonical text of everything that decides the results (not the episode count); its
+  /// hash tells whether stored results can be resumed.
+  std::string canonical;
+  std::string ConfigHash() const;
+};
+
+struct SuiteLoadResult {
+  std::optional<Suite> suite;
+  std::vector<SuiteError> errors;  ///< every error found (empty when suite is set)
+};
+
+/// Reads and validates a suite; loads the plugins it names to check their parameters.
+SuiteLoadResult LoadSuite(const std::filesystem::path& file, PluginRegistry& registry);
+
+}  // namespace crowdsim

@@ -1,0 +1,244 @@
+#include "crowdsim/episode.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "crowdsim/rng.h"
+
+namespace crowdsim {
+
+const char* EpisodeStatusName(EpisodeStatus s) {
+  switch (s) {
+    case EpisodeStatus::kRunning: return "running";
+    case EpisodeStatus::kSuccess: return "success";
+    case EpisodeStatus::kCollisionHuman: return "collision_human";
+    case EpisodeStatus::kCollisionObstacle: return "collision_obstacle";
+    case EpisodeStatus::kTimeout: return "timeout";
+    case EpisodeStatus::kPolicyError: return "policy_error";
+  }
+  return "unknown";
+}
+
+/// The episode's lookahead for the current step: human actions are already decided (they do
+/// not depend on the robot's choice), so every candidate sees the same next crowd.
+class Episode::StepLookahead final : public Lookahead {
+ public:
+  explicit StepLookahead(const Episode& e) : e_(e) {}
+
+  void Prepare() {
+    next_humans_.assign(e_.humans_.begin(), e_.humans_.end());
+    for (size_t i = 0; i < next_humans_.size(); ++i) {
+      next_humans_[i].velocity = e_.human_actions_[i].velocity;
+      next_humans_[i].position += e_.human_actions_[i].velocity * e_.sim_.time_step;
+    }
+  }
+
+  std::span<const AgentState> NextHumans() const override { return next_humans_; }
+
+  void Evaluate(std::span<const Action> actions, std::vector<LookaheadOutcome>* out) const override {
+    out->resize(actions.size());
+    const double time_after = e_.time_ + e_.sim_.time_step;
+    for (size_t k = 0; k < actions.size(); ++k) {
+      LookaheadOutcome& o = (*out)[k];
+      const Vec2& v = actions[k].velocity;
+      const StepJudgement j =
+          JudgeRobotMove(e_.sim_, e_.world_, e_.robot_, v, e_.humans_, time_after);
+      o.reward = j.reward;
+      o.event = j.event;
+      o.robot = e_.robot_;
+      o.robot.position += v * e_.sim_.time_step;
+      o.robot.velocity = v;
+      o.robot.heading = HeadingToGoal(o.robot);
+      o.frame = Frame::Make(o.robot.position, o.robot.heading);
+      e_.Sense(o.robot, o.frame, next_humans_, &o.readings);
+    }
+  }
+
+ private:
+  const Episode& e_;
+  std::vector<AgentState> next_humans_;
+};
+
+Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAgents& agents,
+                 bool record_trajectory)
+    : scenario_(scenario),
+      sim_(sim),
+      agents_(agents),
+      world_(scenario.map),
+      record_(record_trajectory) {
+  if (agents_.robot == nullptr) throw std::invalid_argument("episode needs a robot policy");
+  if (agents_.humans.size() < scenario_.humans.size()) {
+    throw std::invalid_argument("episode needs one human policy per human");
+  }
+  robot_.position = scenario_.robot_start;
+  robot_.goal = scenario_.robot_goal;
+  robot_.radius = sim_.robot_radius;
+  robot_.v_pref = sim_.robot_v_pref;
+  robot_.heading = HeadingToGoal(robot_);
+  for (const auto& h : scenario_.humans) {
+    AgentState s;
+    s.position = h.start;
+    s.goal = h.goals.empty() ? h.start : h.goals.front();
+    s.radius = h.radius;
+    s.v_pref = h.v_pref;
+    s.heading = HeadingToGoal(s);
+    humans_.push_back(s);
+  }
+  human_goal_index_.assign(humans_.size(), 0);
+  human_reached_.assign(humans_.size(), false);
+  human_actions_.resize(humans_.size());
+  lookahead_ = std::make_unique<StepLookahead>(*this);
+
+  robot_needs_ = agents_.robot->Needs();
+  human_needs_.reserve(humans_.size());
+  for (size_t i = 0; i < humans_.size(); ++i) human_needs_.push_back(agents_.humans[i]->Needs());
+
+  try {
+    EpisodeContext ctx{scenario_.map.get(), sim_, AgentRole::kRobot, SplitMix64(scenario_.seed), 0};
+    agents_.robot->Reset(ctx);
+    for (size_t i = 0; i < humans_.size(); ++i) {
+      ctx.role = AgentRole::kHuman;
+      ctx.agent_id = static_cast<int>(i) + 1;
+      ctx.seed = SplitMix64(scenario_.seed + i + 1);
+      agents_.humans[i]->Reset(ctx);
+    }
+  } catch (const std::exception& e) {
+    result_.error = std::string("Reset failed: ") + e.what();
+    Finish(EpisodeStatus::kPolicyError);
+  }
+  Record();
+}
+
+Episode::~Episode() = default;
+
+void Episode::Sense(const AgentState& robot, const Frame& frame,
+                    std::span<const AgentState> humans, std::vector<SensorReading>* out) const {
+  out->resize(agents_.sensors.size());
+  const SenseInput input{robot, frame, humans, world_};
+  for (size_t s = 0; s < agents_.sensors.size(); ++s) {
+    SensorReading& r = (*out)[s];
+    r.sensor = agents_.sensors[s].name;
+    agents_.sensors[s].sensor->Sense(input, &r);
+  }
+}
+
+void Episode::DecideHumans() {
+  // Humans see each other (and the robot when it is visible) through a neighbour index.
+  human_view_.assign(humans_.begin(), humans_.end());
+  if (sim_.robot_visible) human_view_.push_back(robot_);
+  human_index_.Rebuild(human_view_);
+  human_obs_.time = time_;
+  human_obs_.time_step = sim_.time_step;
+  human_obs_.agents = &human_index_;
+  for (size_t i = 0; i < humans_.size(); ++i) {
+    // Next goal of a goal sequence once this one is reached.
+    AgentState& h = humans_[i];
+    const auto& goals = scenario_.humans[i].goals;
+    if ((h.position - h.goal).norm() < h.radius) {
+      human_reached_[i] = true;
+      if (human_goal_index_[i] + 1 < goals.size()) h.goal = goals[++human_goal_index_[i]];
+    }
+    human_obs_.self = h;
+    human_obs_.frame = Frame::Make(h.position, HeadingToGoal(h));
+    human_obs_.self_index = static_cast<int>(i);
+    human_obs_.map = human_needs_[i].map ? scenario_.map.get() : nullptr;
+    human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
+    if (!human_actions_[i].velocity.allFinite()) {
+      throw std::runtime_error("human " + std::to_string(i) + "'s policy returned a non-finite velocity");
+    }
+  }
+}
+
+StepInfo Episode::Step() {
+  StepInfo info;
+  if (done()) return info;
+  const double dt = sim_.time_step;
+  try {
+    DecideHumans();
+    robot_.heading = HeadingToGoal(robot_);
+    robot_obs_.time = time_;
+    robot_obs_.time_step = dt;
+    robot_obs_.self = robot_;
+    robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
+    Sense(robot_, robot_obs_.frame, humans_, &robot_obs_.readings);
+    robot_obs_.map = robot_needs_.map ? scenario_.map.get() : nullptr;
+    if (robot_needs_.lookahead) {
+      lookahead_->Prepare();
+      robot_obs_.lookahead = lookahead_.get();
+    } else {
+      robot_obs_.lookahead = nullptr;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    info.robot_action = agents_.robot->Decide(robot_obs_);
+    decision_time_total_us_ +=
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    if (!info.robot_action.velocity.allFinite()) {
+      throw std::runtime_error("the robot's policy returned a non-finite velocity");
+    }
+  } catch (const std::exception& e) {
+    result_.error = e.what();
+    Finish(EpisodeStatus::kPolicyError);
+    return info;
+  }
+
+  // Check (on the pre-move state, CrowdNav's order), then move everybody at once.
+  const double time_after = (step_index_ + 1) * dt;
+  const StepJudgement j =
+      JudgeRobotMove(sim_, world_, robot_, info.robot_action.velocity, humans_, time_after);
+  info.event = j.event;
+  info.reward = j.reward;
+  info.min_human_distance = j.min_human_distance;
+
+  const Vec2& v = info.robot_action.velocity;
+  robot_.position += v * dt;
+  robot_.velocity = v;
+  result_.path_length += v.norm() * dt;
+  for (size_t i = 0; i < humans_.size(); ++i) {
+    humans_[i].velocity = human_actions_[i].velocity;
+    humans_[i].position += human_actions_[i].velocity * dt;
+  }
+
+  // Record.
+  result_.discounted_return +=
+      std::pow(sim_.gamma, step_index_ * dt * sim_.robot_v_pref) * info.reward;
+  result_.min_human_distance = std::min(result_.min_human_distance, j.min_human_distance);
+  if (j.event == StepEvent::kDanger) ++result_.danger_steps;
+  ++step_index_;
+  time_ = step_index_ * dt;
+  Record();
+  switch (j.event) {
+    case StepEvent::kSuccess: Finish(EpisodeStatus::kSuccess); break;
+    case StepEvent::kCollisionHuman: Finish(EpisodeStatus::kCollisionHuman); break;
+    case StepEvent::kCollisionObstacle: Finish(EpisodeStatus::kCollisionObstacle); break;
+    case StepEvent::kTimeout: Finish(EpisodeStatus::kTimeout); break;
+    default: break;
+  }
+  return info;
+}
+
+const EpisodeResult& Episode::Run() {
+  while (!done()) Step();
+  return result_;
+}
+
+void Episode::Finish(EpisodeStatus status) {
+  result_.status = status;
+  result_.time = time_;
+  result_.steps = step_index_;
+  result_.decision_time_us = step_index_ > 0 ? decision_time_total_us_ / step_index_ : 0.0;
+  int at_goal = 0;
+  for (size_t i = 0; i < humans_.size(); ++i) {
+    if (human_reached_[i] || (humans_[i].position - humans_[i].goal).norm() < humans_[i].radius) {
+      ++at_goal;
+    }
+  }
+  result_.humans_at_goal = at_goal;
+}
+
+void Episode::Record() {
+  if (!record_) return;
+  result_.trajectory.push_back(EpisodeFrame{time_, robot_, humans_});
+}
+
+}  // namespace crowdsim

@@ -1,0 +1,279 @@
+#include "crowdsim/runner.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include "crowdsim/episode.h"
+#include "crowdsim/rng.h"
+
+namespace crowdsim {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The plugin objects of one row inside one worker (never shared between threads).
+struct RowInstance {
+  std::shared_ptr<Policy> robot;
+  std::vector<std::shared_ptr<Sensor>> sensors;
+  std::vector<std::shared_ptr<Policy>> humans;
+  EpisodeAgents agents;
+};
+
+class RowFactory {
+ public:
+  RowFactory(const RowSpec& row, PluginRegistry& registry) : row_(row), registry_(registry) {}
+
+  std::unique_ptr<RowInstance> Make() const {
+    auto inst = std::make_unique<RowInstance>();
+    inst->robot = registry_.MakePolicy(*row_.policy.loaded, row_.policy.params);
+    inst->agents.robot = inst->robot.get();
+    for (const auto& s : row_.sensors) {
+      inst->sensors.push_back(registry_.MakeSensor(*s.loaded, s.params));
+      inst->agents.sensors.push_back({s.loaded->descriptor->name, inst->sensors.back().get()});
+    }
+    return inst;
+  }
+
+  void EnsureHumans(RowInstance* inst, size_t count) const {
+    while (inst->humans.size() < count) {
+      inst->humans.push_back(registry_.MakePolicy(*row_.humans.policy.loaded, row_.humans.policy.params));
+      inst->agents.humans.push_back(inst->humans.back().get());
+    }
+  }
+
+ private:
+  const RowSpec& row_;
+  PluginRegistry& registry_;
+};
+
+/// Progress on stderr: rewritten in place on a terminal, a line every 10% otherwise.
+class Progress {
+ public:
+  Progress(std::string name, int total, int already, bool enabled)
+      : name_(std::move(name)), total_(total), done_(already), start_done_(already),
+        enabled_(enabled), tty_(isatty(STDERR_FILENO)), start_(Clock::now()) {}
+
+  void Episode(bool success) {
+    ++done_;
+    ++run_;
+    if (success) ++success_;
+    if (!enabled_) return;
+    const auto now = Clock::now();
+    const int decile = total_ > 0 ? done_ * 10 / total_ : 10;
+    if (tty_ ? (now - last_ > std::chrono::milliseconds(200) || done_ == total_)
+             : (decile != last_decile_)) {
+      last_ = now;
+      last_decile_ = decile;
+      Print(now);
+    }
+  }
+
+  void Finish() {
+    if (enabled_ && tty_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  void Print(Clock::time_point now) {
+    const double secs = std::chrono::duration<double>(now - start_).count();
+    const double rate = secs > 0 ? run_ / secs : 0.0;
+    const double eta = rate > 0 ? (total_ - done_) / rate : 0.0;
+    std::fprintf(stderr, "%s[%s] %d/%d episodes  %.1f ep/s  ETA %.0fs  success so far %.3f%s",
+                 tty_ ? "\r" : "", name_.c_str(), done_, total_, rate, eta,
+                 run_ > 0 ? static_cast<double>(success_) / run_ : 0.0, tty_ ? "   " : "\n");
+    std::fflush(stderr);
+  }
+
+  std::string name_;
+  int total_, done_, start_done_, run_ = 0, success_ = 0;
+  bool enabled_, tty_;
+  Clock::time_point start_, last_{};
+  int last_decile_ = -1;
+};
+
+}  // namespace
+
+RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  RunFacts facts;
+  facts.started_utc = NowUtc();
+  facts.jobs = std::max(1, options.jobs);
+  const int episodes = options.episodes > 0 ? options.episodes : suite.episodes;
+  facts.episodes = episodes;
+
+  RunSummary summary;
+  summary.out_dir = options.out_dir.empty() ? fs::path("results") / suite.name : options.out_dir;
+  std::error_code ec;
+  fs::create_directories(summary.out_dir, ec);
+  if (ec || !fs::is_directory(summary.out_dir)) {
+    throw RunError("cannot create the output folder '" + summary.out_dir.string() + "': " +
+                   ec.message() + ". Choose another with --out.");
+  }
+  const fs::path episodes_csv = summary.out_dir / "episodes.csv";
+  const fs::path manifest = summary.out_dir / "manifest.json";
+
+  // Preflight: build every row's objects once, so a bad parameter stops the run before any
+  // episode, with the plugin's own message.
+  std::vector<std::shared_ptr<WorldSource>> worlds;
+  std::vector<RowFactory> factories;
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    const RowSpec& row = suite.rows[r];
+    const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
+    try {
+      worlds.push_back(registry.MakeWorld(*row.world.loaded, row.world.params));
+      factories.emplace_back(row, registry);
+      auto probe = factories.back().Make();
+      factories.back().EnsureHumans(probe.get(), 1);
+      const PolicyNeeds needs = probe->robot->Needs();
+      for (const auto& needed : needs.sensors) {
+        const bool have = std::any_of(row.sensors.begin(), row.sensors.end(), [&](const PluginUse& s) {
+          return s.loaded->descriptor->name == needed;
+        });
+        if (!have) {
+          throw RunError(where + ": policy '" + row.policy.plugin + "' needs the sensor '" + needed +
+                         "'; add it to the row's sensors list");
+        }
+      }
+    } catch (const PluginError& e) {
+      throw RunError(where + ": " + e.what());
+    }
+    facts.world_identities[row.label] = worlds.back()->Identity();
+  }
+
+  // Resume: keep the finished episodes of the same configuration.
+  std::map<std::pair<std::string, int>, EpisodeLine> done;
+  if (fs::exists(episodes_csv) && !options.fresh) {
+    const std::string stored = ReadManifestConfigHash(manifest);
+    if (stored != suite.ConfigHash()) {
+      throw RunError("'" + summary.out_dir.string() + "' holds results of a different configuration "
+                     "of this suite (config hash " + (stored.empty() ? "unknown" : stored) +
+                     ", now " + suite.ConfigHash() + "). Pass --fresh to replace them, or --out "
+                     "to write elsewhere.");
+    }
+    for (auto& line : ReadEpisodesCsv(episodes_csv)) {
+      done[{line.row, line.episode}] = std::move(line);
+    }
+  }
+  // Rewrite the stored lines cleanly (drops a line cut short by a crash), then append.
+  {
+    std::string text = EpisodeCsvHeader() + "\n";
+    for (const auto& [key, line] : done) text += FormatEpisodeLine(line) + "\n";
+    WriteFileAtomically(episodes_csv, text);
+    WriteFileAtomically(manifest, FormatManifestJson(suite, {}, facts));
+  }
+
+  struct Task {
+    int row;
+    int episode;
+  };
+  std::vector<Task> tasks;
+  int resumed = 0;
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    for (int k = 0; k < episodes; ++k) {
+      if (done.count({suite.rows[r].label, k})) {
+        ++resumed;
+      } else {
+        tasks.push_back({static_cast<int>(r), k});
+      }
+    }
+  }
+  summary.episodes_resumed = resumed;
+
+  std::ofstream out(episodes_csv, std::ios::app);
+  if (!out) throw RunError("cannot append to " + episodes_csv.string());
+  std::mutex mutex;
+  std::atomic<size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::string failure;
+  Progress progress(suite.name, static_cast<int>(suite.rows.size()) * episodes, resumed,
+                    options.progress);
+
+  auto worker = [&]() {
+    std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());
+    while (!failed) {
+      const size_t t = next.fetch_add(1);
+      if (t >= tasks.size()) break;
+      const Task task = tasks[t];
+      const RowSpec& row = suite.rows[task.row];
+      EpisodeLine line;
+      line.row = row.label;
+      line.episode = task.episode;
+      try {
+        auto& inst = instances[task.row];
+        if (!inst) inst = factories[task.row].Make();
+        const WorldSource& world = *worlds[task.row];
+        ScenarioRequest req;
+        req.seed = DeriveSeed(suite.seed, world.Identity(), static_cast<std::uint64_t>(task.episode));
+        req.episode_index = task.episode;
+        req.num_humans = row.humans.count;
+        req.goal_mode = row.humans.goal_mode;
+        req.sim = suite.sim;
+        const Scenario scenario = world.Make(req);
+        factories[task.row].EnsureHumans(inst.get(), scenario.humans.size());
+        Episode episode(scenario, suite.sim, inst->agents);
+        const EpisodeResult& result = episode.Run();
+        line.seed = req.seed;
+        line.layout = scenario.layout;
+        line.record = ToRecord(result);
+        line.humans_at_goal = result.humans_at_goal;
+        line.error = result.error;
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failed) failure = "row '" + row.label + "', episode " + std::to_string(task.episode) + ": " + e.what();
+        failed = true;
+        break;
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      out << FormatEpisodeLine(line) << "\n";
+      out.flush();
+      progress.Episode(line.record.status == EpisodeStatus::kSuccess);
+      done[{line.row, line.episode}] = std::move(line);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < facts.jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& th : threads) th.join();
+  progress.Finish();
+  out.close();
+  if (failed) throw RunError(failure + " (finished episodes are kept in " + episodes_csv.string() + "; rerun to resume)");
+  summary.episodes_run = static_cast<int>(tasks.size());
+
+  // Final files: episodes in (row, episode) order, so any job count gives the same file.
+  std::string text = EpisodeCsvHeader() + "\n";
+  std::set<std::string> labels;
+  for (const auto& row : suite.rows) {
+    std::vector<EpisodeRecord> records;
+    for (int k = 0; k < episodes; ++k) {
+      const EpisodeLine& line = done.at({row.label, k});
+      text += FormatEpisodeLine(line) + "\n";
+      records.push_back(line.record);
+    }
+    labels.insert(row.label);
+    summary.rows.push_back(TableRow{&row, Aggregate(records, suite.sim.time_limit)});
+  }
+  // Keep stored episodes of this configuration beyond the requested count (a later, longer
+  // run resumes from them).
+  for (const auto& [key, line] : done) {
+    if (labels.count(key.first) && key.second >= episodes) text += FormatEpisodeLine(line) + "\n";
+  }
+  WriteFileAtomically(episodes_csv, text);
+  summary.table_markdown = FormatTableMarkdown(suite, summary.rows);
+  WriteFileAtomically(summary.out_dir / "table.md", summary.table_markdown);
+  WriteFileAtomically(summary.out_dir / "table.csv", FormatTableCsv(suite, summary.rows));
+  facts.finished_utc = NowUtc();
+  facts.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  WriteFileAtomically(manifest, FormatManifestJson(suite, summary.rows, facts));
+  return summary;
+}
+
+}  // namespace crowdsim

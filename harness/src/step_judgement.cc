@@ -1,0 +1,49 @@
+// The rules that decide how a robot move ends: shared by real steps and the lookahead, so a
+// value-based policy is judged by exactly the rules it plans with.
+#include <cmath>
+
+#include "crowdsim/episode.h"
+
+namespace crowdsim {
+
+StepJudgement JudgeRobotMove(const SimConfig& sim, const CollisionWorld& world,
+                             const AgentState& robot, const Vec2& robot_velocity,
+                             std::span<const AgentState> humans, double time_after) {
+  StepJudgement j;
+  const double dt = sim.time_step;
+  // CrowdNav's swept test: each human keeps its current velocity, the robot takes its new
+  // action; the closest approach of the two centres over the step decides.
+  bool hit_human = false;
+  const Vec2 origin = Vec2::Zero();
+  for (const auto& h : humans) {
+    const Vec2 p = h.position - robot.position;
+    const Vec2 e = p + (h.velocity - robot_velocity) * dt;
+    const double d = PointToSegmentDistance(p, e, origin) - h.radius - robot.radius;
+    if (d < 0.0) hit_human = true;
+    j.min_human_distance = std::min(j.min_human_distance, d);
+  }
+  const Vec2 end = robot.position + robot_velocity * dt;
+  const bool hit_obstacle =
+      !hit_human && world.SweepDisc(robot.position, end, robot.radius).fraction <= 1.0;
+  const bool reached = (end - robot.goal).norm() < sim.goal_radius;
+
+  if (hit_human) {
+    j.event = StepEvent::kCollisionHuman;
+    j.reward = sim.collision_penalty;
+  } else if (hit_obstacle) {
+    j.event = StepEvent::kCollisionObstacle;
+    j.reward = sim.collision_penalty;
+  } else if (reached) {
+    j.event = StepEvent::kSuccess;
+    j.reward = sim.success_reward;
+  } else if (time_after >= sim.time_limit - 1e-9) {
+    j.event = StepEvent::kTimeout;
+    j.reward = 0.0;
+  } else if (j.min_human_distance < sim.discomfort_dist) {
+    j.event = StepEvent::kDanger;
+    j.reward = (j.min_human_distance - sim.discomfort_dist) * sim.discomfort_penalty_factor * dt;
+  }
+  return j;
+}
+
+}  // namespace crowdsim

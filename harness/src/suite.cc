@@ -1,0 +1,534 @@
+#include "crowdsim/suite.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include "crowdsim/rng.h"
+
+namespace crowdsim {
+namespace fs = std::filesystem;
+
+std::string SuiteError::Format() const {
+  std::ostringstream os;
+  os << file;
+  if (line > 0) os << ":" << line << ":" << column;
+  os << ": ";
+  if (!key_path.empty()) os << key_path << ": ";
+  os << message;
+  return os.str();
+}
+
+std::string Suite::ConfigHash() const {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : canonical) {
+    h ^= c;
+    h *= 0x100000001b3ULL;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(SplitMix64(h)));
+  return buf;
+}
+
+namespace {
+
+std::string Join(const std::vector<std::string>& v, const char* sep = ", ") {
+  std::string s;
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+  return s;
+}
+
+/// True for a node that holds something (a missing key and an explicit null do not).
+bool Present(const YAML::Node& n) { return n.IsDefined() && !n.IsNull(); }
+
+std::string Scalar(const YAML::Node& n) {
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list";
+  if (n.IsMap()) return "a map";
+  return "nothing";
+}
+
+/// Collects errors while walking the suite document.
+class Reader {
+ public:
+  Reader(std::string file, PluginRegistry& registry) : file_(std::move(file)), registry_(registry) {}
+
+  std::vector<SuiteError> errors;
+
+  void Error(const YAML::Node& at, const std::string& path, const std::string& message) {
+    SuiteError e;
+    e.file = file_;
+    const YAML::Mark m = at.Mark();
+    if (m.line >= 0) {
+      e.line = m.line + 1;
+      e.column = m.column + 1;
+    }
+    e.key_path = path;
+    e.message = message;
+    errors.push_back(std::move(e));
+  }
+
+  /// Unknown keys are errors (a typo never becomes a silent default).
+  void CheckKeys(const YAML::Node& map, const std::string& path, const std::vector<std::string>& valid) {
+    for (const auto& kv : map) {
+      const std::string key = kv.first.Scalar();
+      if (std::find(valid.begin(), valid.end(), key) == valid.end()) {
+        Error(kv.first, Child(path, key), "unknown key '" + key + "' (valid keys: " + Join(valid) + ")");
+      }
+    }
+  }
+
+  static std::string Child(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+  static std::string Index(const std::string& path, size_t i) {
+    return path + "[" + std::to_string(i) + "]";
+  }
+
+  bool IsMap(const YAML::Node& n, const std::string& path, const char* what) {
+    if (n.IsMap()) return true;
+    Error(n, path, std::string("must be a map (") + what + "), found " + Scalar(n));
+    return false;
+  }
+
+  std::optional<double> Number(const YAML::Node& n, const std::string& path, double lo, double hi,
+                               bool lo_open = false) {
+    double v = 0;
+    try {
+      if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
+      v = n.as<double>();
+    } catch (const YAML::Exception&) {
+      Error(n, path, "must be a number, found " + Scalar(n));
+      return std::nullopt;
+    }
+    if (!std::isfinite(v) || v < lo || v > hi || (lo_open && v == lo)) {
+      std::ostringstream os;
+      os << "value " << n.Scalar() << " is out of range; valid: " << (lo_open ? "(" : "[") << lo
+         << ", " << hi << "]";
+      Error(n, path, os.str());
+      return std::nullopt;
+    }
+    return v;
+  }
+
+  std::optional<std::int64_t> Integer(const YAML::Node& n, const std::string& path,
+                                      std::int64_t lo, std::int64_t hi) {
+    std::int64_t v = 0;
+    try {
+      if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
+      v = n.as<std::int64_t>();
+    } catch (const YAML::Exception&) {
+      Error(n, path, "must be a whole number, found " + Scalar(n));
+      return std::nullopt;
+    }
+    if (v < lo || v > hi) {
+      Error(n, path, "value " + n.Scalar() + " is out of range; valid: [" + std::to_string(lo) +
+                         ", " + std::to_string(hi) + "]");
+      return std::nullopt;
+    }
+    return v;
+  }
+
+  std::optional<bool> Bool(const YAML::Node& n, const std::string& path) {
+    try {
+      if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
+      return n.as<bool>();
+    } catch (const YAML::Exception&) {
+      Error(n, path, "must be true or false, found " + Scalar(n));
+      return std::nullopt;
+    }
+  }
+
+  std::optional<std::string> String(const YAML::Node& n, const std::string& path) {
+    if (!n.IsScalar()) {
+      Error(n, path, "must be a text value, found " + Scalar(n));
+      return std::nullopt;
+    }
+    return n.Scalar();
+  }
+
+  /// Loads a plugin of `kind`; on failure records the error with the choices.
+  const LoadedPlugin* Plugin(const YAML::Node& n, const std::string& path, PluginKind kind) {
+    auto name = String(n, path);
+    if (!name) return nullptr;
+    try {
+      return &registry_.Load(*name, kind);
+    } catch (const PluginError& e) {
+      std::string msg = e.what();
+      if (msg.starts_with("no plugin named")) {
+        msg = "unknown " + std::string(PluginKindName(kind)) + " plugin '" + *name +
+              "' (valid: " + Join(Available(kind)) + "; or the path of a plugin .so file)";
+      }
+      Error(n, path, msg);
+      return nullptr;
+    }
+  }
+
+  std::vector<std::string> Available(PluginKind kind) {
+    if (!discovered_) {
+      found_ = registry_.Discover();
+      discovered_ = true;
+    }
+    std::vector<std::string> names;
+    for (const auto* p : found_.plugins) {
+      if (p->descriptor->kind == kind) names.push_back(p->descriptor->name);
+    }
+    return names;
+  }
+
+  /// Validates `node`'s keys (minus `skip`) against the plugin's schema.
+  Params ParamsFor(const LoadedPlugin& p, const YAML::Node& node, const std::set<std::string>& skip,
+                   const std::string& path, const fs::path& base_dir) {
+    std::map<std::string, ParamValue> values;
+    for (const auto& spec : p.schema) values[spec.name] = spec.default_value;
+    if (Present(node) && node.IsMap()) {
+      for (const auto& kv : node) {
+        const std::string key = kv.first.Scalar();
+        if (skip.count(key)) continue;
+        const std::string kpath = Child(path, key);
+        auto it = std::find_if(p.schema.begin(), p.schema.end(),
+                               [&](const ParamSpec& s) { return s.name == key; });
+        if (it == p.schema.end()) {
+          std::vector<std::string> names;
+          for (const auto& s : p.schema) names.push_back(s.name);
+          Error(kv.first, kpath, "unknown parameter '" + key + "' for " +
+                                     PluginKindName(p.descriptor->kind) + " plugin '" +
+                                     p.descriptor->name + "' (valid: " +
+                                     (names.empty() ? std::string("none") : Join(names)) + ")");
+          continue;
+        }
+        if (auto v = Value(*it, kv.second, kpath)) values[key] = *v;
+      }
+    }
+    return Params(std::move(values), base_dir);
+  }
+
+  std::optional<ParamValue> Value(const ParamSpec& spec, const YAML::Node& n, const std::string& path) {
+    switch (spec.type) {
+      case ParamType::kBool:
+        if (auto b = Bool(n, path)) return ParamValue(*b);
+        return std::nullopt;
+      case ParamType::kInt: {
+        const auto lo = std::isfinite(spec.min) ? static_cast<std::int64_t>(std::ceil(spec.min))
+                                                : std::numeric_limits<std::int64_t>::min();
+        const auto hi = std::isfinite(spec.max) ? static_cast<std::int64_t>(std::floor(spec.max))
+                                                : std::numeric_limits<std::int64_t>::max();
+        if (auto i = Integer(n, path, lo, hi)) return ParamValue(*i);
+        return std::nullopt;
+      }
+      case ParamType::kDouble:
+        if (auto d = Number(n, path, spec.min, spec.max)) return ParamValue(*d);
+        return std::nullopt;
+      case ParamType::kString: {
+        auto s = String(n, path);
+        if (!s) return std::nullopt;
+        if (!spec.choices.empty() &&
+            std::find(spec.choices.begin(), spec.choices.end(), *s) == spec.choices.end()) {
+          Error(n, path, "value '" + *s + "' is not valid; valid: " + Join(spec.choices));
+          return std::nullopt;
+        }
+        return ParamValue(*s);
+      }
+      case ParamType::kDoubleList: {
+        if (!n.IsSequence()) {
+          Error(n, path, "must be a list of numbers, found " + Scalar(n));
+          return std::nullopt;
+        }
+        std::vector<double> list;
+        for (size_t i = 0; i < n.size(); ++i) {
+          auto d = Number(n[i], Index(path, i), spec.min, spec.max);
+          if (!d) return std::nullopt;
+          list.push_back(*d);
+        }
+        return ParamValue(list);
+      }
+    }
+    return std::nullopt;
+  }
+
+ private:
+  std::string file_;
+  PluginRegistry& registry_;
+  bool discovered_ = false;
+  PluginRegistry::Found found_;
+};
+
+void ReadSim(Reader& r, const YAML::Node& n, SimConfig* sim) {
+  if (!r.IsMap(n, "sim", "simulation settings")) return;
+  struct Field {
+    const char* key;
+    double* target;
+    double lo, hi;
+    bool lo_open;
+  };
+  const double inf = kInfinity;
+  std::vector<Field> fields = {
+      {"time_step", &sim->time_step, 0.0, 10.0, true},
+      {"time_limit", &sim->time_limit, 0.0, 1e6, true},
+      {"goal_radius", &sim->goal_radius, 0.0, 10.0, true},
+      {"discomfort_dist", &sim->discomfort_dist, 0.0, 10.0, false},
+      {"robot_radius", &sim->robot_radius, 0.0, 10.0, true},
+      {"robot_v_pref", &sim->robot_v_pref, 0.0, 100.0, true},
+      {"human_radius", &sim->human_radius, 0.0, 10.0, true},
+      {"human_v_pref", &sim->human_v_pref, 0.0, 100.0, true},
+      {"success_reward", &sim->success_reward, -inf, inf, false},
+      {"collision_penalty", &sim->collision_penalty, -inf, inf, false},
+      {"discomfort_penalty_factor", &sim->discomfort_penalty_factor, 0.0, inf, false},
+      {"gamma", &sim->gamma, 0.0, 1.0, true},
+  };
+  std::vector<std::string> keys;
+  for (const auto& f : fields) keys.push_back(f.key);
+  keys.push_back("robot_visible");
+  r.CheckKeys(n, "sim", keys);
+  for (const auto& f : fields) {
+    if (n[f.key]) {
+      if (auto v = r.Number(n[f.key], Reader::Child("sim", f.key), f.lo, f.hi, f.lo_open)) *f.target = *v;
+    }
+  }
+  if (n["robot_visible"]) {
+    if (auto b = r.Bool(n["robot_visible"], "sim.robot_visible")) sim->robot_visible = *b;
+  }
+}
+
+struct Defaults {
+  YAML::Node world{YAML::NodeType::Undefined};
+  YAML::Node humans{YAML::NodeType::Undefined};
+  YAML::Node sensors{YAML::NodeType::Undefined};
+};
+
+void ReadWorld(Reader& r, const YAML::Node& n, const std::string& path, const fs::path& base,
+               PluginUse* out) {
+  if (!r.IsMap(n, path, "source: <world plugin> and its parameters")) return;
+  if (!n["source"]) {
+    r.Error(n, path, "missing key 'source' (the world plugin, e.g. random_rect, floorplan, crowdnav)");
+    return;
+  }
+  out->plugin = n["source"].Scalar();
+  out->loaded = r.Plugin(n["source"], Reader::Child(path, "source"), PluginKind::kWorld);
+  if (out->loaded) out->params = r.ParamsFor(*out->loaded, n, {"source"}, path, base);
+}
+
+void ReadHumans(Reader& r, const YAML::Node& suite_level, const YAML::Node& row_level,
+                const std::string& path, const fs::path& base, HumansSpec* out) {
+  // Row keys override suite keys one by one.
+  const std::vector<std::string> keys = {"count", "policy", "params", "goal_mode"};
+  auto pick = [&](const char* key) -> std::pair<YAML::Node, std::string> {
+    if (Present(row_level) && row_level.IsMap() && Present(row_level[key])) return {row_level[key], Reader::Child(path, key)};
+    if (Present(suite_level) && suite_level.IsMap() && Present(suite_level[key])) return {suite_level[key], Reader::Child("humans", key)};
+    return {YAML::Node(YAML::NodeType::Undefined), ""};
+  };
+  if (Present(row_level)) {
+    if (r.IsMap(row_level, path, "count, policy, params, goal_mode")) r.CheckKeys(row_level, path, keys);
+  }
+  if (auto [n, p] = pick("count"); Present(n)) {
+    if (auto c = r.Integer(n, p, 0, 10000)) out->count = static_cast<int>(*c);
+  }
+  if (auto [n, p] = pick("goal_mode"); Present(n)) {
+    if (auto s = r.String(n, p)) {
+      if (*s == "stay") out->goal_mode = HumanGoalMode::kStay;
+      else if (*s == "new_goal") out->goal_mode = HumanGoalMode::kNewGoal;
+      else r.Error(n, p, "value '" + *s + "' is not valid; valid: stay, new_goal");
+    }
+  }
+  auto [pn, pp] = pick("policy");
+  YAML::Node default_policy(out->count > 0 ? "orca" : "linear");
+  const YAML::Node policy_node = Present(pn) ? pn : default_policy;
+  out->policy.plugin = policy_node.Scalar();
+  out->policy.loaded = r.Plugin(policy_node, Present(pn) ? pp : std::string("humans.policy (default)"), PluginKind::kPolicy);
+  auto [params, params_path] = pick("params");
+  if (Present(params) && !r.IsMap(params, params_path, "policy parameters")) return;
+  if (out->policy.loaded) out->policy.params = r.ParamsFor(*out->policy.loaded, params, {}, params_path, base);
+}
+
+void ReadSensors(Reader& r, const YAML::Node& n, const std::string& path, const fs::path& base,
+                 std::vector<PluginUse>* out) {
+  if (!n.IsSequence()) {
+    r.Error(n, path, "must be a list of sensors, e.g. [person, {type: lidar2d, beams: 45}]");
+    return;
+  }
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string p = Reader::Index(path, i);
+    const YAML::Node item = n[i];
+    PluginUse use;
+    YAML::Node type_node;
+    if (item.IsScalar()) {
+      type_node = item;
+    } else if (item.IsMap() && item["type"]) {
+      type_node = item["type"];
+    } else {
+      r.Error(item, p, "a sensor is a plugin name (person) or a map with 'type' and its parameters");
+      continue;
+    }
+    use.plugin = type_node.Scalar();
+    use.loaded = r.Plugin(type_node, item.IsMap() ? Reader::Child(p, "type") : p, PluginKind::kSensor);
+    if (use.loaded) use.params = r.ParamsFor(*use.loaded, item.IsMap() ? item : YAML::Node(YAML::NodeType::Undefined), {"type"}, p, base);
+    out->push_back(std::move(use));
+  }
+}
+
+void ReadRow(Reader& r, const YAML::Node& n, size_t index, const Defaults& d, const fs::path& base,
+             RowSpec* row) {
+  const std::string path = Reader::Index("rows", index);
+  if (!r.IsMap(n, path, "policy, sensors, ...")) return;
+  r.CheckKeys(n, path, {"label", "policy", "params", "weights", "sensors", "world", "humans", "info"});
+  if (!n["policy"]) {
+    r.Error(n, path, "missing key 'policy' (a policy plugin name such as linear or orca, or a .so path)");
+  } else {
+    row->policy.plugin = n["policy"].Scalar();
+    row->policy.loaded = r.Plugin(n["policy"], Reader::Child(path, "policy"), PluginKind::kPolicy);
+  }
+  row->label = n["label"] ? n["label"].Scalar() : row->policy.plugin;
+  if (n["params"] && !r.IsMap(n["params"], Reader::Child(path, "params"), "policy parameters")) return;
+  if (row->policy.loaded) {
+    row->policy.params = r.ParamsFor(*row->policy.loaded, n["params"], {}, Reader::Child(path, "params"), base);
+    if (n["weights"]) {
+      const auto& schema = row->policy.loaded->schema;
+      const bool takes = std::any_of(schema.begin(), schema.end(), [](const ParamSpec& s) { return s.name == "weights"; });
+      if (!takes) {
+        r.Error(n["weights"], Reader::Child(path, "weights"),
+                "policy '" + row->policy.plugin + "' takes no weights (it has no 'weights' parameter)");
+      } else if (auto w = r.String(n["weights"], Reader::Child(path, "weights"))) {
+        row->policy.params.Set("weights", *w);
+      }
+    }
+  }
+  const YAML::Node sensors = n["sensors"] ? n["sensors"] : d.sensors;
+  if (Present(sensors)) ReadSensors(r, sensors, n["sensors"] ? Reader::Child(path, "sensors") : "robot.sensors", base, &row->sensors);
+  if (n["world"]) {
+    ReadWorld(r, n["world"], Reader::Child(path, "world"), base, &row->world);
+  } else if (Present(d.world)) {
+    ReadWorld(r, d.world, "world", base, &row->world);
+  } else {
+    r.Error(n, path, "no world: give 'world' at the top of the suite or in this row");
+  }
+  ReadHumans(r, d.humans, n["humans"], Reader::Child(path, "humans"), base, &row->humans);
+  if (const auto info = n["info"]) {
+    if (r.IsMap(info, Reader::Child(path, "info"), "extra table columns")) {
+      for (const auto& kv : info) {
+        if (!kv.second.IsScalar()) {
+          r.Error(kv.second, Reader::Child(Reader::Child(path, "info"), kv.first.Scalar()), "must be a single value");
+          continue;
+        }
+        row->info.emplace_back(kv.first.Scalar(), kv.second.Scalar());
+      }
+    }
+  }
+}
+
+void Canonical(const PluginUse& u, std::ostream& os) {
+  os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
+  for (const auto& [k, v] : u.params.values()) os << k << "=" << FormatParamValue(v) << ";";
+  os << "}";
+}
+
+}  // namespace
+
+SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
+  SuiteLoadResult result;
+  Reader r(file.string(), registry);
+  YAML::Node root;
+  if (!fs::exists(file)) {
+    result.errors.push_back({file.string(), 0, 0, "", "suite file does not exist"});
+    return result;
+  }
+  try {
+    root = YAML::LoadFile(file.string());
+  } catch (const YAML::Exception& e) {
+    result.errors.push_back({file.string(), e.mark.line + 1, e.mark.column + 1, "",
+                             "not valid YAML: " + e.msg});
+    return result;
+  }
+  if (!root.IsMap()) {
+    result.errors.push_back({file.string(), 0, 0, "", "a suite is a YAML map with name, episodes, world and rows"});
+    return result;
+  }
+  Suite s;
+  s.file = file;
+  const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  r.CheckKeys(root, "", {"name", "description", "episodes", "seed", "sim", "world", "humans", "robot", "columns", "rows"});
+  if (!root["name"]) {
+    r.Error(root, "name", "missing key 'name' (names the results folder results/<name>/)");
+  } else if (auto name = r.String(root["name"], "name")) {
+    const bool ok = !name->empty() && std::all_of(name->begin(), name->end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+    });
+    if (!ok) r.Error(root["name"], "name", "'" + *name + "' must use only letters, digits, '_', '-', '.'");
+    s.name = *name;
+  }
+  if (root["description"]) s.description = root["description"].Scalar();
+  if (root["episodes"]) {
+    if (auto e = r.Integer(root["episodes"], "episodes", 1, 10'000'000)) s.episodes = static_cast<int>(*e);
+  }
+  if (root["seed"]) {
+    if (auto e = r.Integer(root["seed"], "seed", 0, std::numeric_limits<std::int64_t>::max())) s.seed = static_cast<std::uint64_t>(*e);
+  }
+  if (root["sim"]) ReadSim(r, root["sim"], &s.sim);
+  Defaults d;
+  d.world = root["world"];
+  d.humans = root["humans"];
+  if (Present(d.humans)) {
+    if (r.IsMap(d.humans, "humans", "count, policy, params, goal_mode")) r.CheckKeys(d.humans, "humans", {"count", "policy", "params", "goal_mode"});
+  }
+  if (const auto robot = root["robot"]) {
+    if (r.IsMap(robot, "robot", "sensors")) {
+      r.CheckKeys(robot, "robot", {"sensors"});
+      d.sensors = robot["sensors"];
+    }
+  }
+  if (const auto cols = root["columns"]) {
+    if (!cols.IsSequence()) {
+      r.Error(cols, "columns", "must be a list of info column names");
+    } else {
+      for (const auto& c : cols) s.info_columns.push_back(c.Scalar());
+    }
+  }
+  if (!root["rows"] || !root["rows"].IsSequence() || root["rows"].size() == 0) {
+    r.Error(root["rows"] ? root["rows"] : root, "rows", "missing or empty 'rows' list (each row: policy, sensors, ...)");
+  } else {
+    std::set<std::string> labels;
+    for (size_t i = 0; i < root["rows"].size(); ++i) {
+      RowSpec row;
+      ReadRow(r, root["rows"][i], i, d, base, &row);
+      if (!row.label.empty() && !labels.insert(row.label).second) {
+        r.Error(root["rows"][i], Reader::Index("rows", i) + ".label",
+                "label '" + row.label + "' is used by an earlier row; labels must be unique");
+      }
+      for (const auto& [k, v] : row.info) {
+        if (std::find(s.info_columns.begin(), s.info_columns.end(), k) == s.info_columns.end()) {
+          s.info_columns.push_back(k);
+        }
+      }
+      s.rows.push_back(std::move(row));
+    }
+  }
+  if (!r.errors.empty()) {
+    result.errors = std::move(r.errors);
+    return result;
+  }
+  std::ostringstream os;
+  os << "seed=" << s.seed << "\n";
+  os << "sim=" << s.sim.time_step << "," << s.sim.time_limit << "," << s.sim.goal_radius << ","
+     << s.sim.discomfort_dist << "," << s.sim.robot_radius << "," << s.sim.robot_v_pref << ","
+     << s.sim.human_radius << "," << s.sim.human_v_pref << "," << s.sim.robot_visible << ","
+     << s.sim.success_reward << "," << s.sim.collision_penalty << ","
+     << s.sim.discomfort_penalty_factor << "," << s.sim.gamma << "\n";
+  for (const auto& row : s.rows) {
+    os << "row " << row.label << ": ";
+    Canonical(row.policy, os);
+    os << " sensors:";
+    for (const auto& sen : row.sensors) Canonical(sen, os);
+    os << " world:";
+    Canonical(row.world, os);
+    os << " humans:" << row.humans.count << "," << static_cast<int>(row.humans.goal_mode) << ",";
+    Canonical(row.humans.policy, os);
+    os << "\n";
+  }
+  s.canonical = os.str();
+  result.suite = std::move(s);
+  return result;
+}
+
+}  // namespace crowdsim

@@ -1,0 +1,182 @@
+// Running suites: identical results for any job count, resume after an interruption, policy
+// errors recorded without stopping, and the CLI's contract.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "crowdsim/results.h"
+#include "crowdsim/runner.h"
+#include "temp_dir.h"
+#include "test_paths.h"
+
+namespace crowdsim {
+namespace {
+
+using testing::ReadText;
+using testing::TempDir;
+
+constexpr const char* kSuite = R"(name: determinism
+episodes: 12
+seed: 11
+world: {source: random_rect, obstacles: 3, split: test}
+humans: {count: 5, policy: orca}
+robot:
+  sensors: [person, {type: lidar2d, beams: 45}]
+rows:
+  - {label: linear, policy: linear}
+  - {label: orca, policy: orca}
+)";
+
+/// episodes.csv without the wall-time column (decision_time_us).
+std::string WithoutWallTime(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::vector<std::string> f;
+    std::string cell;
+    std::istringstream ls(line);
+    while (std::getline(ls, cell, ',')) f.push_back(cell);
+    if (f.size() > 11) f.erase(f.begin() + 11);
+    for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
+    out += "\n";
+  }
+  return out;
+}
+
+class RunSuiteTest : public ::testing::Test {
+ protected:
+  Suite LoadOrDie(const std::string& yaml) {
+    const auto file = dir_.Write("suite.yaml", yaml);
+    SuiteLoadResult r = LoadSuite(file, registry_);
+    std::string errors;
+    for (const auto& e : r.errors) errors += e.Format() + "\n";
+    EXPECT_TRUE(r.suite) << errors;
+    return r.suite ? *r.suite : Suite{};
+  }
+  RunSummary Run(const Suite& s, const std::string& out, int jobs, int episodes = -1) {
+    RunOptions o;
+    o.out_dir = dir_.path() / out;
+    o.jobs = jobs;
+    o.episodes = episodes;
+    o.progress = false;
+    return RunSuite(s, registry_, o);
+  }
+
+  TempDir dir_;
+  PluginRegistry registry_{{testing::PluginDir(), testing::FixturePluginDir()}};
+};
+
+TEST_F(RunSuiteTest, SameResultsForOneAndTwoJobs) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "j1", 1);
+  Run(s, "j2", 2);
+  const std::string a = ReadText(dir_.path() / "j1" / "episodes.csv");
+  const std::string b = ReadText(dir_.path() / "j2" / "episodes.csv");
+  EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 1 + 2 * 12);
+  EXPECT_EQ(WithoutWallTime(a), WithoutWallTime(b));
+  EXPECT_EQ(ReadText(dir_.path() / "j1" / "table.csv").substr(0, 200),
+            ReadText(dir_.path() / "j2" / "table.csv").substr(0, 200));
+}
+
+TEST_F(RunSuiteTest, ResumesAfterInterruptionWithTheSameResults) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "full", 1);
+  // A short run, then a crash mid-line: the last line is cut short.
+  Run(s, "resumed", 1, 5);
+  const auto csv = dir_.path() / "resumed" / "episodes.csv";
+  std::string text = ReadText(csv);
+  text += "orca,7,123,rect,succ";  // a half-written line
+  std::ofstream(csv) << text;
+  const RunSummary r = Run(s, "resumed", 2);
+  EXPECT_EQ(r.episodes_resumed, 10);
+  EXPECT_EQ(r.episodes_run, 14);
+  EXPECT_EQ(WithoutWallTime(ReadText(dir_.path() / "full" / "episodes.csv")),
+            WithoutWallTime(ReadText(csv)));
+}
+
+TEST_F(RunSuiteTest, RefusesToMixConfigurations) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "out", 1, 2);
+  std::string changed = kSuite;
+  changed.replace(changed.find("seed: 11"), 8, "seed: 12");
+  const Suite t = LoadOrDie(changed);
+  EXPECT_THROW(Run(t, "out", 1, 2), RunError);
+  RunOptions o;
+  o.out_dir = dir_.path() / "out";
+  o.fresh = true;
+  o.progress = false;
+  o.episodes = 2;
+  EXPECT_EQ(RunSuite(t, registry_, o).episodes_run, 4);
+}
+
+TEST_F(RunSuiteTest, PolicyErrorIsRecordedAndTheSuiteGoesOn) {
+  const Suite s = LoadOrDie(R"(name: errors
+episodes: 3
+world: {source: random_rect, obstacles: 1}
+humans: {count: 2, policy: linear}
+rows:
+  - {label: bad, policy: throwing_policy, params: {fail_after_steps: 2}}
+  - {label: good, policy: linear}
+)");
+  const RunSummary r = Run(s, "out", 2);
+  ASSERT_EQ(r.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.rows[0].metrics.policy_error_rate, 1.0);
+  EXPECT_DOUBLE_EQ(r.rows[1].metrics.policy_error_rate, 0.0);
+  const std::string csv = ReadText(dir_.path() / "out" / "episodes.csv");
+  EXPECT_NE(csv.find("policy_error"), std::string::npos);
+  EXPECT_NE(csv.find("deliberate failure (fixture)"), std::string::npos);
+}
+
+TEST_F(RunSuiteTest, WritesTablesAndStrictManifest) {
+  const Suite s = LoadOrDie(kSuite);
+  const RunSummary r = Run(s, "out", 2, 4);
+  const std::string md = ReadText(dir_.path() / "out" / "table.md");
+  EXPECT_NE(md.find("| row | label | sensors | success rate | collision rate | timeout rate | nav. time | danger freq. |"), std::string::npos) << md;
+  EXPECT_EQ(md, r.table_markdown);
+  const std::string manifest = ReadText(dir_.path() / "out" / "manifest.json");
+  EXPECT_NE(manifest.find("\"config_hash\": \"" + s.ConfigHash() + "\""), std::string::npos);
+  EXPECT_EQ(manifest.find("nan"), std::string::npos);
+  EXPECT_EQ(manifest.find("inf"), std::string::npos);
+  EXPECT_NE(manifest.find("\"world_identity\": \"random_rect"), std::string::npos) << manifest;
+}
+
+/// Runs a shell command; returns exit status and output.
+std::pair<int, std::string> Shell(const std::string& cmd) {
+  std::string out;
+  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+  char buf[4096];
+  while (p && fgets(buf, sizeof(buf), p)) out += buf;
+  const int status = p ? pclose(p) : -1;
+  return {WEXITSTATUS(status), out};
+}
+
+TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
+  const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
+  const auto suite = dir_.Write("cli.yaml", kSuite);
+  const std::string out = (dir_.path() / "cli-out").string();
+  auto [rc, text] = Shell(exe + " run " + suite.string() + " --episodes 2 --jobs 2 --quiet --out " + out);
+  EXPECT_EQ(rc, 0) << text;
+  EXPECT_NE(text.find("| 1 | linear |"), std::string::npos) << text;
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / "manifest.json"));
+
+  auto [vrc, vtext] = Shell(exe + " validate " + suite.string());
+  EXPECT_EQ(vrc, 0) << vtext;
+  const auto bad = dir_.Write("bad.yaml", "name: bad\nworld: {source: random_rect}\nrows:\n  - {policy: orcaa}\n");
+  auto [brc, btext] = Shell(exe + " validate " + bad.string());
+  EXPECT_EQ(brc, 2) << btext;
+  EXPECT_NE(btext.find("bad.yaml:4:14: rows[0].policy: unknown policy plugin 'orcaa'"), std::string::npos) << btext;
+
+  auto [urc, utext] = Shell(exe + " run " + suite.string() + " --jobz 2");
+  EXPECT_EQ(urc, 2) << utext;
+  EXPECT_NE(utext.find("unknown option '--jobz'"), std::string::npos) << utext;
+  auto [mrc, mtext] = Shell(exe + " run /nonexistent/suite.yaml");
+  EXPECT_EQ(mrc, 2) << mtext;
+  EXPECT_NE(mtext.find("suite file does not exist"), std::string::npos) << mtext;
+}
+
+}  // namespace
+}  // namespace crowdsim

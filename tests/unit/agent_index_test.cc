@@ -1,0 +1,55 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "crowdsim/agent_index.h"
+#include "crowdsim/rng.h"
+
+namespace crowdsim {
+namespace {
+
+TEST(AgentIndex, NearestMatchesBruteForce) {
+  Rng rng(3);
+  for (int trial = 0; trial < 50; ++trial) {
+    const int n = 1 + static_cast<int>(rng.Below(80));
+    std::vector<AgentState> agents(n);
+    for (auto& a : agents) a.position = Vec2(rng.Uniform(-15, 15), rng.Uniform(-15, 15));
+    AgentIndex index;
+    index.Rebuild(agents);
+    for (int q = 0; q < 10; ++q) {
+      const Vec2 p(rng.Uniform(-16, 16), rng.Uniform(-16, 16));
+      const double range = rng.Uniform(0.5, 12);
+      const int k = 1 + static_cast<int>(rng.Below(12));
+      const int exclude = static_cast<int>(rng.Below(n));
+      std::vector<std::pair<double, int>> brute;
+      for (int i = 0; i < n; ++i) {
+        const double d2 = (agents[i].position - p).squaredNorm();
+        if (i != exclude && d2 < range * range) brute.emplace_back(d2, i);
+      }
+      std::sort(brute.begin(), brute.end());
+      if (static_cast<int>(brute.size()) > k) brute.resize(k);
+      std::vector<int> got;
+      index.Nearest(p, range, k, exclude, &got);
+      ASSERT_EQ(got.size(), brute.size());
+      for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], brute[i].second);
+    }
+  }
+}
+
+TEST(AgentIndex, EmptyAndSingle) {
+  AgentIndex index;
+  std::vector<AgentState> none;
+  index.Rebuild(none);
+  std::vector<int> out{1, 2};
+  index.Nearest(Vec2(0, 0), 10, 5, -1, &out);
+  EXPECT_TRUE(out.empty());
+  std::vector<AgentState> one(1);
+  index.Rebuild(one);
+  index.Nearest(Vec2(0, 0), 10, 5, 0, &out);
+  EXPECT_TRUE(out.empty());
+  index.Nearest(Vec2(0, 0), 10, 5, -1, &out);
+  EXPECT_EQ(out, std::vector<int>{0});
+}
+
+}  // namespace
+}  // namespace crowdsim

@@ -1,0 +1,185 @@
+// The episode loop on scripted episodes: outcomes, timing, metrics and the lookahead.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "crowdsim/episode.h"
+#include "scripted.h"
+
+namespace crowdsim {
+namespace {
+
+using testing::ConstantVelocityPolicy;
+using testing::GoStraightPolicy;
+using testing::MakeMap;
+using testing::MakeRoom;
+using testing::MakeScenario;
+
+TEST(Episode, StraightRunSucceedsAtTheExpectedTime) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
+  GoStraightPolicy robot;
+  EpisodeAgents agents{&robot, {}, {}};
+  Episode ep(sc, SimConfig{}, agents, /*record_trajectory=*/true);
+  const EpisodeResult& r = ep.Run();
+  EXPECT_EQ(r.status, EpisodeStatus::kSuccess);
+  // 8 m at 1 m/s, 0.25 s steps: after 31 steps it is 0.25 m short (> 0.2 m goal radius),
+  // the 32nd step ends on the goal.
+  EXPECT_EQ(r.steps, 32);
+  EXPECT_DOUBLE_EQ(r.time, 8.0);
+  EXPECT_NEAR(r.path_length, 8.0, 1e-9);
+  EXPECT_EQ(r.min_human_distance, kInfinity);
+  EXPECT_EQ(r.danger_steps, 0);
+  // +1 on step index 31: gamma^(31 * 0.25 * 1).
+  EXPECT_NEAR(r.discounted_return, std::pow(0.9, 31 * 0.25), 1e-12);
+  ASSERT_EQ(r.trajectory.size(), 33u);
+  EXPECT_DOUBLE_EQ(r.trajectory.back().time, 8.0);
+}
+
+TEST(Episode, GoalRadiusIsConfigurable) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
+  ConstantVelocityPolicy robot(Vec2(0, 1.0));  // overshoots when not stopped
+  EpisodeAgents agents{&robot, {}, {}};
+  SimConfig crowdnav;
+  crowdnav.goal_radius = 0.3;  // CrowdNav: within the robot radius
+  Episode ep(sc, crowdnav, agents);
+  // After 31 steps the end position is 0.25 m short: inside 0.3, so success one step earlier.
+  EXPECT_EQ(ep.Run().status, EpisodeStatus::kSuccess);
+  EXPECT_EQ(ep.result().steps, 31);
+}
+
+TEST(Episode, TimeoutAfterTimeLimit) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
+  ConstantVelocityPolicy robot(Vec2(0, 0));
+  EpisodeAgents agents{&robot, {}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  const EpisodeResult& r = ep.Run();
+  EXPECT_EQ(r.status, EpisodeStatus::kTimeout);
+  EXPECT_EQ(r.steps, 100);
+  EXPECT_DOUBLE_EQ(r.time, 25.0);
+  EXPECT_DOUBLE_EQ(r.discounted_return, 0.0);
+}
+
+TEST(Episode, ThinWallAtHighSpeedIsACollisionNotATunnel) {
+  // A 2 cm wall; the robot moves 2.5 m per step, far more than wall + diameter.
+  const Scenario sc = MakeScenario(MakeMap({Rect::FromCorners(-3, -0.01, 3, 0.01)}), Vec2(0, -1), Vec2(0, 4));
+  ConstantVelocityPolicy robot(Vec2(0, 10.0));
+  EpisodeAgents agents{&robot, {}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  const EpisodeResult& r = ep.Run();
+  EXPECT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
+  EXPECT_EQ(r.steps, 1);
+  EXPECT_NEAR(r.discounted_return, -0.25, 1e-12);
+}
+
+TEST(Episode, RoomWallsStopTheRobot) {
+  const Scenario sc = MakeScenario(MakeRoom(), Vec2(0, 0), Vec2(0, 4));
+  ConstantVelocityPolicy robot(Vec2(1.0, 0));  // walks into the east wall at x = 5
+  EpisodeAgents agents{&robot, {}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  const EpisodeResult& r = ep.Run();
+  EXPECT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
+  // Contact when x + 0.3 >= 5: during step 19 (x from 4.5 to 4.75).
+  EXPECT_EQ(r.steps, 19);
+}
+
+TEST(Episode, SweptHumanCollisionCatchesAPassThrough) {
+  // A still human on the robot's path; the robot jumps 2.5 m per step: an end-of-step
+  // overlap test would miss it, CrowdNav's swept test does not.
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0, -2.75), Vec2(0, -2.75)}});
+  ConstantVelocityPolicy robot(Vec2(0, 10.0));
+  ConstantVelocityPolicy still(Vec2(0, 0));
+  EpisodeAgents agents{&robot, {&still}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  EXPECT_EQ(ep.Run().status, EpisodeStatus::kCollisionHuman);
+  EXPECT_EQ(ep.result().steps, 1);
+}
+
+TEST(Episode, DangerStepsAndDiscomfortReward) {
+  // The robot passes a still human at 0.7 m centre distance: 0.1 m surface gap < 0.2.
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0.7, 0.0), Vec2(0.7, 0.0)}});
+  ConstantVelocityPolicy robot(Vec2(0, 1.0));
+  ConstantVelocityPolicy still(Vec2(0, 0));
+  EpisodeAgents agents{&robot, {&still}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  double min_reward = 0.0;
+  int danger = 0;
+  while (!ep.done()) {
+    const StepInfo info = ep.Step();
+    if (info.event == StepEvent::kDanger) {
+      ++danger;
+      EXPECT_NEAR(info.reward, (info.min_human_distance - 0.2) * 0.5 * 0.25, 1e-12);
+      min_reward = std::min(min_reward, info.reward);
+    }
+  }
+  EXPECT_EQ(ep.result().status, EpisodeStatus::kSuccess);
+  EXPECT_EQ(ep.result().danger_steps, danger);
+  EXPECT_GT(danger, 0);
+  EXPECT_NEAR(ep.result().min_human_distance, 0.1, 1e-9);
+  EXPECT_NEAR(min_reward, (0.1 - 0.2) * 0.5 * 0.25, 1e-12);
+}
+
+class CountingThrowPolicy final : public Policy {
+ public:
+  Action Decide(const Observation&) override {
+    if (++calls_ == 3) throw std::runtime_error("boom");
+    return Action{Vec2(0, 0.5)};
+  }
+
+ private:
+  int calls_ = 0;
+};
+
+TEST(Episode, PolicyExceptionEndsEpisodeWithPolicyError) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
+  CountingThrowPolicy robot;
+  EpisodeAgents agents{&robot, {}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  const EpisodeResult& r = ep.Run();
+  EXPECT_EQ(r.status, EpisodeStatus::kPolicyError);
+  EXPECT_EQ(r.steps, 2);
+  EXPECT_EQ(r.error, "boom");
+}
+
+TEST(Episode, NonFiniteActionIsAPolicyError) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
+  ConstantVelocityPolicy robot(Vec2(std::nan(""), 0));
+  EpisodeAgents agents{&robot, {}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
+  EXPECT_NE(ep.result().error.find("non-finite"), std::string::npos);
+}
+
+/// Records what the lookahead predicts for its own action and the others.
+class LookaheadProbe final : public Policy {
+ public:
+  PolicyNeeds Needs() const override { return {.map = false, .lookahead = true, .sensors = {}}; }
+  Action Decide(const Observation& obs) override {
+    const std::vector<Action> actions = {Action{Vec2(0, 1)}, Action{Vec2(1, 0)}, Action{Vec2(0, 20)}};
+    obs.lookahead->Evaluate(actions, &outcomes);
+    next_humans.assign(obs.lookahead->NextHumans().begin(), obs.lookahead->NextHumans().end());
+    return actions[0];
+  }
+  std::vector<LookaheadOutcome> outcomes;
+  std::vector<AgentState> next_humans;
+};
+
+TEST(Episode, LookaheadPredictsTheRealStep) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(2, 0), Vec2(-2, 0)}});
+  LookaheadProbe robot;
+  ConstantVelocityPolicy walker(Vec2(-1, 0));
+  EpisodeAgents agents{&robot, {&walker}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  const StepInfo info = ep.Step();
+  ASSERT_EQ(robot.outcomes.size(), 3u);
+  EXPECT_EQ(robot.outcomes[0].event, info.event);
+  EXPECT_DOUBLE_EQ(robot.outcomes[0].reward, info.reward);
+  EXPECT_TRUE(robot.outcomes[0].robot.position.isApprox(ep.robot().position));
+  ASSERT_EQ(robot.next_humans.size(), 1u);
+  EXPECT_TRUE(robot.next_humans[0].position.isApprox(ep.humans()[0].position));
+  EXPECT_TRUE(robot.next_humans[0].velocity.isApprox(ep.humans()[0].velocity));
+  // 20 m/s for 0.25 s overshoots the goal region entirely: no success, no collision.
+  EXPECT_EQ(robot.outcomes[2].event, StepEvent::kNone);
+}
+
+}  // namespace
+}  // namespace crowdsim

@@ -1,0 +1,115 @@
+// Plugin loading: the good path and each kind of broken plugin gives a clear error.
+#include <gtest/gtest.h>
+
+#include "crowdsim/plugin_registry.h"
+#include "test_paths.h"
+
+namespace crowdsim {
+namespace {
+
+using testing::FixturePluginDir;
+using testing::PluginDir;
+
+std::string LoadError(PluginRegistry& reg, const std::string& name, PluginKind kind) {
+  try {
+    reg.Load(name, kind);
+  } catch (const PluginError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PluginLoader, LoadsLinearByNameAndChecksKind) {
+  PluginRegistry reg({PluginDir()});
+  const LoadedPlugin& p = reg.Load("linear", PluginKind::kPolicy);
+  EXPECT_STREQ(p.descriptor->name, "linear");
+  EXPECT_EQ(p.descriptor->abi_version, kPluginAbiVersion);
+  ASSERT_EQ(p.schema.size(), 2u);
+  auto policy = reg.MakePolicy(p, Params::Defaults(p.schema));
+  ASSERT_NE(policy, nullptr);
+  const std::string err = LoadError(reg, "linear", PluginKind::kSensor);
+  EXPECT_NE(err.find("is a policy plugin, but a sensor plugin is needed"), std::string::npos) << err;
+}
+
+TEST(PluginLoader, LoadsByExplicitPathOnce) {
+  PluginRegistry reg(std::vector<std::filesystem::path>{});
+  const auto path = (PluginDir() / "crowdsim_linear.so").string();
+  const LoadedPlugin& a = reg.Load(path, PluginKind::kPolicy);
+  const LoadedPlugin& b = reg.Load(path, PluginKind::kPolicy);
+  EXPECT_EQ(&a, &b);
+}
+
+TEST(PluginLoader, PolicyKeepsLibraryLoadedAfterRegistryDies) {
+  std::shared_ptr<Policy> policy;
+  {
+    PluginRegistry reg({PluginDir()});
+    const auto& p = reg.Load("linear", PluginKind::kPolicy);
+    policy = reg.MakePolicy(p, Params::Defaults(p.schema));
+  }
+  Observation obs;
+  obs.self.position = Vec2(0, 0);
+  obs.self.goal = Vec2(3, 4);
+  const Action a = policy->Decide(obs);  // code of the plugin still mapped
+  EXPECT_NEAR(a.velocity.norm(), 1.0, 1e-12);
+}
+
+TEST(PluginLoader, UnknownNameListsWhereItLooked) {
+  PluginRegistry reg({PluginDir()});
+  const std::string err = LoadError(reg, "orcaa", PluginKind::kPolicy);
+  EXPECT_NE(err.find("no plugin named 'orcaa'"), std::string::npos) << err;
+  EXPECT_NE(err.find("crowdsim_orcaa.so"), std::string::npos) << err;
+  EXPECT_NE(err.find("CROWDSIM_PLUGIN_PATH"), std::string::npos) << err;
+}
+
+TEST(PluginLoader, MissingFile) {
+  PluginRegistry reg(std::vector<std::filesystem::path>{});
+  const std::string err = LoadError(reg, "/nonexistent/crowdsim_x.so", PluginKind::kPolicy);
+  EXPECT_NE(err.find("does not exist"), std::string::npos) << err;
+}
+
+TEST(PluginLoader, NotASharedLibrary) {
+  PluginRegistry reg({FixturePluginDir()});
+  const std::string err = LoadError(reg, "not_a_library", PluginKind::kPolicy);
+  EXPECT_NE(err.find("cannot load plugin file"), std::string::npos) << err;
+  EXPECT_NE(err.find("crowdsim_not_a_library.so"), std::string::npos) << err;
+}
+
+TEST(PluginLoader, SharedLibraryWithoutAlias) {
+  PluginRegistry reg({FixturePluginDir()});
+  const std::string err = LoadError(reg, "no_alias", PluginKind::kPolicy);
+  EXPECT_NE(err.find("not a crowdsim-bench plugin"), std::string::npos) << err;
+  EXPECT_NE(err.find("CROWDSIM_EXPORT_PLUGIN"), std::string::npos) << err;
+}
+
+TEST(PluginLoader, WrongAbiVersionIsRefusedFirst) {
+  PluginRegistry reg({FixturePluginDir()});
+  const std::string err = LoadError(reg, "wrong_abi", PluginKind::kPolicy);
+  EXPECT_NE(err.find("ABI version " + std::to_string(kPluginAbiVersion + 998)), std::string::npos) << err;
+  EXPECT_NE(err.find("expects version " + std::to_string(kPluginAbiVersion)), std::string::npos) << err;
+  EXPECT_NE(err.find("Rebuild"), std::string::npos) << err;
+}
+
+TEST(PluginLoader, FactoryThrows) {
+  PluginRegistry reg({FixturePluginDir()});
+  const LoadedPlugin& p = reg.Load("throwing_factory", PluginKind::kPolicy);
+  try {
+    reg.MakePolicy(p, Params::Defaults(p.schema));
+    FAIL() << "expected PluginError";
+  } catch (const PluginError& e) {
+    const std::string err = e.what();
+    EXPECT_NE(err.find("failed to create its policy"), std::string::npos) << err;
+    EXPECT_NE(err.find("model file missing (fixture)"), std::string::npos) << err;
+  }
+}
+
+TEST(PluginLoader, DiscoverReportsBrokenFilesWithoutStopping) {
+  PluginRegistry reg({PluginDir(), FixturePluginDir()});
+  auto found = reg.Discover();
+  bool has_linear = false;
+  for (const auto* p : found.plugins) has_linear |= std::string(p->descriptor->name) == "linear";
+  EXPECT_TRUE(has_linear);
+  EXPECT_GE(found.problems.size(), 3u);  // not_a_library, no_alias, wrong_abi
+}
+
+}  // namespace
+}  // namespace crowdsim

@@ -1,0 +1,148 @@
+// Suite validation: every error at once, each located (file:line:col), with the key path,
+// the offending value and the valid choices.
+#include <gtest/gtest.h>
+
+#include "crowdsim/suite.h"
+#include "temp_dir.h"
+#include "test_paths.h"
+
+namespace crowdsim {
+namespace {
+
+using testing::TempDir;
+
+class SuiteValidation : public ::testing::Test {
+ protected:
+  SuiteLoadResult Load(const std::string& yaml) {
+    file_ = dir_.Write("suite.yaml", yaml);
+    return LoadSuite(file_, registry_);
+  }
+  /// The formatted error that mentions `needle`, or "".
+  static std::string Find(const SuiteLoadResult& r, const std::string& needle) {
+    for (const auto& e : r.errors) {
+      if (e.Format().find(needle) != std::string::npos) return e.Format();
+    }
+    return "";
+  }
+  static std::string All(const SuiteLoadResult& r) {
+    std::string s;
+    for (const auto& e : r.errors) s += e.Format() + "\n";
+    return s;
+  }
+
+  TempDir dir_;
+  std::filesystem::path file_;
+  PluginRegistry registry_{{testing::PluginDir(), testing::FixturePluginDir()}};
+};
+
+constexpr const char* kGood = R"(name: t
+episodes: 3
+seed: 5
+world: {source: random_rect, obstacles: 1, split: test}
+humans: {count: 2, policy: linear}
+rows:
+  - {label: a, policy: linear, sensors: [person, {type: lidar2d, beams: 9}]}
+  - {label: b, policy: linear, params: {speed_factor: 0.5}}
+)";
+
+TEST_F(SuiteValidation, GoodSuiteLoads) {
+  auto r = Load(kGood);
+  ASSERT_TRUE(r.suite) << All(r);
+  EXPECT_EQ(r.suite->rows.size(), 2u);
+  EXPECT_EQ(r.suite->rows[0].sensors.size(), 2u);
+  EXPECT_EQ(r.suite->rows[0].sensors[1].params.GetInt("beams"), 9);
+  EXPECT_DOUBLE_EQ(r.suite->rows[1].policy.params.GetDouble("speed_factor"), 0.5);
+  EXPECT_EQ(r.suite->rows[1].humans.count, 2);
+  EXPECT_EQ(r.suite->episodes, 3);
+}
+
+TEST_F(SuiteValidation, ConfigHashIgnoresEpisodesButNotParameters) {
+  auto a = Load(kGood);
+  std::string more = kGood;
+  more.replace(more.find("episodes: 3"), 11, "episodes: 9");
+  auto b = Load(more);
+  std::string other = kGood;
+  other.replace(other.find("speed_factor: 0.5"), 17, "speed_factor: 0.6");
+  auto c = Load(other);
+  ASSERT_TRUE(a.suite && b.suite && c.suite);
+  EXPECT_EQ(a.suite->ConfigHash(), b.suite->ConfigHash());
+  EXPECT_NE(a.suite->ConfigHash(), c.suite->ConfigHash());
+}
+
+TEST_F(SuiteValidation, ReportsAllErrorsAtOnceWithLocations) {
+  auto r = Load(R"(name: t
+episodes: 0
+sede: 5
+world: {source: random_rect, obstacles: 1, split: tset}
+rows:
+  - {policy: lineer}
+  - {policy: linear, params: {speed_factor: 7, speedfactor: 1}}
+  - {policy: linear, sensors: [{type: lidar2d, beams: many}]}
+)");
+  ASSERT_FALSE(r.suite);
+  const std::string all = All(r);
+  EXPECT_GE(r.errors.size(), 7u) << all;
+  // Range, with the offending value and the valid range.
+  EXPECT_NE(Find(r, ":2:11: episodes: value 0 is out of range; valid: [1,"), "") << all;
+  // Unknown top-level key.
+  EXPECT_NE(Find(r, ":3:1: sede: unknown key 'sede'"), "") << all;
+  // A choice.
+  EXPECT_NE(Find(r, "world.split: value 'tset' is not valid; valid: train, test"), "") << all;
+  // Unknown plugin: the valid choices.
+  const std::string unknown = Find(r, "rows[0].policy: unknown policy plugin 'lineer'");
+  EXPECT_NE(unknown, "") << all;
+  EXPECT_NE(unknown.find("linear"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find(":6:14:"), std::string::npos) << unknown;
+  // Parameter range and unknown parameter.
+  EXPECT_NE(Find(r, "rows[1].params.speed_factor: value 7 is out of range; valid: [0, 2]"), "") << all;
+  EXPECT_NE(Find(r, "rows[1].params.speedfactor: unknown parameter 'speedfactor' for policy plugin 'linear' (valid: speed_factor, slow_down)"), "") << all;
+  // Type.
+  EXPECT_NE(Find(r, "rows[2].sensors[0].beams: must be a whole number, found 'many'"), "") << all;
+}
+
+TEST_F(SuiteValidation, MissingPiecesAreNamed) {
+  auto r = Load("episodes: 5\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "missing key 'name'"), "");
+  EXPECT_NE(Find(r, "missing or empty 'rows'"), "");
+}
+
+TEST_F(SuiteValidation, YamlSyntaxErrorHasLocation) {
+  auto r = Load("name: t\nrows: [ {policy: linear\n");
+  ASSERT_FALSE(r.suite);
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_NE(r.errors[0].Format().find("not valid YAML"), std::string::npos);
+  EXPECT_GT(r.errors[0].line, 0);
+}
+
+TEST_F(SuiteValidation, WrongKindAndWeightsWithoutParameter) {
+  auto r = Load(R"(name: t
+world: {source: linear}
+rows:
+  - {policy: person, weights: results/models/x.pt}
+  - {policy: linear, weights: results/models/x.pt}
+)");
+  ASSERT_FALSE(r.suite);
+  const std::string all = All(r);
+  EXPECT_NE(Find(r, "world.source: plugin 'linear'"), "") << all;
+  EXPECT_NE(Find(r, "is a policy plugin, but a world plugin is needed"), "") << all;
+  EXPECT_NE(Find(r, "rows[0].policy: plugin 'person'"), "") << all;
+  EXPECT_NE(Find(r, "rows[1].weights: policy 'linear' takes no weights"), "") << all;
+}
+
+TEST_F(SuiteValidation, BrokenPluginByPathIsReported) {
+  const auto bad = (testing::FixturePluginDir() / "crowdsim_wrong_abi.so").string();
+  auto r = Load("name: t\nworld: {source: random_rect}\nrows:\n  - {policy: " + bad + "}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "rows[0].policy: plugin '"), "") << All(r);
+  EXPECT_NE(Find(r, "ABI version"), "") << All(r);
+}
+
+TEST_F(SuiteValidation, DuplicateLabels) {
+  auto r = Load("name: t\nworld: {source: random_rect}\nrows:\n  - {policy: linear}\n  - {policy: linear}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "label 'linear' is used by an earlier row"), "") << All(r);
+}
+
+}  // namespace
+}  // namespace crowdsim
