@@ -13,47 +13,12 @@
 #include <thread>
 
 #include "crowdsim/episode.h"
-#include "crowdsim/rng.h"
+#include "crowdsim/row_instance.h"
 
 namespace crowdsim {
 namespace fs = std::filesystem;
 
 namespace {
-
-/// The plugin objects of one row inside one worker (never shared between threads).
-struct RowInstance {
-  std::shared_ptr<Policy> robot;
-  std::vector<std::shared_ptr<Sensor>> sensors;
-  std::vector<std::shared_ptr<Policy>> humans;
-  EpisodeAgents agents;
-};
-
-class RowFactory {
- public:
-  RowFactory(const RowSpec& row, PluginRegistry& registry) : row_(row), registry_(registry) {}
-
-  std::unique_ptr<RowInstance> Make() const {
-    auto inst = std::make_unique<RowInstance>();
-    inst->robot = registry_.MakePolicy(*row_.policy.loaded, row_.policy.params);
-    inst->agents.robot = inst->robot.get();
-    for (const auto& s : row_.sensors) {
-      inst->sensors.push_back(registry_.MakeSensor(*s.loaded, s.params));
-      inst->agents.sensors.push_back({s.loaded->descriptor->name, inst->sensors.back().get()});
-    }
-    return inst;
-  }
-
-  void EnsureHumans(RowInstance* inst, size_t count) const {
-    while (inst->humans.size() < count) {
-      inst->humans.push_back(registry_.MakePolicy(*row_.humans.policy.loaded, row_.humans.policy.params));
-      inst->agents.humans.push_back(inst->humans.back().get());
-    }
-  }
-
- private:
-  const RowSpec& row_;
-  PluginRegistry& registry_;
-};
 
 /// Progress on stderr: rewritten in place on a terminal, a line every 10% otherwise.
 class Progress {
@@ -124,16 +89,14 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   // Preflight: build every row's objects once, so a bad parameter stops the run before any
   // episode, with the plugin's own message.
   std::vector<std::shared_ptr<WorldSource>> worlds;
-  std::vector<RowFactory> factories;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     const RowSpec& row = suite.rows[r];
     const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
     try {
       worlds.push_back(registry.MakeWorld(*row.world.loaded, row.world.params));
-      factories.emplace_back(row, registry);
-      auto probe = factories.back().Make();
-      factories.back().EnsureHumans(probe.get(), 1);
-      const PolicyNeeds needs = probe->robot->Needs();
+      RowInstance probe(row, registry);
+      probe.Agents(1);
+      const PolicyNeeds needs = probe.robot().Needs();
       for (const auto& needed : needs.sensors) {
         const bool have = std::any_of(row.sensors.begin(), row.sensors.end(), [&](const PluginUse& s) {
           return s.loaded->descriptor->name == needed;
@@ -209,17 +172,11 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
       line.episode = task.episode;
       try {
         auto& inst = instances[task.row];
-        if (!inst) inst = factories[task.row].Make();
+        if (!inst) inst = std::make_unique<RowInstance>(row, registry);
         const WorldSource& world = *worlds[task.row];
-        ScenarioRequest req;
-        req.seed = DeriveSeed(suite.seed, world.Identity(), static_cast<std::uint64_t>(task.episode));
-        req.episode_index = task.episode;
-        req.num_humans = row.humans.count;
-        req.goal_mode = row.humans.goal_mode;
-        req.sim = suite.sim;
+        const ScenarioRequest req = MakeEpisodeRequest(suite, row, world, task.episode);
         const Scenario scenario = world.Make(req);
-        factories[task.row].EnsureHumans(inst.get(), scenario.humans.size());
-        Episode episode(scenario, suite.sim, inst->agents);
+        Episode episode(scenario, suite.sim, inst->Agents(scenario.humans.size()));
         const EpisodeResult& result = episode.Run();
         line.seed = req.seed;
         line.layout = scenario.layout;

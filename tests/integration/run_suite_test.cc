@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <regex>
 #include <fstream>
 #include <sstream>
 
@@ -139,8 +140,9 @@ TEST_F(RunSuiteTest, WritesTablesAndStrictManifest) {
   EXPECT_EQ(md, r.table_markdown);
   const std::string manifest = ReadText(dir_.path() / "out" / "manifest.json");
   EXPECT_NE(manifest.find("\"config_hash\": \"" + s.ConfigHash() + "\""), std::string::npos);
-  EXPECT_EQ(manifest.find("nan"), std::string::npos);
-  EXPECT_EQ(manifest.find("inf"), std::string::npos);
+  // Strict JSON: no bare NaN or infinity values.
+  const std::regex non_finite(R"([:\[,]\s*-?(nan|inf|NaN|Infinity))");
+  EXPECT_FALSE(std::regex_search(manifest, non_finite)) << manifest;
   EXPECT_NE(manifest.find("\"world_identity\": \"random_rect"), std::string::npos) << manifest;
 }
 

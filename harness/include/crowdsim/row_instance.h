@@ -1,0 +1,46 @@
+// The plugin objects of one suite row, made for one thread, and the exact scenario of any
+// (row, episode): shared by suite runs, replays (rendering) and tools.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "crowdsim/episode.h"
+#include "crowdsim/suite.h"
+
+namespace crowdsim {
+
+/// Robot policy, sensors and human policies of one row; never shared between threads.
+class RowInstance {
+ public:
+  /// Makes the robot policy and sensors. Throws PluginError.
+  RowInstance(const RowSpec& row, PluginRegistry& registry);
+
+  /// The agents for an episode with `humans` humans (human policies made on demand).
+  const EpisodeAgents& Agents(size_t humans);
+  Policy& robot() { return *robot_; }
+
+ private:
+  const RowSpec& row_;
+  PluginRegistry& registry_;
+  std::shared_ptr<Policy> robot_;
+  std::vector<std::shared_ptr<Sensor>> sensors_;
+  std::vector<std::shared_ptr<Policy>> humans_;
+  EpisodeAgents agents_;
+};
+
+/// The request a suite run makes for episode `episode` of `row` (seed from the suite seed,
+/// the world's identity and the episode index).
+ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const WorldSource& world,
+                                   int episode);
+
+/// Re-simulates one episode of a suite exactly as `crowdsim-bench run` does, optionally
+/// recording the trajectory. Throws PluginError or std::out_of_range for a bad row index.
+struct Replay {
+  Scenario scenario;
+  EpisodeResult result;
+};
+Replay ReplayEpisode(const Suite& suite, size_t row, int episode, PluginRegistry& registry,
+                     bool record_trajectory);
+
+}  // namespace crowdsim
