@@ -62,7 +62,8 @@ double RayRectDistance(const Vec2& origin, const Vec2& dir, const Rect& r);
 double RayCircleDistance(const Vec2& origin, const Vec2& dir, const Vec2& center, double radius);
 
 /// First contact of a disc of `radius` moving from a to b with rectangle r, as a fraction of
-/// the motion in [0, 1]; kInfinity when it never touches. 0 when it overlaps at a.
+/// the motion in [0, 1]; kInfinity when its interior never enters r (touching is not
+/// contact, to 1e-9 m). 0 when it overlaps at a.
 double SweptDiscRectTime(const Vec2& a, const Vec2& b, double radius, const Rect& r);
 
 }  // namespace crowdsim

@@ -1,0 +1,270 @@
+#include "crowdsim/collision_world.h"
+
+#include <btBulletCollisionCommon.h>
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+namespace crowdsim {
+namespace {
+
+// Boxes extend this far above and below the z = 0 plane every query lives in.
+constexpr double kBoxHalfHeight = 1.0;
+
+// Bullet stores AABBs in float: every broadphase query is padded by this much (m) and the
+// candidates are then decided exactly in double, so float rounding never drops a contact.
+constexpr double kBroadphasePad = 1e-3;
+
+// Bullet keeps pools for contact manifolds and pair algorithms; this world never runs
+// Bullet's narrow phase, so tiny pools save megabytes per CollisionWorld.
+constexpr int kBulletPoolSize = 16;
+
+// A candidate rectangle of one scan, relative to the scan's origin.
+struct RelRect {
+  double x0, y0, x1, y1;
+};
+
+// A candidate disc of one scan, relative to the scan's origin; c = |centre|^2 - radius^2.
+struct RelDisc {
+  double cx, cy, c;
+};
+
+// Per-thread buffers so that scans and sweeps do not allocate once warmed up.
+struct Scratch {
+  std::vector<int> ids;
+  std::vector<RelRect> rects;
+  std::vector<RelDisc> discs;
+};
+
+Scratch& ThreadScratch() {
+  thread_local Scratch scratch;
+  return scratch;
+}
+
+// Collects the user index (rectangle index) of every proxy the broadphase reports.
+struct IndexCollector final : btBroadphaseAabbCallback {
+  explicit IndexCollector(std::vector<int>* out) : out(out) {}
+  bool process(const btBroadphaseProxy* proxy) override {
+    const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+    out->push_back(object->getUserIndex());
+    return true;
+  }
+  std::vector<int>* out;
+};
+
+// Closed-box overlap (touching counts): culling must keep grazing contacts.
+bool Touches(const Rect& a, const Rect& b) {
+  return a.min.x() <= b.max.x() && b.min.x() <= a.max.x() && a.min.y() <= b.max.y() &&
+         b.min.y() <= a.max.y();
+}
+
+// Slab test of the ray t * (dx, dy) from the origin against a rectangle relative to it;
+// (ix, iy) = (1/dx, 1/dy). Axis-parallel beams take the branch that avoids 0 * inf.
+inline double RelRectHit(const RelRect& r, double dx, double dy, double ix, double iy) {
+  double t_near = -kInfinity;
+  double t_far = kInfinity;
+  if (dx != 0.0) {
+    const double t0 = r.x0 * ix;
+    const double t1 = r.x1 * ix;
+    t_near = std::min(t0, t1);
+    t_far = std::max(t0, t1);
+  } else if (r.x0 > 0.0 || r.x1 < 0.0) {
+    return kInfinity;
+  }
+  if (dy != 0.0) {
+    const double t0 = r.y0 * iy;
+    const double t1 = r.y1 * iy;
+    t_near = std::max(t_near, std::min(t0, t1));
+    t_far = std::min(t_far, std::max(t0, t1));
+  } else if (r.y0 > 0.0 || r.y1 < 0.0) {
+    return kInfinity;
+  }
+  if (t_near > t_far || t_far < 0.0) return kInfinity;
+  return std::max(t_near, 0.0);
+}
+
+// Ray t * (dx, dy) from the origin against a disc relative to it (0 when inside).
+inline double RelDiscHit(const RelDisc& d, double dx, double dy) {
+  if (d.c <= 0.0) return 0.0;
+  const double b = d.cx * dx + d.cy * dy;  // projection of the centre on the beam
+  if (b < 0.0) return kInfinity;
+  const double disc = b * b - d.c;
+  if (disc < 0.0) return kInfinity;
+  return b - std::sqrt(disc);
+}
+
+}  // namespace
+
+struct CollisionWorld::Impl {
+  Impl()
+      : config(MakeConstructionInfo()),
+        dispatcher(&config),
+        world(&dispatcher, &broadphase, &config) {}
+
+  ~Impl() {
+    // btCollisionWorld's destructor touches the proxies of the objects it still holds.
+    for (auto& object : objects) world.removeCollisionObject(object.get());
+  }
+
+  static btDefaultCollisionConstructionInfo MakeConstructionInfo() {
+    btDefaultCollisionConstructionInfo info;
+    info.m_defaultMaxPersistentManifoldPoolSize = kBulletPoolSize;
+    info.m_defaultMaxCollisionAlgorithmPoolSize = kBulletPoolSize;
+    return info;
+  }
+
+  // Appends the indices of rectangles whose (float) AABB touches `box` padded, unsorted.
+  void Broadphase(const Rect& box, std::vector<int>* out) const {
+    const btVector3 lo(static_cast<btScalar>(box.min.x() - kBroadphasePad),
+                       static_cast<btScalar>(box.min.y() - kBroadphasePad),
+                       static_cast<btScalar>(-0.5 * kBoxHalfHeight));
+    const btVector3 hi(static_cast<btScalar>(box.max.x() + kBroadphasePad),
+                       static_cast<btScalar>(box.max.y() + kBroadphasePad),
+                       static_cast<btScalar>(0.5 * kBoxHalfHeight));
+    IndexCollector collector(out);
+    // aabbTest only reads the tree (no mutable state), so concurrent const queries are safe.
+    const_cast<btDbvtBroadphase&>(broadphase).aabbTest(lo, hi, collector);
+  }
+
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher;
+  btDbvtBroadphase broadphase;
+  btCollisionWorld world;
+  std::vector<std::unique_ptr<btBoxShape>> shapes;
+  std::vector<std::unique_ptr<btCollisionObject>> objects;
+  // btDbvtBroadphase::rayTest reuses one traversal stack per broadphase (Bullet built
+  // without BT_THREADSAFE), so the reference scan is serialised.
+  mutable std::mutex ray_mutex;
+};
+
+CollisionWorld::CollisionWorld(std::shared_ptr<const StaticMap> map)
+    : map_(std::move(map)), impl_(std::make_unique<Impl>()) {
+  const auto& rects = map_->rectangles;
+  impl_->shapes.reserve(rects.size());
+  impl_->objects.reserve(rects.size());
+  for (size_t i = 0; i < rects.size(); ++i) {
+    const Rect& r = rects[i];
+    const Vec2 half = 0.5 * r.Size();
+    const Vec2 center = r.Center();
+    auto shape = std::make_unique<btBoxShape>(btVector3(static_cast<btScalar>(half.x()),
+                                                        static_cast<btScalar>(half.y()),
+                                                        static_cast<btScalar>(kBoxHalfHeight)));
+    auto object = std::make_unique<btCollisionObject>();
+    object->setCollisionShape(shape.get());
+    btTransform transform;
+    transform.setIdentity();
+    transform.setOrigin(btVector3(static_cast<btScalar>(center.x()),
+                                  static_cast<btScalar>(center.y()), 0));
+    object->setWorldTransform(transform);
+    object->setCollisionFlags(object->getCollisionFlags() |
+                              btCollisionObject::CF_STATIC_OBJECT);
+    object->setUserIndex(static_cast<int>(i));
+    impl_->world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
+                                    btBroadphaseProxy::AllFilter ^
+                                        btBroadphaseProxy::StaticFilter);
+    impl_->shapes.push_back(std::move(shape));
+    impl_->objects.push_back(std::move(object));
+  }
+}
+
+CollisionWorld::~CollisionWorld() = default;
+
+void CollisionWorld::QueryRects(const Rect& box, std::vector<int>* out) const {
+  out->clear();
+  impl_->Broadphase(box, out);
+  const auto& rects = map_->rectangles;
+  std::erase_if(*out, [&](int i) { return !Touches(rects[i], box); });
+  std::sort(out->begin(), out->end());
+}
+
+bool CollisionWorld::DiscOverlaps(const Vec2& center, double radius) const {
+  std::vector<int>& ids = ThreadScratch().ids;
+  ids.clear();
+  impl_->Broadphase(Rect{center, center}.Inflated(radius), &ids);
+  const auto& rects = map_->rectangles;
+  return std::any_of(ids.begin(), ids.end(),
+                     [&](int i) { return DiscOverlapsRect(center, radius, rects[i]); });
+}
+
+SweepHit CollisionWorld::SweepDisc(const Vec2& a, const Vec2& b, double radius) const {
+  std::vector<int>& ids = ThreadScratch().ids;
+  ids.clear();
+  // The swept AABB holds every rectangle the moving disc can reach, so the exact test below
+  // sees even a thin wall crossed within one step.
+  const Rect swept = Rect{a.cwiseMin(b), a.cwiseMax(b)}.Inflated(radius);
+  impl_->Broadphase(swept, &ids);
+  SweepHit hit;
+  const auto& rects = map_->rectangles;
+  for (int i : ids) {
+    const double t = SweptDiscRectTime(a, b, radius, rects[i]);
+    if (t < hit.fraction || (t == hit.fraction && t != kInfinity && i < hit.rect)) {
+      hit.fraction = t;
+      hit.rect = i;
+    }
+  }
+  return hit;
+}
+
+double CollisionWorld::ClearanceAt(const Vec2& p, double search_radius) const {
+  std::vector<int>& ids = ThreadScratch().ids;
+  ids.clear();
+  impl_->Broadphase(Rect{p, p}.Inflated(search_radius), &ids);
+  double best = kInfinity;
+  const auto& rects = map_->rectangles;
+  for (int i : ids) best = std::min(best, PointToRectDistance(p, rects[i]));
+  return best <= search_radius ? best : kInfinity;
+}
+
+void CollisionWorld::CastRays(const Vec2& origin, std::span<const double> world_angles,
+                              double max_range, std::span<const Circle> discs,
+                              double* ranges) const {
+  Scratch& s = ThreadScratch();
+  s.ids.clear();
+  s.rects.clear();
+  s.discs.clear();
+  impl_->Broadphase(Rect{origin, origin}.Inflated(max_range), &s.ids);
+  const auto& rects = map_->rectangles;
+  for (int i : s.ids) {
+    const Rect& r = rects[i];
+    // The broadphase box is a square; drop what lies in its corners, beyond every beam.
+    if (PointToRectDistance(origin, r) > max_range) continue;
+    s.rects.push_back({r.min.x() - origin.x(), r.min.y() - origin.y(), r.max.x() - origin.x(),
+                       r.max.y() - origin.y()});
+  }
+  for (const Circle& d : discs) {
+    const Vec2 c = d.center - origin;
+    const double reach = max_range + d.radius;
+    const double c2 = c.squaredNorm();
+    if (c2 > reach * reach) continue;
+    s.discs.push_back({c.x(), c.y(), c2 - d.radius * d.radius});
+  }
+
+  for (size_t k = 0; k < world_angles.size(); ++k) {
+    const double dx = std::cos(world_angles[k]);
+    const double dy = std::sin(world_angles[k]);
+    const double ix = 1.0 / dx;
+    const double iy = 1.0 / dy;
+    double best = max_range;
+    for (const RelRect& r : s.rects) best = std::min(best, RelRectHit(r, dx, dy, ix, iy));
+    for (const RelDisc& d : s.discs) best = std::min(best, RelDiscHit(d, dx, dy));
+    ranges[k] = best;
+  }
+}
+
+void CollisionWorld::CastRaysBullet(const Vec2& origin, std::span<const double> world_angles,
+                                    double max_range, double* ranges) const {
+  std::lock_guard<std::mutex> lock(impl_->ray_mutex);
+  const btVector3 from(static_cast<btScalar>(origin.x()), static_cast<btScalar>(origin.y()), 0);
+  for (size_t k = 0; k < world_angles.size(); ++k) {
+    const Vec2 end = origin + max_range * Vec2(std::cos(world_angles[k]),
+                                               std::sin(world_angles[k]));
+    const btVector3 to(static_cast<btScalar>(end.x()), static_cast<btScalar>(end.y()), 0);
+    btCollisionWorld::ClosestRayResultCallback callback(from, to);
+    impl_->world.rayTest(from, to, callback);
+    ranges[k] = callback.hasHit() ? static_cast<double>(callback.m_closestHitFraction) * max_range
+                                  : max_range;
+  }
+}
+
+}  // namespace crowdsim

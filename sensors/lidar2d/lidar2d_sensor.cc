@@ -1,0 +1,77 @@
+#include "lidar2d_sensor.h"
+
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "crowdsim/collision_world.h"
+
+namespace crowdsim::lidar2d {
+
+ParamSchema Schema() {
+  return {
+      {"beams", ParamType::kInt, std::int64_t{45}, 1, 3600, {}, "number of beams"},
+      {"fov_deg", ParamType::kDouble, 180.0, 0.0, 360.0, {},
+       "field of view in degrees, (0, 360]; centred on the robot's heading"},
+      {"max_range", ParamType::kDouble, 5.0, 0.0, kInfinity, {},
+       "m, > 0; beams that hit nothing report this"},
+      {"see_humans", ParamType::kBool, true, 0, 1, {},
+       "beams stop at human discs (false: only static obstacles are seen)"},
+  };
+}
+
+std::vector<double> BeamAngles(int beams, double fov_deg) {
+  std::vector<double> angles(static_cast<size_t>(beams));
+  const double fov = fov_deg * std::numbers::pi / 180.0;
+  if (fov_deg >= 360.0) {
+    // A full circle: the last beam would repeat the first, so the endpoint is left out.
+    for (int k = 0; k < beams; ++k) angles[k] = k * fov / beams;
+  } else if (beams == 1) {
+    angles[0] = 0.0;
+  } else {
+    // Written from the centre out so that the layout is exactly symmetric and, with an odd
+    // count, the centre beam is exactly 0.
+    const double step = fov / (2.0 * (beams - 1));
+    for (int k = 0; k < beams; ++k) angles[k] = (2 * k - (beams - 1)) * step;
+  }
+  return angles;
+}
+
+namespace {
+
+double Positive(const Params& params, const char* name) {
+  const double v = params.GetDouble(name);
+  if (!(v > 0.0)) {
+    std::ostringstream msg;
+    msg << "lidar2d: parameter '" << name << "' must be > 0 (got " << v
+        << "); set a positive value in the sensor's parameters";
+    throw std::invalid_argument(msg.str());
+  }
+  return v;
+}
+
+}  // namespace
+
+Lidar2dSensor::Lidar2dSensor(const Params& params)
+    : angles_(BeamAngles(static_cast<int>(params.GetInt("beams")), Positive(params, "fov_deg"))),
+      max_range_(Positive(params, "max_range")),
+      see_humans_(params.GetBool("see_humans")) {}
+
+void Lidar2dSensor::Sense(const SenseInput& in, SensorReading* out) const {
+  // Per-thread buffers: Sense runs once per step and per lookahead candidate, on several
+  // threads, and must stay const.
+  thread_local std::vector<double> world_angles;
+  thread_local std::vector<Circle> discs;
+  world_angles.resize(angles_.size());
+  for (size_t k = 0; k < angles_.size(); ++k) world_angles[k] = angles_[k] + in.frame.heading;
+  discs.clear();
+  if (see_humans_) {
+    for (const AgentState& h : in.humans) discs.push_back({h.position, h.radius});
+  }
+  out->angles = angles_;
+  out->ranges.resize(angles_.size());
+  out->max_range = max_range_;
+  in.world.CastRays(in.frame.origin, world_angles, max_range_, discs, out->ranges.data());
+}
+
+}  // namespace crowdsim::lidar2d

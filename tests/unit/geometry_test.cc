@@ -1,0 +1,162 @@
+#include "crowdsim/geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace crowdsim {
+namespace {
+
+constexpr double kEps = 1e-12;
+// Swept contact is defined 1e-9 m inside the disc (touching is not contact), so contact
+// times sit within 1e-9 m of travel of the exact touch.
+constexpr double kContactEps = 1e-9;
+const Rect kBox = Rect::FromCorners(1.0, -1.0, 3.0, 1.0);
+
+TEST(PointToSegmentDistance, ProjectsInsideTheSegment) {
+  EXPECT_NEAR(PointToSegmentDistance(Vec2(0, 0), Vec2(4, 0), Vec2(2, 3)), 3.0, kEps);
+}
+
+TEST(PointToSegmentDistance, ClampsToTheEndpoints) {
+  // u < 0 and u > 1 use the nearest endpoint (CrowdNav's point_to_segment_dist).
+  EXPECT_NEAR(PointToSegmentDistance(Vec2(0, 0), Vec2(4, 0), Vec2(-3, 4)), 5.0, kEps);
+  EXPECT_NEAR(PointToSegmentDistance(Vec2(0, 0), Vec2(4, 0), Vec2(7, -4)), 5.0, kEps);
+}
+
+TEST(PointToSegmentDistance, DegenerateSegmentIsAPoint) {
+  EXPECT_NEAR(PointToSegmentDistance(Vec2(1, 1), Vec2(1, 1), Vec2(4, 5)), 5.0, kEps);
+}
+
+TEST(PointToRectDistance, InsideEdgeAndCorner) {
+  EXPECT_EQ(PointToRectDistance(Vec2(2, 0), kBox), 0.0);
+  EXPECT_EQ(PointToRectDistance(Vec2(3, 1), kBox), 0.0);  // on the corner
+  EXPECT_NEAR(PointToRectDistance(Vec2(2, 3), kBox), 2.0, kEps);
+  EXPECT_NEAR(PointToRectDistance(Vec2(0, 0), kBox), 1.0, kEps);
+  EXPECT_NEAR(PointToRectDistance(Vec2(6, 5), kBox), 5.0, kEps);  // 3-4-5 from (3, 1)
+}
+
+TEST(DiscOverlapsRect, TouchingIsNotOverlapping) {
+  EXPECT_TRUE(DiscOverlapsRect(Vec2(0, 0), 1.01, kBox));
+  EXPECT_FALSE(DiscOverlapsRect(Vec2(0, 0), 1.0, kBox));
+  EXPECT_TRUE(DiscOverlapsRect(Vec2(2, 0), 0.1, kBox));  // centre inside
+  // Near a corner the rounded distance decides, not the bounding box.
+  EXPECT_FALSE(DiscOverlapsRect(Vec2(3.5, 1.5), 0.7, kBox));
+  EXPECT_TRUE(DiscOverlapsRect(Vec2(3.5, 1.5), 0.71, kBox));
+}
+
+TEST(RayRectDistance, HitsTheNearFace) {
+  EXPECT_NEAR(RayRectDistance(Vec2(0, 0), Vec2(1, 0), kBox), 1.0, kEps);
+  EXPECT_NEAR(RayRectDistance(Vec2(5, 0.5), Vec2(-1, 0), kBox), 2.0, kEps);
+  EXPECT_NEAR(RayRectDistance(Vec2(2, 4), Vec2(0, -1), kBox), 3.0, kEps);
+  const Vec2 diag = Vec2(1, 1).normalized();
+  // From (0, -2) along 45 deg the ray meets the box exactly at its corner (1, -1).
+  EXPECT_NEAR(RayRectDistance(Vec2(0, -2), diag, kBox), std::sqrt(2.0), kEps);
+}
+
+TEST(RayRectDistance, MissesAndBehind) {
+  EXPECT_EQ(RayRectDistance(Vec2(0, 0), Vec2(-1, 0), kBox), kInfinity);
+  EXPECT_EQ(RayRectDistance(Vec2(0, 2), Vec2(1, 0), kBox), kInfinity);
+  EXPECT_EQ(RayRectDistance(Vec2(0, 0), Vec2(0, 1), kBox), kInfinity);  // parallel, outside
+  // Just above the top-left corner (1, 1).
+  EXPECT_EQ(RayRectDistance(Vec2(0, 0), Vec2(1, 1.01).normalized(), kBox), kInfinity);
+}
+
+TEST(RayRectDistance, GrazingEdgeCounts) {
+  // Running along the top edge line touches the rectangle from x = 1.
+  EXPECT_NEAR(RayRectDistance(Vec2(0, 1), Vec2(1, 0), kBox), 1.0, kEps);
+}
+
+TEST(RayRectDistance, ZeroInside) {
+  EXPECT_EQ(RayRectDistance(Vec2(2, 0), Vec2(1, 0), kBox), 0.0);
+  EXPECT_EQ(RayRectDistance(Vec2(1, 0), Vec2(-1, 0), kBox), 0.0);  // on the boundary
+}
+
+TEST(RayCircleDistance, HitMissInside) {
+  EXPECT_NEAR(RayCircleDistance(Vec2(0, 0), Vec2(1, 0), Vec2(5, 0), 1.0), 4.0, kEps);
+  // Offset by 0.6 with radius 1: chord half-length 0.8.
+  EXPECT_NEAR(RayCircleDistance(Vec2(0, 0.6), Vec2(1, 0), Vec2(5, 0), 1.0), 4.2, kEps);
+  EXPECT_NEAR(RayCircleDistance(Vec2(0, 1), Vec2(1, 0), Vec2(5, 0), 1.0), 5.0, kEps);  // tangent
+  EXPECT_EQ(RayCircleDistance(Vec2(0, 1.01), Vec2(1, 0), Vec2(5, 0), 1.0), kInfinity);
+  EXPECT_EQ(RayCircleDistance(Vec2(0, 0), Vec2(-1, 0), Vec2(5, 0), 1.0), kInfinity);
+  EXPECT_EQ(RayCircleDistance(Vec2(5.5, 0), Vec2(1, 0), Vec2(5, 0), 1.0), 0.0);
+}
+
+TEST(SweptDiscRectTime, FaceContact) {
+  // Centre moves from x = -2 to x = 2 at y = 0 with radius 0.5; contact when x = 0.5.
+  EXPECT_NEAR(SweptDiscRectTime(Vec2(-2, 0), Vec2(2, 0), 0.5, kBox), 2.5 / 4.0, kContactEps);
+}
+
+TEST(SweptDiscRectTime, CornerContactIsRounded) {
+  // Passing above the top-left corner (1, 1) at y = 1.3 with radius 0.5: the disc touches the
+  // corner when its centre is 0.5 from it, i.e. at x = 1 - 0.4.
+  const double t = SweptDiscRectTime(Vec2(-1.4, 1.3), Vec2(2.6, 1.3), 0.5, kBox);
+  EXPECT_NEAR(t, 2.0 / 4.0, kContactEps);
+  // At y = 1.6 > 1 + 0.5 it misses although the swept bounding box overlaps.
+  EXPECT_EQ(SweptDiscRectTime(Vec2(-1.4, 1.6), Vec2(2.6, 1.6), 0.5, kBox), kInfinity);
+}
+
+TEST(SweptDiscRectTime, TouchingIsNotContact) {
+  // Resting against the right face (x = 3) at exactly one radius, then leaving or sliding.
+  EXPECT_EQ(SweptDiscRectTime(Vec2(3.5, 0), Vec2(4.5, 0), 0.5, kBox), kInfinity);
+  EXPECT_EQ(SweptDiscRectTime(Vec2(3.5, -0.5), Vec2(3.5, 0.5), 0.5, kBox), kInfinity);
+  EXPECT_EQ(SweptDiscRectTime(Vec2(3.5, 0), Vec2(3.5, 0), 0.5, kBox), kInfinity);
+  // Moving in from the touching position is contact at once.
+  EXPECT_NEAR(SweptDiscRectTime(Vec2(3.5, 0), Vec2(3.0, 0), 0.5, kBox), 0.0, 1e-8);
+}
+
+TEST(SweptDiscRectTime, ThinWallAtHighSpeedDoesNotTunnel) {
+  const Rect wall = Rect::FromCorners(10.0, -5.0, 10.001, 5.0);
+  const double t = SweptDiscRectTime(Vec2(0, 0), Vec2(1000, 0), 0.1, wall);
+  EXPECT_NEAR(t, 9.9 / 1000.0, 2 * kContactEps / 1000.0);
+  // Endpoints on both sides, neither overlapping.
+  EXPECT_LT(SweptDiscRectTime(Vec2(9.0, 0), Vec2(11.0, 0), 0.1, wall), 1.0);
+}
+
+TEST(SweptDiscRectTime, OverlapAtStartIsZeroAndStopsShortIsInfinity) {
+  EXPECT_EQ(SweptDiscRectTime(Vec2(0.8, 0), Vec2(-3, 0), 0.5, kBox), 0.0);
+  EXPECT_EQ(SweptDiscRectTime(Vec2(-2, 0), Vec2(0.4, 0), 0.5, kBox), kInfinity);
+  // Ending exactly touching the face is not contact.
+  EXPECT_EQ(SweptDiscRectTime(Vec2(-2, 0), Vec2(0.5, 0), 0.5, kBox), kInfinity);
+  EXPECT_NEAR(SweptDiscRectTime(Vec2(-2, 0), Vec2(0.51, 0), 0.5, kBox), 2.5 / 2.51, kContactEps);
+  EXPECT_EQ(SweptDiscRectTime(Vec2(0, 0), Vec2(0, 0), 0.5, kBox), kInfinity);
+  EXPECT_EQ(SweptDiscRectTime(Vec2(0.9, 0), Vec2(0.9, 0), 0.5, kBox), 0.0);
+}
+
+// The swept time agrees with dense sampling of the distance along the motion.
+TEST(SweptDiscRectTime, MatchesSampling) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-4.0, 6.0);
+  int hits = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const Vec2 a(u(rng), u(rng));
+    const Vec2 b(u(rng), u(rng));
+    const double radius = 0.3;
+    const double t = SweptDiscRectTime(a, b, radius, kBox);
+    constexpr int kSamples = 4000;
+    double first = kInfinity;
+    for (int i = 0; i <= kSamples; ++i) {
+      const double s = static_cast<double>(i) / kSamples;
+      if (PointToRectDistance(a + s * (b - a), kBox) <= radius) {
+        first = s;
+        break;
+      }
+    }
+    if (first == kInfinity) {
+      // Sampling can miss a graze; the exact time then has to be a near-tangent contact.
+      if (t != kInfinity) {
+        const Vec2 p = a + t * (b - a);
+        EXPECT_NEAR(PointToRectDistance(p, kBox), radius, 1e-9);
+      }
+      continue;
+    }
+    ++hits;
+    ASSERT_NE(t, kInfinity) << trial;
+    EXPECT_LE(t, first + 1e-12) << trial;
+    EXPECT_GE(t, first - 1.0 / kSamples - 1e-12) << trial;
+  }
+  EXPECT_GT(hits, 50);
+}
+
+}  // namespace
+}  // namespace crowdsim
