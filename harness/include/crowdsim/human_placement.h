@@ -52,17 +52,25 @@ PointSampler ListSampler(std::vector<Vec2> points);
 struct PlacementArea {
   std::function<bool(const Vec2&)> is_free;  ///< true where a human's centre may stand
   PointSampler sample;                       ///< candidate centres
+  /// Optional, stricter rule for goals: where a human may stop without closing a passage
+  /// (a human who stays on its goal must leave room for another to pass). Relaxed to
+  /// `is_free` over the second half of the tries when the world has too little such room.
+  std::function<bool(const Vec2&)> is_goal_free;
 };
+
+/// Centre clearance from obstacles that leaves room for another human to pass a human
+/// standing there: its own radius plus a passer's diameter, each padded as ORCA pads radii.
+double PassableGoalClearance(double human_radius);
 
 /// The rules of human placement (defaults: paper settings).
 struct HumanPlacementOptions {
-  double human_radius = 0.3;       ///< m
-  double human_v_pref = 1.0;       ///< m/s
-  double robot_radius = 0.3;       ///< m
-  double discomfort_dist = 0.2;    ///< m; extra gap between agents' discs at start and at goal
-  double goal_min_dist = 3.0;      ///< m; a goal's distance from the previous point, if room allows
-  int new_goal_count = 16;         ///< goals per human in HumanGoalMode::kNewGoal (>= 1)
-  int max_tries = 2000;            ///< candidate draws per point before giving up (>= 1)
+  double human_radius = 0.3;     ///< m
+  double human_v_pref = 1.0;     ///< m/s
+  double robot_radius = 0.3;     ///< m
+  double discomfort_dist = 0.2;  ///< m; extra gap between agents' discs at start and at goal
+  double goal_min_dist = 3.0;    ///< m; a goal's distance from the previous point, if room allows
+  int new_goal_count = 16;       ///< goals per human in HumanGoalMode::kNewGoal (>= 1)
+  int max_tries = 2000;          ///< candidate draws per point before giving up (>= 1)
 
   /// Options from a request's radii, speeds and discomfort distance (other fields default).
   static HumanPlacementOptions FromRequest(const ScenarioRequest& request);
@@ -71,8 +79,8 @@ struct HumanPlacementOptions {
 /// Places request.num_humans humans: starts and goals in free space; starts at least
 /// 2 r_h + discomfort_dist apart and r_h + r_robot + discomfort_dist from the robot's start;
 /// goals likewise from each other (goal k against goal k) and from the robot's goal; each goal
-/// at least goal_min_dist from the point before it, relaxed towards 0 over the second half of
-/// the tries when the room is too small. kStay gives one goal, kNewGoal new_goal_count goals.
+/// at least goal_min_dist from the point before it and where area.is_goal_free holds (if
+/// set), both relaxed over the second half of the tries when the room is too small. kStay gives one goal, kNewGoal new_goal_count goals.
 /// Deterministic for a given rng state. Throws PlacementError when a point cannot be placed.
 std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_start,
                                    const Vec2& robot_goal, const ScenarioRequest& request,

@@ -1,0 +1,166 @@
+#include "crowdsim/human_placement.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+namespace crowdsim {
+
+DiscFreeSpace::DiscFreeSpace(std::shared_ptr<const StaticMap> map, double clearance)
+    : map_(std::move(map)), clearance_(clearance) {
+  if (!map_) throw std::invalid_argument("DiscFreeSpace: map is null");
+  if (!(clearance_ >= 0.0)) throw std::invalid_argument("DiscFreeSpace: clearance must be >= 0");
+}
+
+bool DiscFreeSpace::Contains(const Vec2& p) const {
+  const Rect inner = map_->bounds.Inflated(-clearance_);
+  if (inner.min.x() > inner.max.x() || inner.min.y() > inner.max.y() || !inner.Contains(p)) {
+    return false;
+  }
+  for (const Rect& r : map_->rectangles) {
+    if (DiscOverlapsRect(p, clearance_, r)) return false;
+  }
+  return true;
+}
+
+PointSampler UniformSampler(const Rect& region) {
+  return [region](Rng& rng) {
+    // x before y: the draw order is part of the reproducibility contract.
+    const double x = rng.Uniform(region.min.x(), region.max.x());
+    const double y = rng.Uniform(region.min.y(), region.max.y());
+    return Vec2(x, y);
+  };
+}
+
+PointSampler ListSampler(std::vector<Vec2> points) {
+  if (points.empty()) throw std::invalid_argument("ListSampler: the list of points is empty");
+  // Shared so that copies of the sampler do not copy a long list.
+  auto shared = std::make_shared<const std::vector<Vec2>>(std::move(points));
+  return [shared](Rng& rng) { return (*shared)[static_cast<size_t>(rng.Below(shared->size()))]; };
+}
+
+HumanPlacementOptions HumanPlacementOptions::FromRequest(const ScenarioRequest& request) {
+  HumanPlacementOptions o;
+  o.human_radius = request.sim.human_radius;
+  o.human_v_pref = request.sim.human_v_pref;
+  o.robot_radius = request.sim.robot_radius;
+  o.discomfort_dist = request.sim.discomfort_dist;
+  return o;
+}
+
+double PassableGoalClearance(double human_radius) {
+  constexpr double kOrcaPadding = 0.01;  // ORCA's radius padding (CrowdNav)
+  return (human_radius + kOrcaPadding) + 2.0 * (human_radius + kOrcaPadding);
+}
+
+namespace {
+
+// One point to place: the discs it must keep clear of and the point its distance counts from.
+struct PointRule {
+  const std::vector<Vec2>* others = nullptr;  // same-kind points of humans placed before
+  double other_gap = 0.0;                     // centre distance to each of `others`
+  Vec2 robot_point = Vec2::Zero();
+  double robot_gap = 0.0;
+  const Vec2* previous = nullptr;  // goal rule: the point walked from; null for starts
+  double previous_min = 0.0;
+  const std::function<bool(const Vec2&)>* stricter = nullptr;  // goals: room to pass
+};
+
+bool FarFromAll(const Vec2& p, const std::vector<Vec2>& points, double gap) {
+  return std::all_of(points.begin(), points.end(),
+                     [&](const Vec2& q) { return (p - q).norm() >= gap; });
+}
+
+// Required distance from the previous point at try t: full over the first half of the
+// tries, then shrinking linearly to 0, so that a small room still gets a valid scenario.
+double RelaxedDistance(double full, int t, int max_tries) {
+  const int half = max_tries / 2;
+  if (t < half) return full;
+  const double f = static_cast<double>(t - half) / static_cast<double>(max_tries - half);
+  return full * (1.0 - f);
+}
+
+bool Draw(const PlacementArea& area, const PointRule& rule, int max_tries, Rng& rng, Vec2* out) {
+  for (int t = 0; t < max_tries; ++t) {
+    const Vec2 p = area.sample(rng);
+    if (!area.is_free(p)) continue;
+    if (rule.stricter != nullptr && *rule.stricter && t < max_tries / 2 && !(*rule.stricter)(p)) {
+      continue;
+    }
+    if ((p - rule.robot_point).norm() < rule.robot_gap) continue;
+    if (!FarFromAll(p, *rule.others, rule.other_gap)) continue;
+    if (rule.previous != nullptr &&
+        (p - *rule.previous).norm() < RelaxedDistance(rule.previous_min, t, max_tries)) {
+      continue;
+    }
+    *out = p;
+    return true;
+  }
+  return false;
+}
+
+[[noreturn]] void Fail(const std::string& what, int human, int num_humans,
+                       const HumanPlacementOptions& o) {
+  throw PlacementError(
+      "cannot place the " + what + " of human " + std::to_string(human + 1) + " of " +
+      std::to_string(num_humans) + " after " + std::to_string(o.max_tries) +
+      " tries: the free space is too small or too crowded for discs of radius " +
+      std::to_string(o.human_radius) + " m kept " + std::to_string(o.discomfort_dist) +
+      " m apart. Fix: use fewer humans (num_humans), smaller radii, or a larger world.");
+}
+
+}  // namespace
+
+std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_start,
+                                   const Vec2& robot_goal, const ScenarioRequest& request,
+                                   const HumanPlacementOptions& options, Rng& rng) {
+  if (!area.is_free || !area.sample) {
+    throw std::invalid_argument("PlaceHumans: the placement area needs is_free and sample");
+  }
+  if (request.num_humans < 0) throw std::invalid_argument("PlaceHumans: num_humans < 0");
+  if (options.max_tries < 1 || options.new_goal_count < 1) {
+    throw std::invalid_argument("PlaceHumans: max_tries and new_goal_count must be >= 1");
+  }
+  const int n = request.num_humans;
+  const int goals_per_human =
+      request.goal_mode == HumanGoalMode::kNewGoal ? options.new_goal_count : 1;
+  const double human_gap = 2.0 * options.human_radius + options.discomfort_dist;
+  const double robot_gap = options.human_radius + options.robot_radius + options.discomfort_dist;
+
+  std::vector<Vec2> starts;
+  // goals_by_index[k]: the k-th goals of the humans placed so far (goal k meets goal k).
+  std::vector<std::vector<Vec2>> goals_by_index(static_cast<size_t>(goals_per_human));
+  std::vector<HumanSpec> humans;
+  humans.reserve(static_cast<size_t>(n));
+
+  for (int i = 0; i < n; ++i) {
+    HumanSpec h;
+    h.radius = options.human_radius;
+    h.v_pref = options.human_v_pref;
+    PointRule start_rule{&starts, human_gap, robot_start, robot_gap, nullptr, 0.0};
+    if (!Draw(area, start_rule, options.max_tries, rng, &h.start)) Fail("start", i, n, options);
+
+    Vec2 previous = h.start;
+    for (int k = 0; k < goals_per_human; ++k) {
+      PointRule goal_rule{&goals_by_index[static_cast<size_t>(k)],
+                          human_gap,
+                          robot_goal,
+                          robot_gap,
+                          &previous,
+                          options.goal_min_dist,
+                          &area.is_goal_free};
+      Vec2 goal;
+      if (!Draw(area, goal_rule, options.max_tries, rng, &goal)) {
+        Fail("goal " + std::to_string(k + 1), i, n, options);
+      }
+      h.goals.push_back(goal);
+      goals_by_index[static_cast<size_t>(k)].push_back(goal);
+      previous = goal;
+    }
+    starts.push_back(h.start);
+    humans.push_back(std::move(h));
+  }
+  return humans;
+}
+
+}  // namespace crowdsim

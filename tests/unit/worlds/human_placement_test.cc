@@ -1,0 +1,193 @@
+// Shared human placement: free space, separation, goal distance, retries and errors.
+#include "crowdsim/human_placement.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+
+namespace crowdsim {
+namespace {
+
+// A walled square room of side `size` centred at the origin, plus `obstacles`.
+std::shared_ptr<const StaticMap> Room(double size, std::vector<Rect> obstacles = {}) {
+  auto map = std::make_shared<StaticMap>();
+  const double h = 0.5 * size;
+  const double o = h + 0.5;
+  map->bounds = Rect::FromCorners(-o, -o, o, o);
+  map->rectangles = {Rect::FromCorners(-o, -o, o, -h), Rect::FromCorners(-o, h, o, o),
+                     Rect::FromCorners(-o, -h, -h, h), Rect::FromCorners(h, -h, o, h)};
+  for (const Rect& r : obstacles) map->rectangles.push_back(r);
+  return map;
+}
+
+PlacementArea AreaOf(std::shared_ptr<const StaticMap> map, double clearance) {
+  auto space = std::make_shared<DiscFreeSpace>(map, clearance);
+  return {[space](const Vec2& p) { return space->Contains(p); }, UniformSampler(map->bounds)};
+}
+
+ScenarioRequest Request(int humans, HumanGoalMode mode) {
+  ScenarioRequest r;
+  r.num_humans = humans;
+  r.goal_mode = mode;
+  return r;
+}
+
+// Checks every placement rule for the default radii (0.3) and discomfort distance (0.2).
+void ExpectRules(const std::vector<HumanSpec>& humans, const DiscFreeSpace& space,
+                 const Vec2& robot_start, const Vec2& robot_goal, double goal_min_dist) {
+  constexpr double kGap = 0.8;  // 2 * 0.3 + 0.2, and 0.3 + 0.3 + 0.2 for the robot
+  for (size_t i = 0; i < humans.size(); ++i) {
+    const HumanSpec& h = humans[i];
+    EXPECT_TRUE(space.Contains(h.start)) << "start of human " << i;
+    EXPECT_GE((h.start - robot_start).norm(), kGap);
+    Vec2 previous = h.start;
+    for (size_t k = 0; k < h.goals.size(); ++k) {
+      EXPECT_TRUE(space.Contains(h.goals[k])) << "goal " << k << " of human " << i;
+      EXPECT_GE((h.goals[k] - robot_goal).norm(), kGap);
+      EXPECT_GE((h.goals[k] - previous).norm(), goal_min_dist);
+      previous = h.goals[k];
+    }
+    for (size_t j = 0; j < i; ++j) {
+      EXPECT_GE((h.start - humans[j].start).norm(), kGap) << i << " vs " << j;
+      for (size_t k = 0; k < h.goals.size(); ++k) {
+        EXPECT_GE((h.goals[k] - humans[j].goals[k]).norm(), kGap) << i << " vs " << j;
+      }
+    }
+  }
+}
+
+TEST(DiscFreeSpace, KeepsTheDiscInsideAndOffRectangles) {
+  const auto map = Room(10.0, {Rect::FromCorners(-1, -1, 1, 1)});
+  const DiscFreeSpace space(map, 0.4);
+  EXPECT_TRUE(space.Contains(Vec2(3.0, 3.0)));
+  EXPECT_FALSE(space.Contains(Vec2(4.7, 0.0)));  // disc reaches the wall
+  EXPECT_TRUE(space.Contains(Vec2(4.55, 0.0)));
+  EXPECT_FALSE(space.Contains(Vec2(0.0, 1.3)));  // disc reaches the obstacle
+  EXPECT_TRUE(space.Contains(Vec2(0.0, 1.45)));
+  EXPECT_FALSE(space.Contains(Vec2(0.0, 0.0)));
+  EXPECT_FALSE(space.Contains(Vec2(20.0, 0.0)));  // outside the bounds
+}
+
+TEST(HumanPlacement, OneGoalPerHumanFollowingEveryRule) {
+  const auto map = Room(10.0, {Rect::FromCorners(-2, -1, 1, 2)});
+  const Vec2 robot_start(-4, -4), robot_goal(4, 4);
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    Rng rng(seed);
+    const auto humans = PlaceHumans(AreaOf(map, 0.4), robot_start, robot_goal,
+                                    Request(5, HumanGoalMode::kStay), HumanPlacementOptions{}, rng);
+    ASSERT_EQ(humans.size(), 5u);
+    for (const HumanSpec& h : humans) {
+      EXPECT_EQ(h.goals.size(), 1u);
+      EXPECT_DOUBLE_EQ(h.radius, 0.3);
+      EXPECT_DOUBLE_EQ(h.v_pref, 1.0);
+    }
+    ExpectRules(humans, DiscFreeSpace(map, 0.4), robot_start, robot_goal, 3.0);
+  }
+}
+
+TEST(HumanPlacement, NewGoalModeGivesASequenceOfDistantGoals) {
+  const auto map = Room(10.0);
+  HumanPlacementOptions options;
+  options.new_goal_count = 16;
+  Rng rng(7);
+  const auto humans = PlaceHumans(AreaOf(map, 0.4), Vec2(0, -4), Vec2(0, 4),
+                                  Request(6, HumanGoalMode::kNewGoal), options, rng);
+  ASSERT_EQ(humans.size(), 6u);
+  for (const HumanSpec& h : humans) EXPECT_EQ(h.goals.size(), 16u);
+  ExpectRules(humans, DiscFreeSpace(map, 0.4), Vec2(0, -4), Vec2(0, 4), 3.0);
+}
+
+TEST(HumanPlacement, SameRngStateGivesSamePlacement) {
+  const auto map = Room(10.0);
+  auto place = [&](std::uint64_t seed) {
+    Rng rng(seed);
+    return PlaceHumans(AreaOf(map, 0.4), Vec2(0, -4), Vec2(0, 4), Request(5, HumanGoalMode::kStay),
+                       HumanPlacementOptions{}, rng);
+  };
+  const auto a = place(42), b = place(42), c = place(43);
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].start, b[i].start);
+    EXPECT_EQ(a[i].goals, b[i].goals);
+  }
+  EXPECT_NE(a[0].start, c[0].start);
+}
+
+TEST(HumanPlacement, RequestRadiiAreUsed) {
+  ScenarioRequest request = Request(4, HumanGoalMode::kStay);
+  request.sim.human_radius = 0.4;
+  request.sim.human_v_pref = 1.3;
+  const HumanPlacementOptions o = HumanPlacementOptions::FromRequest(request);
+  EXPECT_DOUBLE_EQ(o.human_radius, 0.4);
+  EXPECT_DOUBLE_EQ(o.human_v_pref, 1.3);
+  const auto map = Room(10.0);
+  Rng rng(3);
+  const auto humans = PlaceHumans(AreaOf(map, 0.5), Vec2(0, -4), Vec2(0, 4), request, o, rng);
+  for (size_t i = 0; i < humans.size(); ++i) {
+    EXPECT_DOUBLE_EQ(humans[i].radius, 0.4);
+    EXPECT_DOUBLE_EQ(humans[i].v_pref, 1.3);
+    for (size_t j = 0; j < i; ++j) EXPECT_GE((humans[i].start - humans[j].start).norm(), 1.0);
+  }
+}
+
+TEST(HumanPlacement, GoalDistanceRelaxesInASmallRoom) {
+  // A 2 x 2 m room cannot hold a 3 m walk: the goal still lands in free space.
+  const auto map = Room(2.0);
+  Rng rng(5);
+  const auto humans = PlaceHumans(AreaOf(map, 0.4), Vec2(-0.5, -0.5), Vec2(0.5, 0.5),
+                                  Request(1, HumanGoalMode::kStay), HumanPlacementOptions{}, rng);
+  ASSERT_EQ(humans.size(), 1u);
+  const DiscFreeSpace space(map, 0.4);
+  EXPECT_TRUE(space.Contains(humans[0].goals[0]));
+  EXPECT_LT((humans[0].goals[0] - humans[0].start).norm(), 3.0);
+}
+
+TEST(HumanPlacement, ImpossibleRequestThrowsAClearError) {
+  const auto map = Room(2.0);
+  Rng rng(1);
+  HumanPlacementOptions options;
+  options.max_tries = 200;
+  try {
+    PlaceHumans(AreaOf(map, 0.4), Vec2(0, 0), Vec2(0, 0), Request(10, HumanGoalMode::kStay),
+                options, rng);
+    FAIL() << "expected PlacementError";
+  } catch (const PlacementError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("human"), std::string::npos) << what;
+    EXPECT_NE(what.find("num_humans"), std::string::npos) << what;
+  }
+}
+
+TEST(HumanPlacement, ListSamplerDrawsOnlyListedPoints) {
+  const auto map = Room(10.0);
+  std::vector<Vec2> points;
+  for (int i = -4; i <= 4; ++i) {
+    for (int j = -4; j <= 4; ++j) points.emplace_back(i, j);
+  }
+  const auto space = std::make_shared<DiscFreeSpace>(map, 0.4);
+  const PlacementArea area{[space](const Vec2& p) { return space->Contains(p); },
+                           ListSampler(points)};
+  Rng rng(11);
+  const auto humans =
+      PlaceHumans(area, Vec2(0, -4), Vec2(0, 4), Request(5, HumanGoalMode::kNewGoal),
+                  HumanPlacementOptions{}, rng);
+  auto listed = [&](const Vec2& p) {
+    return std::find(points.begin(), points.end(), p) != points.end();
+  };
+  for (const HumanSpec& h : humans) {
+    EXPECT_TRUE(listed(h.start));
+    for (const Vec2& g : h.goals) EXPECT_TRUE(listed(g));
+  }
+  ExpectRules(humans, *space, Vec2(0, -4), Vec2(0, 4), 3.0);
+  EXPECT_THROW(ListSampler({}), std::invalid_argument);
+}
+
+TEST(HumanPlacement, ZeroHumansIsEmpty) {
+  Rng rng(1);
+  EXPECT_TRUE(PlaceHumans(AreaOf(Room(10.0), 0.4), Vec2(0, -4), Vec2(0, 4),
+                          Request(0, HumanGoalMode::kStay), HumanPlacementOptions{}, rng)
+                  .empty());
+}
+
+}  // namespace
+}  // namespace crowdsim

@@ -1,0 +1,174 @@
+#include "crowdnav_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "crowdsim/rng.h"
+
+namespace crowdsim::crowdnav {
+namespace {
+
+// CrowdNav retries forever; a bound turns an impossible request into a clear error.
+constexpr int kMaxTries = 100000;
+constexpr double kDefaultCircleRadius = 4.0;
+constexpr double kDefaultSquareWidth = 10.0;
+constexpr int kDefaultNewGoalCount = 16;
+
+std::string Number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%g", x);
+  return buf;
+}
+
+// An agent already placed, as CrowdNav's rejection tests see it.
+struct Placed {
+  Vec2 position;
+  Vec2 goal;
+  double radius;
+};
+
+[[noreturn]] void Fail(int human, const ScenarioRequest& request, const std::string& scenario) {
+  throw std::runtime_error("crowdnav: cannot place human " + std::to_string(human + 1) + " of " +
+                           std::to_string(request.num_humans) + " in " + scenario + " after " +
+                           std::to_string(kMaxTries) +
+                           " tries: too many humans for the circle or square. Fix: lower "
+                           "num_humans or raise circle_radius / square_width");
+}
+
+// generate_circle_crossing_human: angle, x noise, y noise; rejected when closer than
+// r_h + r_A + discomfort_dist to any placed agent's position or goal; goal = -start.
+void CircleHuman(double radius, const ScenarioRequest& request, int index,
+                 const std::vector<Placed>& placed, Rng& rng, Vec2* start, Vec2* goal) {
+  const double r_h = request.sim.human_radius;
+  const double v_pref = request.sim.human_v_pref;
+  for (int t = 0; t < kMaxTries; ++t) {
+    const double angle = rng.Uniform() * 2.0 * std::numbers::pi;
+    const double px_noise = (rng.Uniform() - 0.5) * v_pref;
+    const double py_noise = (rng.Uniform() - 0.5) * v_pref;
+    const Vec2 p(radius * std::cos(angle) + px_noise, radius * std::sin(angle) + py_noise);
+    bool collide = false;
+    for (const Placed& a : placed) {
+      const double min_dist = r_h + a.radius + request.sim.discomfort_dist;
+      if ((p - a.position).norm() < min_dist || (p - a.goal).norm() < min_dist) {
+        collide = true;
+        break;
+      }
+    }
+    if (!collide) {
+      *start = p;
+      *goal = -p;
+      return;
+    }
+  }
+  Fail(index, request, "circle_crossing");
+}
+
+// generate_square_crossing_human: side sign first, then the start (tested against placed
+// positions only), then the goal on the other side (tested against placed goals only).
+void SquareHuman(double width, const ScenarioRequest& request, int index,
+                 const std::vector<Placed>& placed, Rng& rng, Vec2* start, Vec2* goal) {
+  const double r_h = request.sim.human_radius;
+  const double sign = rng.Uniform() > 0.5 ? -1.0 : 1.0;
+  auto clear = [&](const Vec2& p, bool against_goals) {
+    for (const Placed& a : placed) {
+      const double min_dist = r_h + a.radius + request.sim.discomfort_dist;
+      if ((p - (against_goals ? a.goal : a.position)).norm() < min_dist) return false;
+    }
+    return true;
+  };
+  bool ok = false;
+  for (int t = 0; t < kMaxTries && !ok; ++t) {
+    const double px = rng.Uniform() * width * 0.5 * sign;
+    const double py = (rng.Uniform() - 0.5) * width;
+    *start = Vec2(px, py);
+    ok = clear(*start, false);
+  }
+  if (!ok) Fail(index, request, "square_crossing");
+  ok = false;
+  for (int t = 0; t < kMaxTries && !ok; ++t) {
+    const double gx = rng.Uniform() * width * 0.5 * -sign;
+    const double gy = (rng.Uniform() - 0.5) * width;
+    *goal = Vec2(gx, gy);
+    ok = clear(*goal, true);
+  }
+  if (!ok) Fail(index, request, "square_crossing");
+}
+
+}  // namespace
+
+ParamSchema Schema() {
+  // One parameter per entry reads as a table.
+  // clang-format off
+  return {
+      {"scenario", ParamType::kString, std::string("circle_crossing"), 0, 0,
+       {"circle_crossing", "square_crossing"}, "CrowdNav's human generation rule"},
+      {"circle_radius", ParamType::kDouble, kDefaultCircleRadius, 0.5, 100.0, {},
+       "m; circle of the humans' starts, and the robot's start/goal distance from the centre"},
+      {"square_width", ParamType::kDouble, kDefaultSquareWidth, 0.5, 200.0, {},
+       "m; side of the square_crossing square"},
+      {"new_goal_count", ParamType::kInt, std::int64_t{kDefaultNewGoalCount}, 1, 1000, {},
+       "goals per human when the suite gives humans new goals (they cross back and forth)"},
+  };
+  // clang-format on
+}
+
+CrowdNavWorld::CrowdNavWorld(const Params& params)
+    : crossing_(params.GetString("scenario") == "square_crossing" ? Crossing::kSquare
+                                                                  : Crossing::kCircle),
+      circle_radius_(params.GetDouble("circle_radius")),
+      square_width_(params.GetDouble("square_width")),
+      new_goal_count_(static_cast<int>(params.GetInt("new_goal_count"))) {
+  identity_ = std::string("crowdnav:scenario=") +
+              (crossing_ == Crossing::kCircle ? "circle_crossing" : "square_crossing");
+  if (circle_radius_ != kDefaultCircleRadius)
+    identity_ += ":circle_radius=" + Number(circle_radius_);
+  if (crossing_ == Crossing::kSquare && square_width_ != kDefaultSquareWidth) {
+    identity_ += ":square_width=" + Number(square_width_);
+  }
+  if (new_goal_count_ != kDefaultNewGoalCount) {
+    identity_ += ":new_goal_count=" + std::to_string(new_goal_count_);
+  }
+  // No obstacles; bounds only need to hold everybody with room to swerve.
+  const double half = 2.0 * std::max(circle_radius_, 0.5 * square_width_) + 5.0;
+  auto map = std::make_shared<StaticMap>();
+  map->name = "crowdnav_open";
+  map->bounds = Rect::FromCorners(-half, -half, half, half);
+  map_ = std::move(map);
+}
+
+Scenario CrowdNavWorld::Make(const ScenarioRequest& request) const {
+  Scenario s;
+  s.map = map_;
+  s.seed = request.seed;
+  s.layout = crossing_ == Crossing::kCircle ? "circle_crossing" : "square_crossing";
+  s.robot_start = Vec2(0.0, -circle_radius_);
+  s.robot_goal = Vec2(0.0, circle_radius_);
+
+  Rng rng(request.seed);
+  std::vector<Placed> placed{{s.robot_start, s.robot_goal, request.sim.robot_radius}};
+  const int goals = request.goal_mode == HumanGoalMode::kNewGoal ? new_goal_count_ : 1;
+  for (int i = 0; i < request.num_humans; ++i) {
+    Vec2 start, goal;
+    if (crossing_ == Crossing::kCircle) {
+      CircleHuman(circle_radius_, request, i, placed, rng, &start, &goal);
+    } else {
+      SquareHuman(square_width_, request, i, placed, rng, &start, &goal);
+    }
+    placed.push_back({start, goal, request.sim.human_radius});
+    HumanSpec h;
+    h.start = start;
+    h.radius = request.sim.human_radius;
+    h.v_pref = request.sim.human_v_pref;
+    // New goals alternate between the far side and the start, drawing nothing more, so the
+    // first goal (and everything CrowdNav does) stays identical in both goal modes.
+    for (int k = 0; k < goals; ++k) h.goals.push_back(k % 2 == 0 ? goal : start);
+    s.humans.push_back(std::move(h));
+  }
+  return s;
+}
+
+}  // namespace crowdsim::crowdnav
