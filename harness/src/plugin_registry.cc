@@ -79,7 +79,7 @@ fs::path PluginRegistry::BuildPluginDir() { return CROWDSIM_BUILD_PLUGIN_DIR; }
 
 fs::path DataRoot() {
   if (const char* env = std::getenv("CROWDSIM_DATA_DIR"); env && *env) return env;
-  return fs::path(CROWDSIM_BUILD_PLUGIN_DIR).parent_path().parent_path();
+  return CROWDSIM_SOURCE_DIR;
 }
 
 PluginRegistry::PluginRegistry() : search_dirs_(DefaultSearchDirs()) {}

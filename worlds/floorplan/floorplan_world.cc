@@ -1,0 +1,78 @@
+#include "floorplan_world.h"
+
+#include <stdexcept>
+
+#include "crowdsim/human_placement.h"
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/rng.h"
+
+namespace crowdsim::floorplan {
+
+ParamSchema Schema() {
+  return {
+      {"world", ParamType::kString, std::string("worlds/gibson/easy.yaml"), -kInfinity, kInfinity,
+       {}, "world file of an imported floor plan (relative: suite folder, then data root)"},
+      {"split", ParamType::kString, std::string("test"), -kInfinity, kInfinity, {"train", "test"},
+       "which precomputed robot start/goal pairs to use"},
+  };
+}
+
+std::filesystem::path ResolveWorldPath(const Params& params, const std::string& value) {
+  std::filesystem::path p = params.ResolvePath(value);
+  std::error_code ec;
+  if (p.is_absolute() || std::filesystem::exists(p, ec)) return p;
+  const std::filesystem::path in_data = DataRoot() / value;
+  return std::filesystem::exists(in_data, ec) ? in_data : p;
+}
+
+FloorplanWorld::FloorplanWorld(const Params& params) : split_(params.GetString("split")) {
+  const std::string value = params.GetString("world");
+  const std::filesystem::path path = ResolveWorldPath(params, value);
+  if (!std::filesystem::exists(path)) {
+    throw std::invalid_argument("floorplan: world '" + value + "' not found (looked in the suite "
+                                "folder and " + DataRoot().string() + "); import one with "
+                                "`crowdsim-bench floorplan import`");
+  }
+  WorldFile world = ReadWorldFile(path);
+  pairs_ = split_ == "train" ? world.train_pairs : world.test_pairs;
+  if (pairs_.empty()) {
+    throw std::invalid_argument(path.string() + ": no robot_pairs." + split_ +
+                                " (re-import the plan, or use the other split)");
+  }
+  if (world.free_points.empty()) {
+    throw std::invalid_argument(path.string() + ": no free_points for placing humans "
+                                "(re-import the plan with `crowdsim-bench floorplan import`)");
+  }
+  name_ = world.name;
+  free_points_ = std::move(world.free_points);
+  auto map = std::make_shared<StaticMap>(world.ToStaticMap());
+  map_ = std::move(map);
+}
+
+std::string FloorplanWorld::Identity() const { return "floorplan:" + name_ + ":" + split_; }
+
+Scenario FloorplanWorld::Make(const ScenarioRequest& request) const {
+  const auto count = static_cast<std::int64_t>(pairs_.size());
+  const std::int64_t k = ((request.episode_index % count) + count) % count;
+  Scenario s;
+  s.map = map_;
+  s.robot_start = pairs_[static_cast<size_t>(k)].start;
+  s.robot_goal = pairs_[static_cast<size_t>(k)].goal;
+  s.seed = request.seed;
+  s.layout = name_ + "/" + split_ + "/" + std::to_string(k);
+  // Free points were sampled with the robot's clearance against the plan's mask; the
+  // predicate adds the kept rectangles for the human's own radius.
+  const auto free = std::make_shared<DiscFreeSpace>(map_, request.sim.human_radius);
+  // Goals leave room to pass: a human who stays on its goal must not close a passage.
+  const auto goal_space =
+      std::make_shared<DiscFreeSpace>(map_, PassableGoalClearance(request.sim.human_radius));
+  PlacementArea area{[free](const Vec2& p) { return free->Contains(p); },
+                     ListSampler(free_points_),
+                     [goal_space](const Vec2& p) { return goal_space->Contains(p); }};
+  Rng rng(request.seed);
+  s.humans = PlaceHumans(area, s.robot_start, s.robot_goal, request,
+                         HumanPlacementOptions::FromRequest(request), rng);
+  return s;
+}
+
+}  // namespace crowdsim::floorplan

@@ -1,0 +1,40 @@
+// The `floorplan` world plugin: episodes in an imported real floor plan. The robot's start
+// and goal are the precomputed pairs of the chosen split (episode k uses pair k mod count);
+// humans stand on the world's free points.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "crowdsim/params.h"
+#include "crowdsim/world_file.h"
+#include "crowdsim/world_source.h"
+
+namespace crowdsim::floorplan {
+
+/// Immutable after construction, so one instance serves every worker thread.
+class FloorplanWorld final : public WorldSource {
+ public:
+  /// Reads the world file named by params "world"; throws WorldFileError / invalid_argument.
+  explicit FloorplanWorld(const Params& params);
+  std::string Identity() const override;
+  int LayoutCount() const override { return 1; }
+  Scenario Make(const ScenarioRequest& request) const override;
+
+ private:
+  std::string split_;
+  std::string name_;
+  std::shared_ptr<const StaticMap> map_;
+  std::vector<StartGoal> pairs_;
+  std::vector<Vec2> free_points_;
+};
+
+/// The plugin's parameters: world (path), split (train|test).
+ParamSchema Schema();
+
+/// Where a `world` value points: as given, else against the suite's folder
+/// (Params::ResolvePath), else against the data root (DataRoot()).
+std::filesystem::path ResolveWorldPath(const Params& params, const std::string& value);
+
+}  // namespace crowdsim::floorplan
