@@ -1,0 +1,38 @@
+// Plane-geometry helpers of the ORCA solver and its roadmap. Kept local to the solver so it
+// depends only on the core's types, not on the collision code.
+#pragma once
+
+#include <span>
+
+#include "crowdsim/geometry.h"
+
+namespace crowdsim::orca {
+
+/// RVO2's tolerance for parallel lines and "already covered" tests.
+inline constexpr double kEpsilon = 1e-5;
+
+/// Determinant of the 2x2 matrix [a b] (z of the cross product).
+inline double Det(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+/// Positive iff c lies left of the directed line a -> b (twice the signed triangle area).
+inline double LeftOf(const Vec2& a, const Vec2& b, const Vec2& c) { return Det(a - c, b - a); }
+
+/// Squared distance from p to the segment a-b (a point when a == b).
+double SegmentDistanceSq(const Vec2& a, const Vec2& b, const Vec2& p);
+
+/// Squared distance from p to rectangle r; 0 inside.
+double RectDistanceSq(const Rect& r, const Vec2& p);
+
+/// True if the segment a-b touches or crosses rectangle r.
+bool SegmentHitsRect(const Vec2& a, const Vec2& b, const Rect& r);
+
+/// Distance between the segment a-b and rectangle r; 0 when they touch.
+double SegmentRectDistance(const Vec2& a, const Vec2& b, const Rect& r);
+
+/// Distance from p to the nearest rectangle; kInfinity when there is none.
+double DistanceToRects(std::span<const Rect> rects, const Vec2& p);
+
+/// True if the segment a-b stays at least `clearance` (m, >= 0) away from every rectangle.
+bool SegmentClear(std::span<const Rect> rects, const Vec2& a, const Vec2& b, double clearance);
+
+}  // namespace crowdsim::orca

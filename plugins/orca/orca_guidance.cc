@@ -1,0 +1,84 @@
+#include "orca_guidance.h"
+
+namespace crowdsim::orca {
+
+Vec2 PreferredVelocity(const Vec2& position, const GuidanceTarget& target, double v_pref) {
+  const Vec2 to_target = target.point - position;
+  const double dist = to_target.norm();
+  if (target.is_goal && dist <= 1.0) return to_target;
+  if (dist <= 0.0) return Vec2::Zero();
+  return to_target * (v_pref / dist);
+}
+
+void Guidance::Reset(std::shared_ptr<const Roadmap> roadmap) {
+  roadmap_ = std::move(roadmap);
+  path_.clear();
+  remaining_.clear();
+  next_ = 0;
+  unreachable_ = false;
+  best_progress_ = kInfinity;
+  stalled_ = 0;
+  plans_ = 0;
+}
+
+void Guidance::Plan(const Vec2& position, const Vec2& goal) {
+  ++plans_;
+  planned_goal_ = goal;
+  path_ = roadmap_->ShortestPath(position, goal);
+  unreachable_ = path_.empty();
+  remaining_.assign(path_.size(), 0.0);
+  for (std::size_t k = path_.size(); k-- > 1;) {
+    remaining_[k - 1] = remaining_[k] + (path_[k] - path_[k - 1]).norm();
+  }
+  next_ = 0;
+  best_progress_ = kInfinity;
+  stalled_ = 0;
+}
+
+GuidanceTarget Guidance::Next(const Vec2& position, const Vec2& goal) {
+  if (!roadmap_) return {goal, true};
+  // The common case in open space: nothing to plan.
+  if (roadmap_->Visible(position, goal)) {
+    path_.clear();
+    unreachable_ = false;
+    return {goal, true};
+  }
+  if ((path_.empty() && !unreachable_) || goal != planned_goal_) {
+    Plan(position, goal);
+  } else if (unreachable_ && ++stalled_ >= stall_steps_) {
+    Plan(position, goal);  // moved since: maybe the roadmap connects it now
+  }
+  if (unreachable_) return {goal, true};  // ORCA alone, sliding along the obstacles
+
+  // Aim at the farthest waypoint still in sight; lose sight of all of them (pushed away by
+  // others) and the path is planned again from here.
+  auto farthest_visible = [&]() -> std::ptrdiff_t {
+    for (std::size_t k = path_.size(); k-- > next_;) {
+      if (roadmap_->Visible(position, path_[k])) return static_cast<std::ptrdiff_t>(k);
+    }
+    return -1;
+  };
+  std::ptrdiff_t k = farthest_visible();
+  if (k < 0) {
+    Plan(position, goal);
+    if (unreachable_) return {goal, true};
+    k = farthest_visible();
+    if (k < 0) k = 0;  // the plan starts at a node the agent sees; only rounding lands here
+  }
+  next_ = static_cast<std::size_t>(k);
+
+  // Progress = path length still to go; none for stall_steps decisions means the agent is
+  // stuck (crowded corner, pushed off the path): plan again from where it is.
+  const double progress = (path_[next_] - position).norm() + remaining_[next_];
+  if (progress < best_progress_ - progress_epsilon_) {
+    best_progress_ = progress;
+    stalled_ = 0;
+  } else if (++stalled_ >= stall_steps_) {
+    Plan(position, goal);
+    if (unreachable_) return {goal, true};
+    next_ = 0;
+  }
+  return {path_[next_], next_ + 1 == path_.size()};
+}
+
+}  // namespace crowdsim::orca

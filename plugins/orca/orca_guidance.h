@@ -1,0 +1,61 @@
+// Per-agent global guidance: where to head now so that ORCA's local avoidance does not stall
+// behind a large obstacle. Follows a roadmap path, aiming at its farthest visible waypoint,
+// and replans when the agent stops making progress along it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "crowdsim/geometry.h"
+#include "orca_roadmap.h"
+
+namespace crowdsim::orca {
+
+/// Where an agent should head this step.
+struct GuidanceTarget {
+  Vec2 point = Vec2::Zero();  ///< m, world frame
+  bool is_goal = true;        ///< false for an intermediate waypoint (no slowing down there)
+};
+
+/// CrowdNav's preferred velocity towards `target`: v_pref (m/s) along the unit direction
+/// when the target is an intermediate waypoint or a goal farther than 1 m, else
+/// goal - position, so that the agent settles on its goal.
+Vec2 PreferredVelocity(const Vec2& position, const GuidanceTarget& target, double v_pref);
+
+/// Path-following state of one agent (one per policy instance; not shared).
+class Guidance {
+ public:
+  /// `stall_steps` (>= 1): decisions without progress before replanning;
+  /// `progress_epsilon` (m): what counts as progress along the path.
+  explicit Guidance(int stall_steps = 8, double progress_epsilon = 0.05)
+      : stall_steps_(stall_steps), progress_epsilon_(progress_epsilon) {}
+
+  /// Forgets the path and switches to `roadmap` (null: head straight to the goal).
+  void Reset(std::shared_ptr<const Roadmap> roadmap);
+
+  /// The point to head for from `position` on the way to `goal`.
+  GuidanceTarget Next(const Vec2& position, const Vec2& goal);
+
+  const Roadmap* roadmap() const { return roadmap_.get(); }
+  /// Current path (waypoints after the agent, goal last); empty when the goal is in sight.
+  const std::vector<Vec2>& path() const { return path_; }
+  /// Number of plans made since Reset (the first one included).
+  int plans() const { return plans_; }
+
+ private:
+  void Plan(const Vec2& position, const Vec2& goal);
+
+  int stall_steps_;
+  double progress_epsilon_;
+  std::shared_ptr<const Roadmap> roadmap_;
+  std::vector<Vec2> path_;
+  std::vector<double> remaining_;  // path length from waypoint k to the goal
+  std::size_t next_ = 0;           // waypoint aimed at
+  Vec2 planned_goal_ = Vec2::Zero();
+  bool unreachable_ = false;  // the roadmap has no route: head straight to the goal
+  double best_progress_ = kInfinity;
+  int stalled_ = 0;
+  int plans_ = 0;
+};
+
+}  // namespace crowdsim::orca

@@ -1,0 +1,194 @@
+#include "orca_policy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+#include "crowdsim/agent_index.h"
+
+namespace crowdsim::orca {
+
+ParamSchema Schema() {
+  return {
+      {"neighbor_dist",
+       ParamType::kDouble,
+       10.0,
+       0.0,
+       100.0,
+       {},
+       "m; only agents whose centre is closer than this are avoided"},
+      {"max_neighbors",
+       ParamType::kInt,
+       std::int64_t{10},
+       0,
+       100,
+       {},
+       "number of nearest agents avoided (0: obstacles only)"},
+      {"time_horizon",
+       ParamType::kDouble,
+       5.0,
+       0.1,
+       60.0,
+       {},
+       "s; collisions with agents are avoided this far ahead"},
+      {"time_horizon_obst",
+       ParamType::kDouble,
+       5.0,
+       0.1,
+       60.0,
+       {},
+       "s; collisions with obstacles are avoided this far ahead"},
+      {"radius_padding",
+       ParamType::kDouble,
+       0.01,
+       0.0,
+       1.0,
+       {},
+       "m; added to every radius in the solve (CrowdNav: 0.01)"},
+      {"safety_space",
+       ParamType::kDouble,
+       0.0,
+       0.0,
+       1.0,
+       {},
+       "m; added to every radius (0.15 for the IL teacher of an invisible robot)"},
+      {"max_speed_factor",
+       ParamType::kDouble,
+       1.0,
+       0.0,
+       3.0,
+       {},
+       "max speed as a multiple of v_pref (CrowdNav: 1)"},
+      {"guidance",
+       ParamType::kBool,
+       true,
+       0,
+       1,
+       {},
+       "follow a visibility roadmap around the map's rectangles (false: ORCA alone)"},
+      {"guidance_margin",
+       ParamType::kDouble,
+       0.2,
+       0.0,
+       2.0,
+       {},
+       "m; roadmap corners sit this much farther out than the agent's radius"},
+      {"stall_steps",
+       ParamType::kInt,
+       std::int64_t{8},
+       1,
+       1000,
+       {},
+       "decisions without progress along the path before replanning"},
+      {"others_pref_zero",
+       ParamType::kBool,
+       true,
+       0,
+       1,
+       {},
+       "CrowdNav's model of the others (stand still, reciprocal); see README: the only "
+       "model of a one-agent solve, false is rejected"},
+  };
+}
+
+OrcaPolicy::OrcaPolicy(const Params& params)
+    : neighbor_dist_(params.GetDouble("neighbor_dist")),
+      max_neighbors_(static_cast<int>(params.GetInt("max_neighbors"))),
+      time_horizon_(params.GetDouble("time_horizon")),
+      time_horizon_obst_(params.GetDouble("time_horizon_obst")),
+      radius_padding_(params.GetDouble("radius_padding")),
+      safety_space_(params.GetDouble("safety_space")),
+      max_speed_factor_(params.GetDouble("max_speed_factor")),
+      guidance_enabled_(params.GetBool("guidance")),
+      guidance_margin_(params.GetDouble("guidance_margin")),
+      guidance_(static_cast<int>(params.GetInt("stall_steps"))) {
+  if (!params.GetBool("others_pref_zero")) {
+    throw std::invalid_argument(
+        "orca: others_pref_zero: false is not supported. In a decentralised solve only this "
+        "agent's velocity is computed, so the others' preferred velocities never enter it; "
+        "remove the key or set it to true");
+  }
+}
+
+PolicyNeeds OrcaPolicy::Needs() const {
+  PolicyNeeds needs;
+  needs.map = true;
+  return needs;
+}
+
+void OrcaPolicy::Reset(const EpisodeContext& ctx) {
+  ctx_map_ = ctx.map;
+  ctx_time_step_ = ctx.sim.time_step;
+  const double radius = ctx.role == AgentRole::kRobot ? ctx.sim.robot_radius : ctx.sim.human_radius;
+  UseMap(ctx.map, radius + radius_padding_ + safety_space_);
+  guidance_.Reset(roadmap_);  // a new episode: new start and goal
+}
+
+void OrcaPolicy::UseMap(const StaticMap* map, double radius) {
+  const bool same_map = map == map_ && (map == nullptr || map->rectangles == map_rects_);
+  if (!same_map) {
+    map_ = map;
+    map_rects_ = map ? map->rectangles : std::vector<Rect>{};
+    obstacles_ = map ? OrcaObstacles::FromMap(*map) : OrcaObstacles();
+  }
+  if (!same_map || radius != map_radius_) {
+    map_radius_ = radius;
+    const bool plan = guidance_enabled_ && map != nullptr && !map->rectangles.empty();
+    roadmap_ = plan ? SharedRoadmap(*map, radius, guidance_margin_) : nullptr;
+    guidance_.Reset(roadmap_);
+  }
+}
+
+void OrcaPolicy::GatherNeighbours(const Observation& obs) {
+  neighbours_.clear();
+  const double padding = radius_padding_ + safety_space_;
+  if (obs.agents != nullptr) {
+    // Human: ground truth from the harness's grid, nearest first.
+    obs.agents->Nearest(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index,
+                        &neighbour_ids_);
+    const auto all = obs.agents->agents();
+    for (int id : neighbour_ids_) {
+      const AgentState& a = all[id];
+      neighbours_.push_back({a.position, a.velocity, a.radius + padding});
+    }
+    return;
+  }
+  // Robot: the people its person sensor reports, in the sensor frame.
+  const SensorReading* reading = obs.Reading("person");
+  if (reading == nullptr || max_neighbors_ <= 0) return;
+  seen_.clear();
+  const double range_sq = neighbor_dist_ * neighbor_dist_;
+  for (const PersonObservation& person : reading->people) {
+    const Vec2 position = obs.frame.origin + obs.frame.VectorToWorld(person.position);
+    const double dist_sq = (position - obs.self.position).squaredNorm();
+    if (dist_sq >= range_sq) continue;
+    seen_.push_back(
+        {dist_sq, {position, obs.frame.VectorToWorld(person.velocity), person.radius + padding}});
+  }
+  std::stable_sort(seen_.begin(), seen_.end(),
+                   [](const Seen& a, const Seen& b) { return a.dist_sq < b.dist_sq; });
+  if (static_cast<int>(seen_.size()) > max_neighbors_) seen_.resize(max_neighbors_);
+  for (const Seen& s : seen_) neighbours_.push_back(s.agent);
+}
+
+Action OrcaPolicy::Decide(const Observation& obs) {
+  const AgentState& self = obs.self;
+  const double radius = self.radius + radius_padding_ + safety_space_;
+  UseMap(obs.map != nullptr ? obs.map : ctx_map_, radius);
+
+  const GuidanceTarget target = guidance_enabled_ ? guidance_.Next(self.position, self.goal)
+                                                  : GuidanceTarget{self.goal, true};
+  const Vec2 pref = PreferredVelocity(self.position, target, self.v_pref);
+
+  GatherNeighbours(obs);
+  OrcaParams params;
+  params.time_horizon = time_horizon_;
+  params.time_horizon_obst = time_horizon_obst_;
+  params.max_speed = self.v_pref * max_speed_factor_;
+  const double time_step = obs.time_step > 0.0 ? obs.time_step : ctx_time_step_;
+  const OrcaAgent me{self.position, self.velocity, radius};
+  return Action{ComputeOrcaVelocity(me, neighbours_, obstacles_, params, pref, time_step)};
+}
+
+}  // namespace crowdsim::orca

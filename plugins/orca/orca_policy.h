@@ -1,0 +1,64 @@
+// The `orca` policy: CrowdNav's decentralised ORCA (each agent solves for itself, treating the
+// others as reciprocal agents), plus the static map's rectangles as ORCA obstacles and a
+// roadmap for global guidance. The humans' motion model, the ORCA robot baseline and the
+// imitation-learning teacher.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "crowdsim/params.h"
+#include "crowdsim/policy.h"
+#include "orca_guidance.h"
+#include "orca_obstacles.h"
+#include "orca_solver.h"
+
+namespace crowdsim::orca {
+
+/// The plugin's parameters (CrowdNav's defaults).
+ParamSchema Schema();
+
+class OrcaPolicy final : public Policy {
+ public:
+  explicit OrcaPolicy(const Params& params);
+
+  PolicyNeeds Needs() const override;
+  void Reset(const EpisodeContext& ctx) override;
+  Action Decide(const Observation& obs) override;
+
+ private:
+  /// Rebuilds the obstacles and the roadmap when the map or the radius changed.
+  void UseMap(const StaticMap* map, double radius);
+  /// Fills neighbours_ from the ground-truth agents (humans) or the person sensor (robot).
+  void GatherNeighbours(const Observation& obs);
+
+  // Settings.
+  double neighbor_dist_;
+  int max_neighbors_;
+  double time_horizon_;
+  double time_horizon_obst_;
+  double radius_padding_;
+  double safety_space_;
+  double max_speed_factor_;
+  bool guidance_enabled_;
+  double guidance_margin_;
+
+  // Episode state.
+  const StaticMap* ctx_map_ = nullptr;
+  double ctx_time_step_ = 0.25;
+  const StaticMap* map_ = nullptr;  // the map the obstacles below were built from
+  std::vector<Rect> map_rects_;     // its rectangles, to notice a new map at the same address
+  double map_radius_ = -1.0;        // radius the roadmap was built for
+  OrcaObstacles obstacles_;
+  std::shared_ptr<const Roadmap> roadmap_;  // null without guidance or rectangles
+  Guidance guidance_;
+  std::vector<OrcaAgent> neighbours_;
+  std::vector<int> neighbour_ids_;
+  struct Seen {
+    double dist_sq;
+    OrcaAgent agent;
+  };
+  std::vector<Seen> seen_;
+};
+
+}  // namespace crowdsim::orca

@@ -1,0 +1,61 @@
+// Global guidance for ORCA agents: a visibility roadmap over the rectangles of a static map,
+// so that agents walk around large obstacles instead of stalling in front of them.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "crowdsim/geometry.h"
+#include "crowdsim/static_map.h"
+
+namespace crowdsim::orca {
+
+/// Visibility graph for a disc of one radius: nodes at the corners of the rectangles grown
+/// by clearance + margin, edges between nodes whose connecting segment keeps `clearance` from
+/// every rectangle. Immutable once built; safe to share between threads.
+class Roadmap {
+ public:
+  /// `clearance` (m, >= 0): the radius to keep clear; `margin` (m, >= 0): extra room at the
+  /// corners, so an agent slightly off a node still sees the next one. Nodes outside
+  /// `bounds` are dropped (unless bounds is empty).
+  Roadmap(std::span<const Rect> rects, const Rect& bounds, double clearance, double margin);
+
+  double clearance() const { return clearance_; }
+  double margin() const { return margin_; }
+  const std::vector<Rect>& rects() const { return rects_; }
+  const Rect& bounds() const { return bounds_; }
+  const std::vector<Vec2>& nodes() const { return nodes_; }
+  /// Number of undirected edges.
+  std::size_t num_edges() const { return edges_.size() / 2; }
+
+  /// True if a disc of radius <= clearance can move straight from a to b. The clearance
+  /// asked of the segment is capped by that of its ends, so an agent already squeezed
+  /// against a wall still sees along it.
+  bool Visible(const Vec2& a, const Vec2& b) const;
+
+  /// Shortest path from `start` to `goal` over the roadmap: the waypoints after the start,
+  /// `goal` last. Empty when the roadmap does not connect them.
+  std::vector<Vec2> ShortestPath(const Vec2& start, const Vec2& goal) const;
+
+ private:
+  struct Edge {
+    int to = 0;
+    double length = 0.0;
+  };
+  double PointClearance(const Vec2& p) const;
+
+  std::vector<Rect> rects_;
+  Rect bounds_;
+  double clearance_ = 0.0;
+  double margin_ = 0.0;
+  std::vector<Vec2> nodes_;
+  std::vector<int> edge_start_;  // CSR: edges of node i are edges_[edge_start_[i] .. [i + 1])
+  std::vector<Edge> edges_;
+};
+
+/// The roadmap of `map` for (clearance, margin), shared by every policy of the process: it
+/// is built once per map and radius (maps are immutable), not once per agent and episode.
+std::shared_ptr<const Roadmap> SharedRoadmap(const StaticMap& map, double clearance, double margin);
+
+}  // namespace crowdsim::orca

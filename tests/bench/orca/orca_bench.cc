@@ -1,0 +1,145 @@
+// ORCA costs: one decision in a typical CrowdSim++ scene, one step of RVO2's Blocks, and one
+// decision of the loaded plugin (guidance included).
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "crowdsim/agent_index.h"
+#include "crowdsim/plugin_registry.h"
+#include "orca_obstacles.h"
+#include "orca_solver.h"
+#include "orca_test_sim.h"
+#include "test_paths.h"
+
+namespace crowdsim::orca {
+namespace {
+
+// Seven rectangles within obstacle range (5.3 m) of an agent at the origin.
+std::vector<Rect> SevenRects() {
+  return {Rect::FromCorners(1.5, -0.5, 2.5, 1.0),   Rect::FromCorners(-3.0, 1.0, -1.5, 2.0),
+          Rect::FromCorners(-1.0, -3.5, 1.0, -2.5), Rect::FromCorners(3.0, 2.5, 4.5, 4.0),
+          Rect::FromCorners(-4.5, -2.0, -3.5, 0.0), Rect::FromCorners(2.5, -4.0, 4.0, -3.0),
+          Rect::FromCorners(-1.0, 3.5, 1.0, 4.5)};
+}
+
+// Five humans around the agent, walking in various directions.
+std::vector<OrcaAgent> FiveNeighbours() {
+  return {{Vec2(1.0, 1.2), Vec2(-0.6, 0.1), 0.31},
+          {Vec2(-1.2, -0.8), Vec2(0.5, 0.5), 0.31},
+          {Vec2(0.2, -1.6), Vec2(0.0, 0.9), 0.31},
+          {Vec2(-2.0, 0.3), Vec2(0.8, -0.2), 0.31},
+          {Vec2(1.1, 2.6), Vec2(-0.3, -0.9), 0.31}};
+}
+
+void BM_OrcaDecision5Neighbours7Rects(benchmark::State& state) {
+  const std::vector<Rect> rects = SevenRects();
+  const OrcaObstacles obstacles = OrcaObstacles::FromRects(rects);
+  const std::vector<OrcaAgent> neighbours = FiveNeighbours();
+  const OrcaAgent self{Vec2::Zero(), Vec2(0.8, 0.2), 0.31};
+  const OrcaParams params{5.0, 5.0, 1.0};
+  OrcaSolveInfo info;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        ComputeOrcaVelocity(self, neighbours, obstacles, params, Vec2(1.0, 0.0), 0.25, &info));
+  }
+  state.counters["lines"] = static_cast<double>(info.num_lines);
+  state.counters["obstacle_lines"] = static_cast<double>(info.num_obstacle_lines);
+}
+BENCHMARK(BM_OrcaDecision5Neighbours7Rects);
+
+// RVO2's Blocks (reference facts 2.6), restarted whenever every agent is within 20 m.
+testing::TestSim MakeBlocks() {
+  OrcaObstacles obstacles;
+  const std::array<std::array<Vec2, 4>, 4> squares = {{
+      {Vec2(-10, 40), Vec2(-40, 40), Vec2(-40, 10), Vec2(-10, 10)},
+      {Vec2(10, 40), Vec2(10, 10), Vec2(40, 10), Vec2(40, 40)},
+      {Vec2(10, -40), Vec2(40, -40), Vec2(40, -10), Vec2(10, -10)},
+      {Vec2(-10, -40), Vec2(-10, -10), Vec2(-40, -10), Vec2(-40, -40)},
+  }};
+  for (const auto& square : squares) obstacles.AddPolygon(square);
+  testing::TestSim sim(0.25, std::move(obstacles));
+  auto add = [&](const Vec2& start, const Vec2& goal) {
+    testing::SimAgent agent;
+    agent.neighbor_dist = 15.0;
+    agent.max_neighbors = 10;
+    agent.params = OrcaParams{5.0, 5.0, 2.0};
+    agent.state.radius = 2.0;
+    agent.state.position = start;
+    agent.goal = goal;
+    sim.AddAgent(agent);
+  };
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 5; ++j) {
+      add(Vec2(55.0 + 10 * i, 55.0 + 10 * j), Vec2(-75, -75));
+      add(Vec2(-55.0 - 10 * i, 55.0 + 10 * j), Vec2(75, -75));
+      add(Vec2(55.0 + 10 * i, -55.0 - 10 * j), Vec2(-75, 75));
+      add(Vec2(-55.0 - 10 * i, -55.0 - 10 * j), Vec2(75, 75));
+    }
+  }
+  return sim;
+}
+
+void BM_Blocks100AgentStep(benchmark::State& state) {
+  testing::TestSim sim = MakeBlocks();
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi);
+  std::uniform_real_distribution<double> size(0.0, 0.0001);
+  for (auto _ : state) {
+    bool done = true;
+    for (auto& a : sim.agents()) {
+      const Vec2 d = a.goal - a.state.position;
+      done = done && d.squaredNorm() <= 400.0;
+      const double phi = angle(rng);
+      a.pref_velocity = (d.squaredNorm() > 1.0 ? Vec2(d.normalized()) : d) +
+                        size(rng) * Vec2(std::cos(phi), std::sin(phi));
+    }
+    if (done) {
+      state.PauseTiming();
+      sim = MakeBlocks();
+      state.ResumeTiming();
+    }
+    sim.Step();
+  }
+  state.SetItemsProcessed(state.iterations() * 100);  // agent decisions
+}
+BENCHMARK(BM_Blocks100AgentStep)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
+
+// The plugin as the harness runs it for a human: neighbour query, guidance, ORCA.
+void BM_PluginDecideHuman(benchmark::State& state) {
+  PluginRegistry registry({crowdsim::testing::PluginDir()});
+  const LoadedPlugin& plugin = registry.Load("orca", PluginKind::kPolicy);
+  auto policy = registry.MakePolicy(plugin, Params::Defaults(plugin.schema));
+  StaticMap map;
+  map.bounds = Rect::FromCorners(-10, -10, 10, 10);
+  map.rectangles = SevenRects();
+  EpisodeContext ctx;
+  ctx.map = &map;
+  ctx.role = AgentRole::kHuman;
+  policy->Reset(ctx);
+  std::vector<AgentState> agents(1);
+  agents[0].position = Vec2::Zero();
+  agents[0].velocity = Vec2(0.8, 0.2);
+  agents[0].goal = Vec2(6.0, -1.0);  // behind a rectangle: guidance has a path to follow
+  for (const OrcaAgent& n : FiveNeighbours()) {
+    AgentState s;
+    s.position = n.position;
+    s.velocity = n.velocity;
+    agents.push_back(s);
+  }
+  AgentIndex index;
+  index.Rebuild(agents);
+  Observation obs;
+  obs.self = agents[0];
+  obs.agents = &index;
+  obs.self_index = 0;
+  obs.map = &map;
+  for (auto _ : state) benchmark::DoNotOptimize(policy->Decide(obs));
+}
+BENCHMARK(BM_PluginDecideHuman);
+
+}  // namespace
+}  // namespace crowdsim::orca
