@@ -1,0 +1,48 @@
+// train: imitation + reinforcement learning of a learned policy from a training file.
+#include <cstdio>
+#include <iostream>
+
+#include "../src/training/train_spec.h"
+#include "../src/training/trainer.h"
+#include "cli_args.h"
+#include "commands.h"
+
+namespace crowdsim::cli {
+
+int TrainCommand(const std::vector<std::string>& args) {
+  const Args a = Args::Parse(args, {"--out"}, {"--resume", "--quiet"});
+  if (a.positional.size() != 1) throw UsageError("train needs exactly one training file");
+  PluginRegistry registry;
+  training::TrainSpecLoadResult loaded = training::LoadTrainSpec(a.positional[0], registry);
+  if (!loaded.spec) {
+    for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
+    std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
+              << " in " << a.positional[0] << "\n";
+    return 2;
+  }
+  training::TrainOptions options;
+  if (auto out = a.Get("--out")) options.out_dir = *out;
+  options.resume = a.Has("--resume");
+  options.progress = !a.Has("--quiet");
+  try {
+    const training::TrainSummary s = training::RunTraining(*loaded.spec, registry, options);
+    std::cout << "trained " << loaded.spec->name << " in " << s.wall_seconds << " s: "
+              << s.weights.string();
+    if (!s.best_weights.empty()) std::cout << " (best validation: " << s.best_weights.string() << ")";
+    std::cout << "\n";
+    if (!s.validations.empty()) {
+      const auto& v = s.validations.back();
+      std::cout << "last validation: success " << v.success << ", collision " << v.collision
+                << ", timeout " << v.timeout << ", nav time " << v.nav_time << "\n";
+    }
+  } catch (const training::TrainingInterrupted& e) {
+    std::cerr << "\n" << e.what() << "\n";
+    return 130;
+  } catch (const training::TrainError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace crowdsim::cli

@@ -1,0 +1,240 @@
+#include "train_spec.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <sstream>
+
+#include "../suite_reader.h"
+#include "crowdsim/rng.h"
+
+namespace crowdsim::training {
+namespace fs = std::filesystem;
+using suite_internal::Present;
+using suite_internal::Reader;
+
+std::string TrainSpec::ConfigHash() const {
+  Suite s;
+  s.canonical = canonical;
+  return s.ConfigHash();
+}
+
+namespace {
+
+const std::vector<std::string> kTopKeys = {"name", "description", "seed", "sim", "policy", "params",
+                                           "weights", "sensors", "world", "humans", "training"};
+
+/// The world trains on its train split: `split` defaults to train, test is refused.
+void ReadTrainWorld(Reader& r, const YAML::Node& n, const fs::path& base, PluginUse* out) {
+  suite_internal::ReadWorld(r, n, "world", base, out);
+  if (!out->loaded || !out->params.Has("split")) return;
+  if (!Present(n["split"])) {
+    out->params.Set("split", std::string("train"));
+  } else if (out->params.GetString("split") != "train") {
+    r.Error(n["split"], "world.split",
+            "training uses the world's train split (the test split is for suites); set split: train");
+  }
+}
+
+void ReadHumans(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpec* s) {
+  const bool map = Present(n) && r.IsMap(n, "humans", "count, policy, params");
+  if (map) {
+    r.CheckKeys(n, "humans", {"count", "policy", "params"});
+    if (const YAML::Node c = n["count"]; Present(c)) {
+      if (c.IsSequence()) {
+        if (c.size() != 2) {
+          r.Error(c, "humans.count", "a range is a list of two counts [min, max]");
+        } else {
+          auto lo = r.Integer(c[0], "humans.count[0]", 0, 1000);
+          auto hi = r.Integer(c[1], "humans.count[1]", 0, 1000);
+          if (lo && hi && *lo > *hi) r.Error(c, "humans.count", "min is larger than max");
+          if (lo && hi) {
+            s->humans_min = static_cast<int>(*lo);
+            s->humans_max = static_cast<int>(*hi);
+          }
+        }
+      } else if (auto k = r.Integer(c, "humans.count", 0, 1000)) {
+        s->humans_min = s->humans_max = static_cast<int>(*k);
+      }
+    }
+  }
+  const bool given = map && Present(n["policy"]);
+  const YAML::Node policy = given ? n["policy"] : YAML::Node("orca");
+  const YAML::Node params = map ? n["params"] : YAML::Node(YAML::NodeType::Undefined);
+  if (Present(params) && !r.IsMap(params, "humans.params", "policy parameters")) return;
+  s->human_policy.plugin = policy.Scalar();
+  s->human_policy.loaded = r.Plugin(policy, given ? "humans.policy" : "humans.policy (default)", PluginKind::kPolicy);
+  if (s->human_policy.loaded) {
+    s->human_policy.params = r.ParamsFor(*s->human_policy.loaded, params, {}, "humans.params", base);
+  }
+}
+
+void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpec* s) {
+  TrainingSettings& t = s->training;
+  struct IntField {
+    const char* key;
+    int* target;
+    int lo, hi;
+  };
+  struct RealField {
+    const char* key;
+    double* target;
+    double lo, hi;
+  };
+  const std::vector<IntField> ints = {
+      {"il_episodes", &t.il_episodes, 0, 10'000'000},
+      {"il_epochs", &t.il_epochs, 0, 100'000},
+      {"rl_episodes", &t.rl_episodes, 0, 10'000'000},
+      {"epsilon_decay_episodes", &t.epsilon_decay_episodes, 0, 10'000'000},
+      {"target_update_interval", &t.target_update_interval, 1, 10'000'000},
+      {"capacity", &t.capacity, 1, 100'000'000},
+      {"batch_size", &t.batch_size, 1, 1'000'000},
+      {"train_batches", &t.train_batches, 0, 1'000'000},
+      {"validation_interval", &t.validation_interval, 0, 10'000'000},
+      {"validation_episodes", &t.validation_episodes, 0, 1'000'000},
+      {"checkpoint_interval", &t.checkpoint_interval, 1, 10'000'000},
+  };
+  const std::vector<RealField> reals = {
+      {"il_learning_rate", &t.il_learning_rate, 0.0, 10.0},
+      {"rl_learning_rate", &t.rl_learning_rate, 0.0, 10.0},
+      {"momentum", &t.momentum, 0.0, 1.0},
+      {"epsilon_start", &t.epsilon_start, 0.0, 1.0},
+      {"epsilon_end", &t.epsilon_end, 0.0, 1.0},
+  };
+  std::vector<std::string> keys = {"il_policy", "il_params"};
+  for (const auto& f : ints) keys.push_back(f.key);
+  for (const auto& f : reals) keys.push_back(f.key);
+  const bool map = Present(n) && r.IsMap(n, "training", "imitation and RL settings");
+  if (map) {
+    r.CheckKeys(n, "training", keys);
+    for (const auto& f : ints) {
+      if (Present(n[f.key])) {
+        if (auto v = r.Integer(n[f.key], Reader::Child("training", f.key), f.lo, f.hi)) *f.target = static_cast<int>(*v);
+      }
+    }
+    for (const auto& f : reals) {
+      if (Present(n[f.key])) {
+        if (auto v = r.Number(n[f.key], Reader::Child("training", f.key), f.lo, f.hi)) *f.target = *v;
+      }
+    }
+  }
+  const bool named = map && Present(n["il_policy"]);
+  const YAML::Node teacher = named ? n["il_policy"] : YAML::Node("orca");
+  const std::string teacher_path = named ? "training.il_policy" : "training.il_policy (default)";
+  const YAML::Node teacher_params = map ? n["il_params"] : YAML::Node(YAML::NodeType::Undefined);
+  if (Present(teacher_params) && !r.IsMap(teacher_params, "training.il_params", "policy parameters")) return;
+  s->teacher.plugin = teacher.Scalar();
+  s->teacher.loaded = r.Plugin(teacher, teacher_path, PluginKind::kPolicy);
+  if (!s->teacher.loaded) return;
+  s->teacher.params = r.ParamsFor(*s->teacher.loaded, teacher_params, {}, "training.il_params", base);
+  // CrowdNav: an invisible robot's teacher keeps 0.15 m more clearance, since nobody yields.
+  const bool given = Present(teacher_params) && teacher_params.IsMap() && Present(teacher_params["safety_space"]);
+  if (!given && s->teacher.params.Has("safety_space")) {
+    s->teacher.params.Set("safety_space", s->sim.robot_visible ? 0.0 : 0.15);
+  }
+}
+
+std::string Canonical(const TrainSpec& s) {
+  std::ostringstream os;
+  os << "seed=" << s.seed << "\n";
+  os << "sim=" << s.sim.time_step << "," << s.sim.time_limit << "," << s.sim.goal_radius << ","
+     << s.sim.discomfort_dist << "," << s.sim.robot_radius << "," << s.sim.robot_v_pref << ","
+     << s.sim.human_radius << "," << s.sim.human_v_pref << "," << s.sim.robot_visible << ","
+     << s.sim.success_reward << "," << s.sim.collision_penalty << ","
+     << s.sim.discomfort_penalty_factor << "," << s.sim.gamma << "\n";
+  os << "policy:";
+  suite_internal::Canonical(s.policy, os);
+  os << "\nsensors:";
+  for (const auto& sen : s.sensors) suite_internal::Canonical(sen, os);
+  os << "\nworld:";
+  suite_internal::Canonical(s.world, os);
+  os << "\nhumans:" << s.humans_min << "-" << s.humans_max << ",";
+  suite_internal::Canonical(s.human_policy, os);
+  os << "\nteacher:";
+  suite_internal::Canonical(s.teacher, os);
+  const TrainingSettings& t = s.training;
+  os << "\ntraining:" << t.il_episodes << "," << t.il_epochs << "," << t.il_learning_rate << ","
+     << t.rl_episodes << "," << t.rl_learning_rate << "," << t.momentum << "," << t.epsilon_start
+     << "," << t.epsilon_end << "," << t.epsilon_decay_episodes << "," << t.target_update_interval
+     << "," << t.capacity << "," << t.batch_size << "," << t.train_batches << ","
+     << t.validation_interval << "," << t.validation_episodes << "\n";
+  return os.str();
+}
+
+}  // namespace
+
+TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry) {
+  TrainSpecLoadResult result;
+  if (!fs::exists(file)) {
+    result.errors.push_back({file.string(), 0, 0, "", "training file does not exist"});
+    return result;
+  }
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file.string());
+  } catch (const YAML::Exception& e) {
+    result.errors.push_back({file.string(), e.mark.line + 1, e.mark.column + 1, "", "not valid YAML: " + e.msg});
+    return result;
+  }
+  if (!root.IsMap()) {
+    result.errors.push_back({file.string(), 0, 0, "", "a training file is a YAML map with name, policy, sensors, world, humans and training"});
+    return result;
+  }
+  Reader r(file.string(), registry);
+  TrainSpec s;
+  s.file = file;
+  const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  r.CheckKeys(root, "", kTopKeys);
+  if (!Present(root["name"])) {
+    r.Error(root, "name", "missing key 'name' (names the output folder results/train/<name>/)");
+  } else if (auto name = r.String(root["name"], "name")) {
+    const bool ok = !name->empty() && std::all_of(name->begin(), name->end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+    });
+    if (!ok) r.Error(root["name"], "name", "'" + *name + "' must use only letters, digits, '_', '-', '.'");
+    s.name = *name;
+  }
+  if (Present(root["description"])) s.description = root["description"].Scalar();
+  if (Present(root["seed"])) {
+    if (auto v = r.Integer(root["seed"], "seed", 0, std::numeric_limits<std::int64_t>::max())) s.seed = static_cast<std::uint64_t>(*v);
+  }
+  if (Present(root["sim"])) suite_internal::ReadSim(r, root["sim"], &s.sim);
+  if (!Present(root["policy"])) {
+    r.Error(root, "policy", "missing key 'policy' (the policy to train: cadrl or sarl)");
+  } else {
+    s.policy.plugin = root["policy"].Scalar();
+    s.policy.loaded = r.Plugin(root["policy"], "policy", PluginKind::kPolicy);
+  }
+  if (Present(root["params"]) && !r.IsMap(root["params"], "params", "policy parameters")) {
+    // reported
+  } else if (s.policy.loaded) {
+    s.policy.params = r.ParamsFor(*s.policy.loaded, root["params"], {}, "params", base);
+    if (Present(root["weights"])) {
+      if (!s.policy.params.Has("weights")) {
+        r.Error(root["weights"], "weights", "policy '" + s.policy.plugin + "' takes no weights");
+      } else if (auto w = r.String(root["weights"], "weights")) {
+        s.policy.params.Set("weights", *w);
+      }
+    }
+  }
+  if (!Present(root["sensors"])) {
+    r.Error(root, "sensors", "missing key 'sensors' (e.g. [person, {type: lidar2d, beams: 45}])");
+  } else {
+    suite_internal::ReadSensors(r, root["sensors"], "sensors", base, &s.sensors);
+  }
+  if (!Present(root["world"])) {
+    r.Error(root, "world", "missing key 'world' (e.g. {source: random_rect, obstacles: 1, split: train})");
+  } else {
+    ReadTrainWorld(r, root["world"], base, &s.world);
+  }
+  ReadHumans(r, root["humans"], base, &s);
+  ReadTraining(r, root["training"], base, &s);
+  if (!r.errors.empty()) {
+    result.errors = std::move(r.errors);
+    return result;
+  }
+  s.canonical = Canonical(s);
+  result.spec = std::move(s);
+  return result;
+}
+
+}  // namespace crowdsim::training

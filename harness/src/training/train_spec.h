@@ -1,0 +1,65 @@
+// A training file (suite-like YAML): the policy to train with its sensors, the world and
+// humans it trains among, and the imitation + RL settings (paper / CrowdNav defaults).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/sim_config.h"
+#include "crowdsim/suite.h"
+
+namespace crowdsim::training {
+
+/// The `training:` keys. Defaults: CrowdNav's train.config with the paper's epsilon.
+struct TrainingSettings {
+  int il_episodes = 3000;          ///< demonstrations of the teacher
+  int il_epochs = 50;              ///< passes over the memory after the demonstrations
+  double il_learning_rate = 0.01;
+  int rl_episodes = 10000;
+  double rl_learning_rate = 0.001;
+  double momentum = 0.9;           ///< SGD momentum (both phases)
+  double epsilon_start = 0.9;      ///< paper: linear 0.9 -> 0.5 over the first 5k episodes
+  double epsilon_end = 0.5;
+  int epsilon_decay_episodes = 5000;
+  int target_update_interval = 50;  ///< RL episodes between target network copies
+  int capacity = 100000;            ///< replay memory size
+  int batch_size = 100;
+  int train_batches = 100;          ///< SGD steps after each RL episode
+  int validation_interval = 1000;   ///< RL episodes between validations (0: none)
+  int validation_episodes = 100;
+  int checkpoint_interval = 500;    ///< episodes between checkpoints
+};
+
+/// A validated training file.
+struct TrainSpec {
+  std::string name;
+  std::string description;
+  std::filesystem::path file;
+  std::uint64_t seed = 0;
+  SimConfig sim;
+  PluginUse policy;               ///< the learner (cadrl, sarl)
+  std::vector<PluginUse> sensors;
+  PluginUse world;                ///< its train split
+  int humans_min = 5;             ///< humans per episode, drawn in [min, max]
+  int humans_max = 5;
+  PluginUse human_policy;
+  PluginUse teacher;              ///< imitation-learning robot (ORCA, safety_space 0.15)
+  TrainingSettings training;
+  /// Everything that decides the trained weights; its hash guards --resume.
+  std::string canonical;
+  std::string ConfigHash() const;
+};
+
+struct TrainSpecLoadResult {
+  std::optional<TrainSpec> spec;
+  std::vector<SuiteError> errors;  ///< every error found (empty when spec is set)
+};
+
+/// Reads and validates a training file; loads the plugins it names to check parameters.
+TrainSpecLoadResult LoadTrainSpec(const std::filesystem::path& file, PluginRegistry& registry);
+
+}  // namespace crowdsim::training

@@ -1,0 +1,467 @@
+#include "trainer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <memory>
+#include <numeric>
+#include <sstream>
+
+#include "crowdsim/episode.h"
+#include "crowdsim/results.h"
+#include "crowdsim/rng.h"
+#include "crowdsim/trainable.h"
+#include "replay_memory.h"
+#include "training_checkpoint.h"
+#include "training_progress.h"
+
+namespace crowdsim::training {
+namespace fs = std::filesystem;
+
+double Epsilon(const TrainingSettings& t, int episode) {
+  if (episode >= t.epsilon_decay_episodes) return t.epsilon_end;
+  return t.epsilon_start + (t.epsilon_end - t.epsilon_start) * episode / t.epsilon_decay_episodes;
+}
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void OnSignal(int sig) { g_signal = sig; }
+
+/// Catches SIGINT / SIGTERM while alive, so the trainer can checkpoint before leaving.
+class SignalGuard {
+ public:
+  SignalGuard() {
+    g_signal = 0;
+    old_int_ = std::signal(SIGINT, OnSignal);
+    old_term_ = std::signal(SIGTERM, OnSignal);
+  }
+  ~SignalGuard() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+
+ private:
+  void (*old_int_)(int);
+  void (*old_term_)(int);
+};
+
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+bool Stored(EpisodeStatus s) {
+  return s == EpisodeStatus::kSuccess || s == EpisodeStatus::kCollisionHuman ||
+         s == EpisodeStatus::kCollisionObstacle;
+}
+
+/// One recorded episode: the encoded state before each decision and the step rewards.
+struct Trajectory {
+  std::vector<EncodedState> states;
+  std::vector<float> rewards;
+  EpisodeResult result;
+};
+
+class Trainer {
+ public:
+  Trainer(const TrainSpec& spec, PluginRegistry& registry, const TrainOptions& options)
+      : spec_(spec),
+        registry_(registry),
+        options_(options),
+        t_(spec.training),
+        memory_(static_cast<std::size_t>(t_.capacity)),
+        progress_(spec.name, options.progress) {
+    summary_.out_dir = options.out_dir.empty() ? fs::path("results") / "train" / spec.name
+                                               : options.out_dir;
+    Build();
+  }
+
+  TrainSummary Run();
+
+ private:
+  void Build();
+  Scenario MakeScenario(const char* stream, int index) const;
+  Trajectory RunEpisode(Policy* robot, const Scenario& scenario, bool encode);
+  void Demonstrations();
+  void Imitation();
+  void Reinforcement();
+  ValidationResult Validate(int rl_episode);
+  double TrainOn(std::span<const std::size_t> indices);
+  void SaveCheckpoint();
+  void LoadCheckpoint();
+  void WriteSummaryJson() const;
+  /// True when the run must stop now (signal, or the test hook's episode budget).
+  bool ShouldStop() const {
+    return g_signal != 0 ||
+           (options_.stop_after_episodes >= 0 && summary_.episodes_run >= options_.stop_after_episodes);
+  }
+  fs::path Out(const char* name) const { return summary_.out_dir / name; }
+
+  const TrainSpec& spec_;
+  PluginRegistry& registry_;
+  const TrainOptions& options_;
+  const TrainingSettings& t_;
+
+  std::shared_ptr<Policy> learner_policy_;
+  Trainable* learner_ = nullptr;
+  std::shared_ptr<Policy> teacher_;
+  std::vector<std::shared_ptr<Sensor>> sensors_;
+  std::vector<std::shared_ptr<Policy>> humans_;
+  std::shared_ptr<WorldSource> world_;
+  EpisodeAgents agents_;
+
+  ReplayMemory memory_;
+  CheckpointState state_;
+  TrainingProgress progress_;
+  TrainSummary summary_;
+};
+
+
+void Trainer::Build() {
+  try {
+    world_ = registry_.MakeWorld(*spec_.world.loaded, spec_.world.params);
+    learner_policy_ = registry_.MakePolicy(*spec_.policy.loaded, spec_.policy.params);
+    teacher_ = registry_.MakePolicy(*spec_.teacher.loaded, spec_.teacher.params);
+    for (const auto& s : spec_.sensors) {
+      sensors_.push_back(registry_.MakeSensor(*s.loaded, s.params));
+      agents_.sensors.push_back({s.loaded->descriptor->name, sensors_.back().get()});
+    }
+    for (int i = 0; i < spec_.humans_max; ++i) {
+      humans_.push_back(registry_.MakePolicy(*spec_.human_policy.loaded, spec_.human_policy.params));
+      agents_.humans.push_back(humans_.back().get());
+    }
+  } catch (const PluginError& e) {
+    throw TrainError(e.what());
+  }
+  learner_ = dynamic_cast<Trainable*>(learner_policy_.get());
+  if (learner_ == nullptr) {
+    throw TrainError("policy '" + spec_.policy.plugin +
+                     "' cannot be trained: its object does not implement crowdsim::Trainable "
+                     "(train cadrl or sarl)");
+  }
+  for (const auto& needed : learner_policy_->Needs().sensors) {
+    const bool have = std::any_of(spec_.sensors.begin(), spec_.sensors.end(), [&](const PluginUse& s) {
+      return s.loaded->descriptor->name == needed;
+    });
+    if (!have) {
+      throw TrainError(spec_.file.string() + ": policy '" + spec_.policy.plugin + "' needs the sensor '" +
+                       needed + "'; add it to `sensors`");
+    }
+  }
+}
+
+Scenario Trainer::MakeScenario(const char* stream, int index) const {
+  ScenarioRequest req;
+  req.seed = DeriveSeed(spec_.seed, world_->Identity() + "/" + stream, static_cast<std::uint64_t>(index));
+  req.episode_index = index;
+  req.num_humans = spec_.humans_min;
+  if (spec_.humans_max > spec_.humans_min) {
+    Rng rng(SplitMix64(req.seed ^ 0x68756d616e73ULL));  // "humans"
+    req.num_humans += static_cast<int>(rng.Below(spec_.humans_max - spec_.humans_min + 1));
+  }
+  req.sim = spec_.sim;
+  return world_->Make(req);
+}
+
+Trajectory Trainer::RunEpisode(Policy* robot, const Scenario& scenario, bool encode) {
+  agents_.robot = robot;
+  Trajectory tr;
+  Episode episode(scenario, spec_.sim, agents_);
+  while (!episode.done()) {
+    const StepInfo info = episode.Step();
+    if (episode.result().status == EpisodeStatus::kPolicyError) break;
+    if (encode) {
+      tr.states.push_back(learner_->Encode(episode.last_robot_observation()));
+      tr.rewards.push_back(static_cast<float>(info.reward));
+    }
+  }
+  tr.result = episode.result();
+  if (tr.result.status == EpisodeStatus::kPolicyError) {
+    throw TrainError("episode of scenario seed " + std::to_string(scenario.seed) +
+                     ": the robot policy failed: " + tr.result.error);
+  }
+  return tr;
+}
+
+void Trainer::Demonstrations() {
+  progress_.Phase("IL demonstrations (" + spec_.teacher.plugin + ")", state_.counter, t_.il_episodes);
+  const double discount = std::pow(spec_.sim.gamma, spec_.sim.time_step * spec_.sim.robot_v_pref);
+  while (state_.counter < t_.il_episodes && !ShouldStop()) {
+    const auto t0 = Clock::now();
+    Trajectory tr = RunEpisode(teacher_.get(), MakeScenario("il", state_.counter), true);
+    if (Stored(tr.result.status)) {
+      // Monte-Carlo returns v_i = sum_t gamma'^(t - i) r_t, from the end backwards.
+      std::vector<float> values(tr.rewards.size());
+      double v = 0.0;
+      for (std::size_t i = tr.rewards.size(); i-- > 0;) {
+        v = tr.rewards[i] + discount * v;
+        values[i] = static_cast<float>(v);
+      }
+      for (std::size_t i = 0; i < values.size(); ++i) memory_.Push(std::move(tr.states[i]), values[i]);
+    }
+    ++state_.counter;
+    ++summary_.episodes_run;
+    summary_.times.demonstrations += Since(t0);
+    progress_.Episode(tr.result.status, 0.0, 0.0);
+    if (state_.counter % t_.checkpoint_interval == 0 && state_.counter < t_.il_episodes) SaveCheckpoint();
+  }
+  if (state_.counter >= t_.il_episodes) {
+    state_.phase = TrainPhase::kImitation;
+    state_.counter = 0;
+    learner_->SetLearningRate(t_.il_learning_rate, t_.momentum);
+  }
+}
+
+double Trainer::TrainOn(std::span<const std::size_t> indices) {
+  std::vector<const EncodedState*> states;
+  std::vector<float> targets;
+  states.reserve(indices.size());
+  targets.reserve(indices.size());
+  for (std::size_t i : indices) {
+    states.push_back(&memory_.state(i));
+    targets.push_back(memory_.value(i));
+  }
+  return learner_->TrainBatch(states, targets);
+}
+
+void Trainer::Imitation() {
+  if (memory_.size() > 0 && state_.counter < t_.il_epochs) {
+    progress_.Note("IL: " + std::to_string(t_.il_epochs - state_.counter) + " epochs over " +
+                   std::to_string(memory_.size()) + " states");
+  }
+  std::vector<std::size_t> order(memory_.size());
+  while (memory_.size() > 0 && state_.counter < t_.il_epochs && g_signal == 0) {
+    const auto t0 = Clock::now();
+    // A fresh shuffle per epoch (CrowdNav's DataLoader), seeded by the epoch for --resume.
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    Rng rng(DeriveSeed(spec_.seed, "il_epoch", static_cast<std::uint64_t>(state_.counter)));
+    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.Below(i)]);
+    double loss = 0.0;
+    int batches = 0;
+    for (std::size_t start = 0; start < order.size(); start += t_.batch_size) {
+      const std::size_t n = std::min<std::size_t>(t_.batch_size, order.size() - start);
+      loss += TrainOn(std::span<const std::size_t>(order.data() + start, n));
+      ++batches;
+    }
+    ++state_.counter;
+    summary_.times.imitation += Since(t0);
+    std::ostringstream os;
+    os << "IL epoch " << state_.counter << "/" << t_.il_epochs << "  loss " << loss / batches;
+    progress_.Note(os.str());
+  }
+  if (state_.counter >= t_.il_epochs || memory_.size() == 0) {
+    learner_->UpdateTargetNetwork();
+    learner_->SaveWeights(Out("il.pt"));
+    state_.phase = TrainPhase::kReinforcement;
+    state_.counter = 0;
+    learner_->SetLearningRate(t_.rl_learning_rate, t_.momentum);
+  }
+}
+
+ValidationResult Trainer::Validate(int rl_episode) {
+  const auto t0 = Clock::now();
+  learner_->SetExploration(0.0, 0);
+  ValidationResult v;
+  v.episode = rl_episode;
+  double nav = 0.0;
+  int success = 0, collision = 0, timeout = 0;
+  for (int k = 0; k < t_.validation_episodes; ++k) {
+    const Trajectory tr = RunEpisode(learner_policy_.get(), MakeScenario("val", k), false);
+    switch (tr.result.status) {
+      case EpisodeStatus::kSuccess: ++success; nav += tr.result.time; break;
+      case EpisodeStatus::kCollisionHuman:
+      case EpisodeStatus::kCollisionObstacle: ++collision; break;
+      default: ++timeout; break;
+    }
+  }
+  const double n = std::max(1, t_.validation_episodes);
+  v.success = success / n;
+  v.collision = collision / n;
+  v.timeout = timeout / n;
+  v.nav_time = success > 0 ? nav / success : spec_.sim.time_limit;
+  summary_.times.validation += Since(t0);
+  std::ostringstream os;
+  os << "validation after " << rl_episode << " RL episodes: success " << v.success << ", collision "
+     << v.collision << ", timeout " << v.timeout << ", nav time " << v.nav_time;
+  if (v.success > state_.best_success) {
+    state_.best_success = v.success;
+    state_.best_episode = rl_episode;
+    learner_->SaveWeights(Out("best.pt"));
+    os << " (best so far)";
+  }
+  progress_.Note(os.str());
+  state_.validations.push_back(v);
+  WriteFileAtomically(Out("training_log.csv"), ValidationCsv(state_.validations));
+  return v;
+}
+
+void Trainer::Reinforcement() {
+  progress_.Phase("RL", state_.counter, t_.rl_episodes);
+  const double discount = std::pow(spec_.sim.gamma, spec_.sim.time_step * spec_.sim.robot_v_pref);
+  std::vector<std::size_t> perm;
+  while (state_.counter < t_.rl_episodes && !ShouldStop()) {
+    const int e = state_.counter;
+    if (t_.validation_interval > 0 && e % t_.validation_interval == 0 &&
+        (state_.validations.empty() || state_.validations.back().episode != e)) {
+      Validate(e);
+    }
+    const double epsilon = Epsilon(t_, e);
+    auto t0 = Clock::now();
+    learner_->SetExploration(epsilon, DeriveSeed(spec_.seed, "explore", static_cast<std::uint64_t>(e)));
+    Trajectory tr = RunEpisode(learner_policy_.get(), MakeScenario("rl", e), true);
+    summary_.times.rl_episodes += Since(t0);
+    if (Stored(tr.result.status)) {
+      t0 = Clock::now();
+      // TD(0): v_i = r_i + gamma' V_target(s_{i+1}); the last step keeps its reward.
+      std::vector<const EncodedState*> next;
+      for (std::size_t i = 1; i < tr.states.size(); ++i) next.push_back(&tr.states[i]);
+      const std::vector<float> v_next = next.empty() ? std::vector<float>{} : learner_->TargetValues(next);
+      for (std::size_t i = 0; i < tr.states.size(); ++i) {
+        const double v = tr.rewards[i] + (i + 1 < tr.states.size() ? discount * v_next[i] : 0.0);
+        memory_.Push(std::move(tr.states[i]), static_cast<float>(v));
+      }
+      summary_.times.rl_targets += Since(t0);
+    }
+    t0 = Clock::now();
+    double loss = 0.0;
+    if (memory_.size() > 0 && t_.train_batches > 0) {
+      // Each batch: distinct random memory entries (CrowdNav: a fresh shuffled loader).
+      Rng rng(DeriveSeed(spec_.seed, "batches", static_cast<std::uint64_t>(e)));
+      perm.resize(memory_.size());
+      std::iota(perm.begin(), perm.end(), std::size_t{0});
+      const std::size_t b = std::min<std::size_t>(t_.batch_size, memory_.size());
+      for (int k = 0; k < t_.train_batches; ++k) {
+        for (std::size_t j = 0; j < b; ++j) std::swap(perm[j], perm[j + rng.Below(perm.size() - j)]);
+        loss += TrainOn(std::span<const std::size_t>(perm.data(), b));
+      }
+      loss /= t_.train_batches;
+    }
+    summary_.times.rl_updates += Since(t0);
+    ++state_.counter;
+    ++summary_.episodes_run;
+    if (state_.counter % t_.target_update_interval == 0) learner_->UpdateTargetNetwork();
+    progress_.Episode(tr.result.status, epsilon, loss);
+    if (state_.counter % t_.checkpoint_interval == 0 && state_.counter < t_.rl_episodes) SaveCheckpoint();
+  }
+  if (state_.counter >= t_.rl_episodes) {
+    if (t_.validation_interval > 0 &&
+        (state_.validations.empty() || state_.validations.back().episode != state_.counter)) {
+      Validate(state_.counter);
+    }
+    learner_->SaveWeights(Out("weights.pt"));
+    state_.phase = TrainPhase::kDone;
+  }
+}
+
+void Trainer::SaveCheckpoint() {
+  const auto t0 = Clock::now();
+  const fs::path dir = Out("checkpoint");
+  const fs::path tmp = Out("checkpoint.tmp");
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  learner_->SaveWeights(tmp / "model.pt");
+  learner_->SaveTrainingState(tmp);
+  memory_.Save(tmp / "memory.bin");
+  WriteCheckpointState(tmp / "state.txt", state_);
+  // The complete new checkpoint replaces the old one; LoadCheckpoint also accepts a
+  // checkpoint.tmp left complete by a crash between these two lines.
+  fs::remove_all(dir);
+  fs::rename(tmp, dir);
+  summary_.times.checkpoints += Since(t0);
+}
+
+void Trainer::LoadCheckpoint() {
+  fs::path dir = Out("checkpoint");
+  if (!fs::exists(dir / "state.txt") && fs::exists(Out("checkpoint.tmp") / "state.txt")) {
+    dir = Out("checkpoint.tmp");
+  }
+  if (!fs::exists(dir / "state.txt")) {
+    throw TrainError("--resume: no checkpoint in '" + summary_.out_dir.string() +
+                     "' (start without --resume, or give the --out of the interrupted training)");
+  }
+  state_ = ReadCheckpointState(dir / "state.txt");
+  if (state_.config_hash != spec_.ConfigHash()) {
+    throw TrainError("--resume: the checkpoint in '" + dir.string() + "' belongs to another "
+                     "configuration (config hash " + state_.config_hash + ", the training file now " +
+                     spec_.ConfigHash() + "); restore the file or train into another --out");
+  }
+  try {
+    learner_->LoadWeights(dir / "model.pt");
+    learner_->LoadTrainingState(dir);
+    memory_.Load(dir / "memory.bin");
+  } catch (const std::exception& e) {
+    throw TrainError("--resume: " + std::string(e.what()));
+  }
+}
+
+void Trainer::WriteSummaryJson() const {
+  const TrainTimes& t = summary_.times;
+  std::ostringstream os;
+  os.precision(6);
+  os << "{\n  \"name\": \"" << spec_.name << "\",\n  \"config_hash\": \"" << spec_.ConfigHash()
+     << "\",\n  \"finished\": " << (summary_.finished ? "true" : "false")
+     << ",\n  \"phase\": " << static_cast<int>(state_.phase) << ",\n  \"counter\": " << state_.counter
+     << ",\n  \"memory_size\": " << memory_.size()
+     << ",\n  \"episodes_this_run\": " << summary_.episodes_run
+     << ",\n  \"wall_seconds_this_run\": " << summary_.wall_seconds
+     << ",\n  \"seconds\": {\"demonstrations\": " << t.demonstrations << ", \"imitation\": " << t.imitation
+     << ", \"rl_episodes\": " << t.rl_episodes << ", \"rl_targets\": " << t.rl_targets
+     << ", \"rl_updates\": " << t.rl_updates << ", \"validation\": " << t.validation
+     << ", \"checkpoints\": " << t.checkpoints << "},\n  \"best_validation_success\": "
+     << std::max(0.0, state_.best_success) << ",\n  \"best_validation_episode\": " << state_.best_episode
+     << "\n}\n";
+  WriteFileAtomically(Out("summary.json"), os.str());
+}
+
+TrainSummary Trainer::Run() {
+  const auto start = Clock::now();
+  SignalGuard signals;
+  std::error_code ec;
+  fs::create_directories(summary_.out_dir, ec);
+  if (ec || !fs::is_directory(summary_.out_dir)) {
+    throw TrainError("cannot create the output folder '" + summary_.out_dir.string() + "': " + ec.message());
+  }
+  if (options_.resume) {
+    LoadCheckpoint();
+    progress_.Note("resumed from " + (summary_.out_dir / "checkpoint").string());
+  } else {
+    if (fs::exists(Out("checkpoint")) || fs::exists(Out("weights.pt"))) {
+      throw TrainError("'" + summary_.out_dir.string() + "' already holds a training; pass --resume to "
+                       "continue it, or --out to train into another folder");
+    }
+    state_.config_hash = spec_.ConfigHash();
+    learner_->InitWeights(spec_.seed);
+  }
+  WriteFileAtomically(Out("training.yaml"), "# copy of " + spec_.file.string() + "\n" + spec_.canonical);
+  progress_.Note(learner_->Describe());
+  if (state_.phase == TrainPhase::kDemonstrations) Demonstrations();
+  if (state_.phase == TrainPhase::kImitation && !ShouldStop()) Imitation();
+  if (state_.phase == TrainPhase::kReinforcement && !ShouldStop()) Reinforcement();
+  progress_.Finish();
+  summary_.finished = state_.phase == TrainPhase::kDone;
+  if (!summary_.finished) SaveCheckpoint();
+  summary_.validations = state_.validations;
+  summary_.weights = Out("weights.pt");
+  if (state_.best_episode >= 0) summary_.best_weights = Out("best.pt");
+  summary_.wall_seconds = Since(start);
+  WriteSummaryJson();
+  if (g_signal != 0) {
+    throw TrainingInterrupted("interrupted by signal " + std::to_string(g_signal) +
+                              "; checkpoint written to " + Out("checkpoint").string() +
+                              "; rerun with --resume to continue");
+  }
+  return summary_;
+}
+
+}  // namespace
+
+TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry, const TrainOptions& options) {
+  Trainer trainer(spec, registry, options);
+  return trainer.Run();
+}
+
+}  // namespace crowdsim::training

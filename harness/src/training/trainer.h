@@ -1,0 +1,73 @@
+// The generic trainer behind `crowdsim-bench train`: imitation learning from a teacher robot
+// policy, then epsilon-greedy RL with TD(0) targets from a target network and a replay
+// memory (CrowdNav's procedure, the paper's settings). It drives any policy whose object is
+// also a Trainable; it never sees the network or its library.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "crowdsim/plugin_registry.h"
+#include "train_spec.h"
+
+namespace crowdsim::training {
+
+/// Stops the whole training (bad configuration, failing policy, unreadable checkpoint).
+class TrainError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Thrown after SIGINT / SIGTERM once the checkpoint is written.
+class TrainingInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct TrainOptions {
+  std::filesystem::path out_dir;  ///< default: results/train/<name>/
+  bool resume = false;            ///< continue from out_dir/checkpoint
+  bool progress = true;           ///< progress line on stderr
+  /// Tests: write a checkpoint and return after this many episodes (demonstrations + RL) of
+  /// this call, as an interruption would; -1 = run to the end.
+  int stop_after_episodes = -1;
+};
+
+/// One validation pass (greedy, fixed scenarios).
+struct ValidationResult {
+  int episode = 0;  ///< RL episodes done when it ran
+  double success = 0, collision = 0, timeout = 0;
+  double nav_time = 0;  ///< s, mean over successes (time_limit if none)
+};
+
+/// Wall time by activity (profiling).
+struct TrainTimes {
+  double demonstrations = 0;  ///< teacher episodes
+  double imitation = 0;       ///< IL epochs
+  double rl_episodes = 0;     ///< learner episodes (lookahead and value evaluation)
+  double rl_targets = 0;      ///< TD targets from the target network
+  double rl_updates = 0;      ///< SGD steps
+  double validation = 0;
+  double checkpoints = 0;
+};
+
+struct TrainSummary {
+  std::filesystem::path out_dir;
+  std::filesystem::path weights;       ///< last weights (weights.pt)
+  std::filesystem::path best_weights;  ///< best validation (best.pt), empty without validation
+  bool finished = false;               ///< false when stopped by stop_after_episodes
+  int episodes_run = 0;                ///< this call, demonstrations + RL
+  std::vector<ValidationResult> validations;
+  TrainTimes times;
+  double wall_seconds = 0;
+};
+
+/// Runs (or resumes) a training. Throws TrainError, or TrainingInterrupted on a signal.
+TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry, const TrainOptions& options);
+
+/// Epsilon of RL episode `episode`: linear from start to end over `decay` episodes, then end.
+double Epsilon(const TrainingSettings& t, int episode);
+
+}  // namespace crowdsim::training

@@ -1,0 +1,31 @@
+// The trainer's own part of a checkpoint (phase, counters, validation history) as a small
+// text file; the weights, optimiser and memory are saved next to it by their owners.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "trainer.h"
+
+namespace crowdsim::training {
+
+enum class TrainPhase { kDemonstrations, kImitation, kReinforcement, kDone };
+
+struct CheckpointState {
+  std::string config_hash;
+  TrainPhase phase = TrainPhase::kDemonstrations;
+  int counter = 0;  ///< episodes (demonstrations, RL) or epochs (imitation) done in `phase`
+  double best_success = -1.0;  ///< best validation success so far (-1: none)
+  int best_episode = -1;
+  std::vector<ValidationResult> validations;
+};
+
+void WriteCheckpointState(const std::filesystem::path& file, const CheckpointState& state);
+/// Throws TrainError on a damaged file.
+CheckpointState ReadCheckpointState(const std::filesystem::path& file);
+
+/// The validation history as CSV (training_log.csv).
+std::string ValidationCsv(const std::vector<ValidationResult>& validations);
+
+}  // namespace crowdsim::training

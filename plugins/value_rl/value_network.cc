@@ -1,0 +1,157 @@
+#include "value_network.h"
+
+#include <torch/nn/modules/activation.h>
+#include <torch/nn/modules/linear.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "state_encoding.h"
+
+namespace crowdsim::value_rl {
+
+torch::nn::Sequential Mlp(int64_t in, std::initializer_list<int64_t> dims, bool last_relu) {
+  torch::nn::Sequential seq;
+  int64_t width = in;
+  size_t i = 0;
+  for (int64_t d : dims) {
+    seq->push_back(torch::nn::Linear(width, d));
+    if (++i < dims.size() || last_relu) seq->push_back(torch::nn::ReLU());
+    width = d;
+  }
+  return seq;
+}
+
+StateBatch MakeBatch(const ValueRlConfig& config, std::span<const EncodedState* const> states) {
+  const int64_t b = static_cast<int64_t>(states.size());
+  const int lidar = config.LidarInputs();
+  int64_t rows = 0;
+  for (const auto* s : states) rows = std::max<int64_t>(rows, HumanRows(config, *s));
+  std::vector<float> self(b * kSelfDim), lid(b * lidar), humans(b * rows * kHumanDim, 0.0f);
+  std::vector<uint8_t> mask(b * rows, 0);
+  for (int64_t i = 0; i < b; ++i) {
+    const float* v = states[i]->values.data();
+    std::copy(v, v + kSelfDim, self.data() + i * kSelfDim);
+    std::copy(v + kSelfDim, v + kSelfDim + lidar, lid.data() + i * lidar);
+    const int n = HumanRows(config, *states[i]);
+    std::copy(v + kSelfDim + lidar, v + kSelfDim + lidar + n * kHumanDim,
+              humans.data() + i * rows * kHumanDim);
+    std::fill(mask.begin() + i * rows, mask.begin() + i * rows + n, 1);
+  }
+  StateBatch batch;
+  batch.self = torch::from_blob(self.data(), {b, kSelfDim}).clone();
+  if (lidar > 0) batch.lidar = torch::from_blob(lid.data(), {b, lidar}).clone();
+  if (UsesPerson(config.sensors)) {
+    batch.humans = torch::from_blob(humans.data(), {b, rows, kHumanDim}).clone();
+    batch.mask = torch::from_blob(mask.data(), {b, rows}, torch::kUInt8).to(torch::kBool);
+  }
+  return batch;
+}
+
+namespace {
+
+/// Self state joined with the lidar feature (when there is a lidar): (B, 6 [+ F]).
+class SelfEncoder {
+ public:
+  SelfEncoder(torch::nn::Module* owner, const ValueRlConfig& c) {
+    if (UsesLidar(c.sensors)) {
+      lidar_ = owner->register_module(
+          "lidar", Mlp(c.lidar_beams, {c.lidar_hidden, c.lidar_features}, /*last_relu=*/true));
+      dim_ += c.lidar_features;
+    }
+  }
+  int64_t dim() const { return dim_; }
+  torch::Tensor operator()(const StateBatch& b) {
+    if (lidar_.is_empty()) return b.self;
+    return torch::cat({b.self, lidar_->forward(b.lidar)}, 1);
+  }
+
+ private:
+  torch::nn::Sequential lidar_{nullptr};
+  int64_t dim_ = kSelfDim;
+};
+
+/// CADRL: one value per (robot, human) pair, the minimum over humans.
+class Cadrl final : public ValueNetwork {
+ public:
+  explicit Cadrl(const ValueRlConfig& c) : self_(this, c), humans_(UsesPerson(c.sensors)) {
+    mlp_ = register_module(
+        "mlp", Mlp(self_.dim() + (humans_ ? kHumanDim : 0), {150, 100, 100, 1}, false));
+  }
+
+  torch::Tensor Forward(const StateBatch& b) override {
+    torch::Tensor s = self_(b);
+    if (!humans_) return mlp_->forward(s).squeeze(1);
+    const int64_t n = b.humans.size(1);
+    torch::Tensor rows = torch::cat({s.unsqueeze(1).expand({-1, n, -1}), b.humans}, 2);
+    torch::Tensor v = mlp_->forward(rows).squeeze(2);
+    v = v.masked_fill(b.mask.logical_not(), std::numeric_limits<float>::infinity());
+    return std::get<0>(v.min(1));
+  }
+
+ private:
+  SelfEncoder self_;
+  bool humans_;
+  torch::nn::Sequential mlp_{nullptr};
+};
+
+/// SARL: per-human embeddings, attention with the mean embedding, crowd feature + self state.
+class Sarl final : public ValueNetwork {
+ public:
+  explicit Sarl(const ValueRlConfig& c) : self_(this, c), humans_(UsesPerson(c.sensors)) {
+    if (humans_) {
+      mlp1_ = register_module("mlp1", Mlp(kSelfDim + kHumanDim, {150, 100}, true));
+      mlp2_ = register_module("mlp2", Mlp(100, {100, 50}, false));
+      attention_ = register_module("attention", Mlp(200, {100, 100, 1}, false));
+    }
+    mlp3_ = register_module("mlp3", Mlp(self_.dim() + (humans_ ? 50 : 0), {150, 100, 100, 1}, false));
+  }
+
+  torch::Tensor Forward(const StateBatch& b) override {
+    torch::Tensor joint = self_(b);
+    if (humans_) {
+      const int64_t n = b.humans.size(1);
+      // The humans' rows carry the plain self state, as CrowdNav's 13-value rows do.
+      torch::Tensor rows = torch::cat({b.self.unsqueeze(1).expand({-1, n, -1}), b.humans}, 2);
+      torch::Tensor e = mlp1_->forward(rows);  // (B, N, 100)
+      torch::Tensor h = mlp2_->forward(e);     // (B, N, 50)
+      torch::Tensor m = b.mask.to(torch::kFloat).unsqueeze(2);
+      torch::Tensor global = (e * m).sum(1) / m.sum(1).clamp_min(1.0);
+      torch::Tensor scores =
+          attention_->forward(torch::cat({e, global.unsqueeze(1).expand({-1, n, -1})}, 2))
+              .squeeze(2);
+      // CrowdNav's "masked softmax": exp(s) * [s != 0], no max shift; padded rows masked too.
+      torch::Tensor w = torch::exp(scores) * scores.ne(0).to(torch::kFloat) * m.squeeze(2);
+      w = w / w.sum(1, /*keepdim=*/true);
+      torch::Tensor crowd = (w.unsqueeze(2) * h).sum(1);
+      joint = torch::cat({joint, crowd}, 1);
+    }
+    return mlp3_->forward(joint).squeeze(1);
+  }
+
+ private:
+  SelfEncoder self_;
+  bool humans_;
+  torch::nn::Sequential mlp1_{nullptr}, mlp2_{nullptr}, attention_{nullptr}, mlp3_{nullptr};
+};
+
+}  // namespace
+
+std::shared_ptr<ValueNetwork> MakeValueNetwork(const ValueRlConfig& config) {
+  if (config.model == Model::kCadrl) return std::make_shared<Cadrl>(config);
+  return std::make_shared<Sarl>(config);
+}
+
+void CopyParameters(const ValueNetwork& from, ValueNetwork* to) {
+  torch::NoGradGuard no_grad;
+  const auto src = from.named_parameters();
+  for (auto& p : to->named_parameters()) p.value().copy_(src[p.key()]);
+}
+
+int64_t ParameterCount(const ValueNetwork& net) {
+  int64_t n = 0;
+  for (const auto& p : net.parameters()) n += p.numel();
+  return n;
+}
+
+}  // namespace crowdsim::value_rl

@@ -1,0 +1,47 @@
+// The value networks of CrowdNav (reference 1.7) with this project's lidar encoder. Private
+// to value_rl: the only header of the plugins that includes libtorch.
+#pragma once
+
+#include <torch/nn/module.h>
+#include <torch/nn/modules/container/sequential.h>
+
+#include <memory>
+#include <span>
+
+#include "crowdsim/trainable.h"
+#include "value_rl_config.h"
+
+namespace crowdsim::value_rl {
+
+/// A batch of encoded states as tensors. Person models have at least one human row per
+/// state; states with fewer rows than the widest are padded and masked out.
+struct StateBatch {
+  torch::Tensor self;    ///< (B, 6)
+  torch::Tensor lidar;   ///< (B, L) ranges / max_range; undefined without lidar
+  torch::Tensor humans;  ///< (B, N, 7); undefined without the person sensor
+  torch::Tensor mask;    ///< (B, N) bool, true for real rows
+};
+
+/// Packs encoded states (one tensor copy per field).
+StateBatch MakeBatch(const ValueRlConfig& config, std::span<const EncodedState* const> states);
+
+/// Linear layers of the given widths with a ReLU after each but the last (CrowdNav's mlp()).
+torch::nn::Sequential Mlp(int64_t in, std::initializer_list<int64_t> dims, bool last_relu);
+
+/// State value network: V(batch) -> (B).
+class ValueNetwork : public torch::nn::Module {
+ public:
+  /// The network's value of each state of the batch.
+  virtual torch::Tensor Forward(const StateBatch& batch) = 0;
+};
+
+/// The network of `config` (CADRL or SARL, with or without lidar / humans), default init.
+std::shared_ptr<ValueNetwork> MakeValueNetwork(const ValueRlConfig& config);
+
+/// Copies every parameter of `from` into `to` (same configuration).
+void CopyParameters(const ValueNetwork& from, ValueNetwork* to);
+
+/// Number of trainable scalars.
+int64_t ParameterCount(const ValueNetwork& net);
+
+}  // namespace crowdsim::value_rl

@@ -1,0 +1,234 @@
+#include "value_policy.h"
+
+#include <ATen/Parallel.h>
+#include <c10/core/InferenceMode.h>
+#include <torch/nn/modules/linear.h>
+#include <torch/optim/sgd.h>
+#include <torch/serialize.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "action_space.h"
+#include "crowdsim/lookahead.h"
+#include "crowdsim/rng.h"
+#include "state_encoding.h"
+#include "value_network.h"
+#include "weights_file.h"
+
+namespace crowdsim::value_rl {
+namespace fs = std::filesystem;
+
+struct ValuePolicy::Impl {
+  explicit Impl(const ValueRlConfig& c) : config(c), rng(0) {}
+
+  ValueRlConfig config;
+  std::shared_ptr<ValueNetwork> model;
+  std::shared_ptr<ValueNetwork> target;
+  std::unique_ptr<torch::optim::SGD> optimizer;
+  double learning_rate = 0.0;
+  double momentum = 0.0;
+
+  double gamma = 0.9;
+  double epsilon = 0.0;
+  Rng rng;
+  double actions_v_pref = -1.0;
+  std::vector<Action> actions;
+  std::vector<LookaheadOutcome> outcomes;
+  std::vector<EncodedState> candidates;
+  std::vector<const EncodedState*> candidate_ptrs;
+  std::vector<float> action_values;
+
+  void NewNetworks() {
+    model = MakeValueNetwork(config);
+    target = MakeValueNetwork(config);
+    if (optimizer) MakeOptimizer();
+  }
+
+  void MakeOptimizer() {
+    optimizer = std::make_unique<torch::optim::SGD>(
+        model->parameters(), torch::optim::SGDOptions(learning_rate).momentum(momentum));
+  }
+
+  std::vector<float> Evaluate(ValueNetwork& net, std::span<const EncodedState* const> states) {
+    c10::InferenceMode guard;
+    net.eval();
+    torch::Tensor v = net.Forward(MakeBatch(config, states)).contiguous();
+    const float* p = v.data_ptr<float>();
+    return std::vector<float>(p, p + v.numel());
+  }
+};
+
+ValuePolicy::ValuePolicy(Model model, const Params& params)
+    : ValuePolicy(ConfigFromParams(model, params)) {}
+
+ValuePolicy::ValuePolicy(const ValueRlConfig& config) : impl_(std::make_unique<Impl>(config)) {
+  at::set_num_threads(config.torch_threads);
+  impl_->NewNetworks();
+  if (config.weights.empty()) {
+    InitWeights(config.init_seed);
+  } else {
+    LoadWeights(config.weights);
+  }
+}
+
+ValuePolicy::~ValuePolicy() = default;
+
+const ValueRlConfig& ValuePolicy::config() const { return impl_->config; }
+
+PolicyNeeds ValuePolicy::Needs() const {
+  PolicyNeeds needs;
+  needs.lookahead = true;
+  needs.sensors = SensorPlugins(impl_->config.sensors);
+  return needs;
+}
+
+void ValuePolicy::Reset(const EpisodeContext& ctx) { impl_->gamma = ctx.sim.gamma; }
+
+Action ValuePolicy::Decide(const Observation& obs) {
+  Impl& m = *impl_;
+  if (obs.lookahead == nullptr) {
+    throw std::runtime_error(std::string(ModelName(m.config.model)) +
+                             ": no lookahead in the observation (robot policies only)");
+  }
+  if (m.actions_v_pref != obs.self.v_pref) {
+    m.actions = BuildActionSpace(m.config.speed_samples, m.config.rotation_samples,
+                                 m.config.stop_action, obs.self.v_pref);
+    m.actions_v_pref = obs.self.v_pref;
+  }
+  if (m.epsilon > 0.0 && m.rng.Uniform() < m.epsilon) {
+    m.action_values.clear();
+    return m.actions[m.rng.Below(m.actions.size())];
+  }
+  obs.lookahead->Evaluate(m.actions, &m.outcomes);
+  m.candidates.resize(m.outcomes.size());
+  m.candidate_ptrs.resize(m.outcomes.size());
+  for (size_t k = 0; k < m.outcomes.size(); ++k) {
+    const LookaheadOutcome& o = m.outcomes[k];
+    m.candidates[k] = EncodeState(m.config, o.robot, o.frame, o.readings);
+    m.candidate_ptrs[k] = &m.candidates[k];
+  }
+  const std::vector<float> next = m.Evaluate(*m.model, m.candidate_ptrs);
+  const double discount = std::pow(m.gamma, obs.time_step * obs.self.v_pref);
+  m.action_values.resize(next.size());
+  size_t best = 0;
+  for (size_t k = 0; k < next.size(); ++k) {
+    m.action_values[k] = static_cast<float>(m.outcomes[k].reward + discount * next[k]);
+    if (m.action_values[k] > m.action_values[best]) best = k;  // ties: the earliest
+  }
+  return m.actions[best];
+}
+
+std::string ValuePolicy::Describe() const {
+  const ValueRlConfig& c = impl_->config;
+  return std::string(ModelName(c.model)) + " sensors=" + SensorSetName(c.sensors) +
+         " actions=" + std::to_string(c.ActionCount()) +
+         " lidar_beams=" + std::to_string(c.LidarInputs()) +
+         " parameters=" + std::to_string(ParameterCount());
+}
+
+void ValuePolicy::InitWeights(std::uint64_t seed) {
+  // PyTorch's default Linear init, U(+-1/sqrt(fan_in)) for weights and biases, drawn from the
+  // project's portable generator: same weights on every machine and thread, no global state.
+  Rng rng(seed);
+  torch::NoGradGuard no_grad;
+  for (const auto& module : impl_->model->modules(/*include_self=*/false)) {
+    auto* linear = module->as<torch::nn::Linear>();
+    if (linear == nullptr) continue;
+    const double bound = 1.0 / std::sqrt(static_cast<double>(linear->weight.size(1)));
+    for (torch::Tensor* t : {&linear->weight, &linear->bias}) {
+      float* p = t->data_ptr<float>();
+      for (int64_t i = 0; i < t->numel(); ++i) p[i] = static_cast<float>(rng.Uniform(-bound, bound));
+    }
+  }
+  UpdateTargetNetwork();
+}
+
+EncodedState ValuePolicy::Encode(const Observation& obs) const {
+  return EncodeState(impl_->config, obs.self, obs.frame, obs.readings);
+}
+
+void ValuePolicy::SetExploration(double epsilon, std::uint64_t seed) {
+  impl_->epsilon = epsilon;
+  impl_->rng = Rng(seed);
+}
+
+void ValuePolicy::SetLearningRate(double learning_rate, double momentum) {
+  impl_->learning_rate = learning_rate;
+  impl_->momentum = momentum;
+  impl_->MakeOptimizer();
+}
+
+double ValuePolicy::TrainBatch(std::span<const EncodedState* const> states,
+                               std::span<const float> targets) {
+  Impl& m = *impl_;
+  if (!m.optimizer) throw std::logic_error("TrainBatch before SetLearningRate");
+  m.model->train();
+  const StateBatch batch = MakeBatch(m.config, states);
+  const torch::Tensor target =
+      torch::from_blob(const_cast<float*>(targets.data()), {static_cast<int64_t>(targets.size())})
+          .clone();
+  m.optimizer->zero_grad();
+  torch::Tensor loss = torch::mse_loss(m.model->Forward(batch), target);
+  loss.backward();
+  m.optimizer->step();
+  return loss.item<double>();
+}
+
+std::vector<float> ValuePolicy::TargetValues(std::span<const EncodedState* const> states) {
+  return impl_->Evaluate(*impl_->target, states);
+}
+
+std::vector<float> ValuePolicy::Values(std::span<const EncodedState* const> states) {
+  return impl_->Evaluate(*impl_->model, states);
+}
+
+void ValuePolicy::UpdateTargetNetwork() { CopyParameters(*impl_->model, impl_->target.get()); }
+
+void ValuePolicy::SaveWeights(const fs::path& file) const {
+  SaveWeightsFile(*impl_->model, MetaOf(impl_->config), file);
+}
+
+void ValuePolicy::LoadWeights(const fs::path& file) {
+  LoadWeightsFile(MetaOf(impl_->config), file, impl_->model.get());
+  UpdateTargetNetwork();
+}
+
+void ValuePolicy::SaveTrainingState(const fs::path& dir) const {
+  const Impl& m = *impl_;
+  SaveWeightsFile(*m.target, MetaOf(m.config), dir / "target.pt");
+  torch::serialize::OutputArchive archive;
+  archive.write("learning_rate", c10::IValue(m.learning_rate));
+  archive.write("momentum", c10::IValue(m.momentum));
+  archive.write("has_optimizer", c10::IValue(m.optimizer != nullptr));
+  if (m.optimizer) m.optimizer->save(archive);
+  archive.save_to((dir / "optimizer.pt").string());
+}
+
+void ValuePolicy::LoadTrainingState(const fs::path& dir) {
+  Impl& m = *impl_;
+  LoadWeightsFile(MetaOf(m.config), dir / "target.pt", m.target.get());
+  torch::serialize::InputArchive archive;
+  archive.load_from((dir / "optimizer.pt").string());
+  c10::IValue lr, momentum, has;
+  archive.read("learning_rate", lr);
+  archive.read("momentum", momentum);
+  archive.read("has_optimizer", has);
+  m.learning_rate = lr.toDouble();
+  m.momentum = momentum.toDouble();
+  m.optimizer.reset();
+  if (has.toBool()) {
+    m.MakeOptimizer();
+    m.optimizer->load(archive);
+  }
+}
+
+const std::vector<float>& ValuePolicy::last_action_values() const { return impl_->action_values; }
+
+std::int64_t ValuePolicy::ParameterCount() const { return value_rl::ParameterCount(*impl_->model); }
+
+std::unique_ptr<Policy> MakeValuePolicy(Model model, const Params& params) {
+  return std::make_unique<ValuePolicy>(model, params);
+}
+
+}  // namespace crowdsim::value_rl

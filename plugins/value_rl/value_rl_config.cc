@@ -1,0 +1,72 @@
+#include "value_rl_config.h"
+
+#include <stdexcept>
+
+namespace crowdsim::value_rl {
+
+const char* ModelName(Model m) { return m == Model::kCadrl ? "cadrl" : "sarl"; }
+
+const char* SensorSetName(SensorSet s) {
+  switch (s) {
+    case SensorSet::kPerson: return "person";
+    case SensorSet::kLidar: return "lidar";
+    case SensorSet::kLidarPerson: return "lidar+person";
+  }
+  return "unknown";
+}
+
+std::vector<std::string> SensorPlugins(SensorSet s) {
+  std::vector<std::string> names;
+  if (UsesLidar(s)) names.push_back("lidar2d");
+  if (UsesPerson(s)) names.push_back("person");
+  return names;
+}
+
+ParamSchema Schema(Model /*model: both families take the same parameters*/) {
+  return {
+      {"sensors", ParamType::kString, std::string("person"), 0, 0,
+       {"person", "lidar", "lidar+person"},
+       "readings that enter the network (the row must configure the matching sensors)"},
+      {"weights", ParamType::kString, std::string(""), 0, 0, {},
+       "trained weights (.pt from `crowdsim-bench train`); empty = untrained network"},
+      {"lidar_beams", ParamType::kInt, std::int64_t{45}, 1, 3600, {},
+       "beams of the lidar2d reading (must match the sensor's `beams`)"},
+      {"speed_samples", ParamType::kInt, std::int64_t{2}, 1, 64, {},
+       "speeds per direction, (e^((i+1)/S) - 1)/(e - 1) * v_pref"},
+      {"rotation_samples", ParamType::kInt, std::int64_t{8}, 1, 360, {},
+       "directions k * 360/R degrees in the world frame"},
+      {"stop_action", ParamType::kBool, false, 0, 1, {},
+       "prepend CrowdNav's stop action (16 + 1 actions by default)"},
+      {"init_seed", ParamType::kInt, std::int64_t{0}, 0, 1e15, {},
+       "seed of the untrained weights (no `weights`)"},
+      {"torch_threads", ParamType::kInt, std::int64_t{1}, 1, 256, {},
+       "libtorch intra-op threads (1: deterministic, best for many small batches)"},
+  };
+}
+
+ValueRlConfig ConfigFromParams(Model model, const Params& params) {
+  ValueRlConfig c;
+  c.model = model;
+  const std::string& s = params.GetString("sensors");
+  if (s == "person") {
+    c.sensors = SensorSet::kPerson;
+  } else if (s == "lidar") {
+    c.sensors = SensorSet::kLidar;
+  } else if (s == "lidar+person") {
+    c.sensors = SensorSet::kLidarPerson;
+  } else {
+    throw std::invalid_argument(std::string(ModelName(model)) + ": sensors '" + s +
+                                "' is not valid; valid: person, lidar, lidar+person");
+  }
+  c.lidar_beams = static_cast<int>(params.GetInt("lidar_beams"));
+  c.speed_samples = static_cast<int>(params.GetInt("speed_samples"));
+  c.rotation_samples = static_cast<int>(params.GetInt("rotation_samples"));
+  c.stop_action = params.GetBool("stop_action");
+  c.init_seed = static_cast<std::uint64_t>(params.GetInt("init_seed"));
+  c.torch_threads = static_cast<int>(params.GetInt("torch_threads"));
+  const std::string& w = params.GetString("weights");
+  if (!w.empty()) c.weights = params.ResolvePath(w).string();
+  return c;
+}
+
+}  // namespace crowdsim::value_rl

@@ -1,0 +1,82 @@
+#include "weights_file.h"
+
+#include <torch/serialize/input-archive.h>
+#include <torch/serialize/output-archive.h>
+
+#include <stdexcept>
+
+namespace crowdsim::value_rl {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int64_t kFormatVersion = 1;
+
+std::string Found(torch::serialize::InputArchive& archive, const std::string& key) {
+  c10::IValue v;
+  if (!archive.try_read(key, v)) return "(missing)";
+  if (v.isString()) return v.toStringRef();
+  if (v.isInt()) return std::to_string(v.toInt());
+  return "(unreadable)";
+}
+
+}  // namespace
+
+WeightsMeta MetaOf(const ValueRlConfig& config) {
+  return WeightsMeta{ModelName(config.model), SensorSetName(config.sensors), config.ActionCount(),
+                     config.LidarInputs()};
+}
+
+void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs::path& file) {
+  torch::serialize::OutputArchive archive;
+  archive.write("crowdsim_format", c10::IValue(kFormatVersion));
+  archive.write("crowdsim_model", c10::IValue(meta.model));
+  archive.write("crowdsim_sensors", c10::IValue(meta.sensors));
+  archive.write("crowdsim_actions", c10::IValue(meta.actions));
+  archive.write("crowdsim_lidar_beams", c10::IValue(meta.lidar_beams));
+  net.save(archive);
+  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  const fs::path tmp = file.string() + ".tmp";
+  archive.save_to(tmp.string());
+  fs::rename(tmp, file);
+}
+
+void LoadWeightsFile(const WeightsMeta& expected, const fs::path& file, ValueNetwork* net) {
+  if (!fs::exists(file)) {
+    throw std::runtime_error("weights file '" + file.string() +
+                             "' does not exist (train one with `crowdsim-bench train`)");
+  }
+  torch::serialize::InputArchive archive;
+  try {
+    archive.load_from(file.string());
+  } catch (const c10::Error& e) {
+    throw std::runtime_error("weights file '" + file.string() +
+                             "' is not a libtorch archive written by crowdsim-bench train");
+  }
+  const std::pair<std::string, std::string> checks[] = {
+      {"model", expected.model},
+      {"sensors", expected.sensors},
+      {"actions", std::to_string(expected.actions)},
+      {"lidar_beams", std::to_string(expected.lidar_beams)},
+  };
+  std::string mismatch;
+  for (const auto& [key, want] : checks) {
+    const std::string got = Found(archive, "crowdsim_" + key);
+    if (got != want) {
+      mismatch += (mismatch.empty() ? "" : "; ") + key + ": expected " + want + ", found " + got;
+    }
+  }
+  if (!mismatch.empty()) {
+    throw std::runtime_error("weights file '" + file.string() +
+                             "' was trained for another configuration (" + mismatch +
+                             "); use weights trained with these parameters or change them");
+  }
+  try {
+    net->load(archive);
+  } catch (const c10::Error& e) {
+    throw std::runtime_error("weights file '" + file.string() +
+                             "' does not fit the network: " + e.what_without_backtrace());
+  }
+}
+
+}  // namespace crowdsim::value_rl

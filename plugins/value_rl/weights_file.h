@@ -1,0 +1,34 @@
+// Weights files (.pt, libtorch archives) that carry what they were trained for, so a
+// mismatch is an error naming the file and the values instead of a shape crash.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "value_network.h"
+#include "value_rl_config.h"
+
+namespace crowdsim::value_rl {
+
+/// What a weights file was trained for.
+struct WeightsMeta {
+  std::string model;    ///< cadrl | sarl
+  std::string sensors;  ///< person | lidar | lidar+person
+  int64_t actions = 0;
+  int64_t lidar_beams = 0;  ///< 0 without lidar
+};
+
+/// The metadata a policy with `config` expects.
+WeightsMeta MetaOf(const ValueRlConfig& config);
+
+/// Writes the network and `meta` (atomically: a temporary file, then a rename).
+void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta,
+                     const std::filesystem::path& file);
+
+/// Loads into `net`; throws std::runtime_error naming the file, the expected and the found
+/// values when the metadata differ, or what else is wrong with the file.
+void LoadWeightsFile(const WeightsMeta& expected, const std::filesystem::path& file,
+                     ValueNetwork* net);
+
+}  // namespace crowdsim::value_rl

@@ -1,0 +1,27 @@
+# The learned policies (plugins/value_rl, cadrl, sarl) and the trainer (harness/src/training).
+if(CROWDSIM_WITH_TORCH)
+  if(CROWDSIM_BUILD_TESTS OR CROWDSIM_BUILD_BENCHMARKS)
+    # Training helpers shared by the tests and the benchmarks.
+    add_library(crowdsim_learning_test_util STATIC
+      ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/learning_test_util.cc)
+    target_include_directories(crowdsim_learning_test_util PUBLIC
+      ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning "${CMAKE_SOURCE_DIR}/harness/src")
+    target_link_libraries(crowdsim_learning_test_util PUBLIC crowdsim_core crowdsim_test_support
+      crowdsim_value_rl)
+    target_compile_options(crowdsim_learning_test_util PRIVATE ${CROWDSIM_WARNINGS})
+  endif()
+
+  if(CROWDSIM_BUILD_TESTS)
+    foreach(test value_rl_state_test value_rl_weights_test training_spec_test training_test)
+      crowdsim_add_gtest(${test} unit
+        SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/${test}.cc
+        LIBS crowdsim_learning_test_util)
+    endforeach()
+  endif()
+
+  if(CROWDSIM_BUILD_BENCHMARKS)
+    crowdsim_add_benchmark(learning_bench
+      SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bench/learning/learning_bench.cc
+      LIBS crowdsim_learning_test_util crowdsim_value_rl)
+  endif()
+endif()

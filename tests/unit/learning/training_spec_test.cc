@@ -1,0 +1,95 @@
+// Training files are validated like suites: file:line:col errors, unknown keys rejected,
+// paper defaults filled in.
+#include <gtest/gtest.h>
+
+#include "crowdsim/plugin_registry.h"
+#include "learning_test_util.h"
+#include "test_paths.h"
+#include "training/train_spec.h"
+
+namespace crowdsim::testing {
+namespace {
+
+training::TrainSpecLoadResult Load(const std::filesystem::path& file) {
+  PluginRegistry registry;
+  return training::LoadTrainSpec(file, registry);
+}
+
+TEST(TrainSpecTest, DefaultsAreThePapers) {
+  TempDir dir;
+  TrainFile f;
+  f.humans = "{count: 5}";
+  const auto r = Load(WriteTrainFile(dir, f));
+  ASSERT_TRUE(r.spec) << r.errors[0].Format();
+  const training::TrainingSettings& t = r.spec->training;
+  EXPECT_EQ(t.il_episodes, 3000);
+  EXPECT_EQ(t.il_epochs, 50);
+  EXPECT_DOUBLE_EQ(t.il_learning_rate, 0.01);
+  EXPECT_EQ(t.rl_episodes, 10000);
+  EXPECT_DOUBLE_EQ(t.rl_learning_rate, 0.001);
+  EXPECT_DOUBLE_EQ(t.epsilon_start, 0.9);
+  EXPECT_DOUBLE_EQ(t.epsilon_end, 0.5);
+  EXPECT_EQ(t.epsilon_decay_episodes, 5000);
+  EXPECT_EQ(t.target_update_interval, 50);
+  EXPECT_EQ(t.capacity, 100000);
+  EXPECT_EQ(t.batch_size, 100);
+  EXPECT_EQ(t.train_batches, 100);
+  EXPECT_DOUBLE_EQ(t.momentum, 0.9);
+  EXPECT_EQ(t.validation_interval, 1000);
+  EXPECT_EQ(t.checkpoint_interval, 500);
+  EXPECT_DOUBLE_EQ(r.spec->sim.gamma, 0.9);
+  EXPECT_EQ(r.spec->teacher.plugin, "orca");
+  EXPECT_DOUBLE_EQ(r.spec->teacher.params.GetDouble("safety_space"), 0.15);
+  EXPECT_EQ(r.spec->world.params.GetString("split"), "train");
+  EXPECT_EQ(r.spec->humans_min, 5);
+  EXPECT_EQ(r.spec->humans_max, 5);
+  EXPECT_DOUBLE_EQ(training::Epsilon(t, 0), 0.9);
+  EXPECT_DOUBLE_EQ(training::Epsilon(t, 2500), 0.7);
+  EXPECT_DOUBLE_EQ(training::Epsilon(t, 5000), 0.5);
+  EXPECT_DOUBLE_EQ(training::Epsilon(t, 9999), 0.5);
+}
+
+TEST(TrainSpecTest, ErrorsAreLocated) {
+  TempDir dir;
+  TrainFile f;
+  f.world = "{source: random_rect, obstacles: 1, split: test}";
+  f.humans = "{count: [4, 2]}";
+  f.training = "{il_episodes: 10, epsilon: 0.3, rl_learning_rate: -1}";
+  const auto r = Load(WriteTrainFile(dir, f));
+  ASSERT_FALSE(r.spec);
+  std::string all;
+  for (const auto& e : r.errors) all += e.Format() + "\n";
+  EXPECT_NE(all.find("train.yaml:6:"), std::string::npos) << all;  // world line
+  EXPECT_NE(all.find("world.split: training uses the world's train split"), std::string::npos) << all;
+  EXPECT_NE(all.find("humans.count: min is larger than max"), std::string::npos) << all;
+  EXPECT_NE(all.find("training.epsilon: unknown key 'epsilon'"), std::string::npos) << all;
+  EXPECT_NE(all.find("training.rl_learning_rate: value -1 is out of range"), std::string::npos) << all;
+  EXPECT_EQ(r.errors.size(), 4u) << all;
+}
+
+TEST(TrainSpecTest, UnknownTopKeyAndPolicyParameter) {
+  TempDir dir;
+  const auto file = dir.Write("bad.yaml",
+      "name: bad\npolicy: sarl\nparams: {sensors: lidar, beams: 3}\nsensors: [person]\n"
+      "world: {source: crowdnav}\nepisodes: 10\n");
+  const auto r = Load(file);
+  ASSERT_FALSE(r.spec);
+  std::string all;
+  for (const auto& e : r.errors) all += e.Format() + "\n";
+  EXPECT_NE(all.find("bad.yaml:3:26: params.beams: unknown parameter 'beams'"), std::string::npos) << all;
+  EXPECT_NE(all.find("bad.yaml:6:1: episodes: unknown key 'episodes'"), std::string::npos) << all;
+}
+
+TEST(TrainSpecTest, ShippedTrainingFilesAreValid) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SourceDir() / "suites" / "train")) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++files;
+    const auto r = Load(entry.path());
+    EXPECT_TRUE(r.spec) << (r.errors.empty() ? "" : r.errors[0].Format());
+  }
+  EXPECT_GE(files, 17);  // every line of Table 1
+}
+
+}  // namespace
+}  // namespace crowdsim::testing

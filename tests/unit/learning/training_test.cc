@@ -1,0 +1,162 @@
+// Trainings end to end: a short training beats the untrained network, a tiny one is
+// deterministic and resumes exactly, and every model / sensor combination trains.
+#include <gtest/gtest.h>
+
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/runner.h"
+#include "crowdsim/suite.h"
+#include "learning_test_util.h"
+
+namespace crowdsim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A few demonstrations and RL episodes with small batches: seconds, not minutes.
+const char* kTiny =
+    "{il_episodes: 10, il_epochs: 2, rl_episodes: 12, epsilon_decay_episodes: 6, "
+    "target_update_interval: 4, batch_size: 20, train_batches: 3, validation_interval: 6, "
+    "validation_episodes: 3, checkpoint_interval: 5}";
+
+/// Greedy success rates of the trained and the untrained network on the same 100 test episodes.
+std::pair<double, double> Evaluate(const TempDir& dir, const fs::path& weights) {
+  const fs::path suite_file = dir.Write("eval.yaml",
+      "name: eval\nepisodes: 100\nseed: 99\n"
+      "world: {source: random_rect, obstacles: 0, split: test}\n"
+      "humans: {count: 1, policy: orca}\n"
+      "robot: {sensors: [person]}\n"
+      "rows:\n"
+      "  - {label: trained, policy: cadrl, params: {sensors: person}, weights: " + weights.string() + "}\n"
+      "  - {label: untrained, policy: cadrl, params: {sensors: person}}\n");
+  PluginRegistry registry;
+  SuiteLoadResult loaded = LoadSuite(suite_file, registry);
+  EXPECT_TRUE(loaded.suite) << (loaded.errors.empty() ? "" : loaded.errors[0].Format());
+  RunOptions options;
+  options.out_dir = dir.path() / "eval";
+  options.jobs = 2;
+  options.progress = false;
+  const RunSummary s = RunSuite(*loaded.suite, registry, options);
+  EXPECT_EQ(s.rows.size(), 2u);
+  return {s.rows[0].metrics.success_rate, s.rows[1].metrics.success_rate};
+}
+
+TEST(TrainingTest, ShortTrainingBeatsTheUntrainedNetwork) {
+  TempDir dir;
+  TrainFile f;
+  f.training =
+      "{il_episodes: 200, il_epochs: 20, rl_episodes: 300, epsilon_decay_episodes: 150, "
+      "validation_interval: 0, checkpoint_interval: 1000, train_batches: 50}";
+  const auto summary = Train(WriteTrainFile(dir, f), dir.path() / "out");
+  ASSERT_TRUE(summary.finished);
+  ASSERT_TRUE(fs::exists(summary.weights));
+  EXPECT_TRUE(fs::exists(dir.path() / "out" / "il.pt"));
+  const auto [trained, untrained] = Evaluate(dir, summary.weights);
+  std::printf("greedy success on 100 test episodes: trained %.2f, untrained %.2f\n", trained,
+              untrained);
+  EXPECT_GE(trained, untrained + 0.3);
+  EXPECT_GE(trained, 0.7);
+}
+
+TEST(TrainingTest, SameSeedSameWeights) {
+  TempDir dir;
+  TrainFile f;
+  f.training = kTiny;
+  const auto file = WriteTrainFile(dir, f);
+  const auto a = Train(file, dir.path() / "a");
+  const auto b = Train(file, dir.path() / "b");
+  EXPECT_EQ(ValuesOfWeights(f, a.weights), ValuesOfWeights(f, b.weights));
+  ASSERT_EQ(a.validations.size(), 3u);  // at 0, 6 and the end
+  for (size_t i = 0; i < a.validations.size(); ++i) {
+    EXPECT_EQ(a.validations[i].success, b.validations[i].success);
+  }
+  f.seed = 6;
+  const auto c = Train(WriteTrainFile(dir, f, "other_seed.yaml"), dir.path() / "c");
+  EXPECT_NE(ValuesOfWeights(f, a.weights), ValuesOfWeights(f, c.weights));
+}
+
+TEST(TrainingTest, ResumeContinuesExactly) {
+  TempDir dir;
+  TrainFile f;
+  f.sensors_param = "lidar+person";
+  f.sensors = "[person, {type: lidar2d, beams: 15}]";
+  f.policy = "sarl";
+  f.training = kTiny;
+  const auto file = WriteTrainFile(dir, f);
+  const auto whole = Train(file, dir.path() / "whole");
+  // Stop in the demonstrations, then in RL, then finish.
+  const auto part1 = Train(file, dir.path() / "parts", false, 7);
+  EXPECT_FALSE(part1.finished);
+  EXPECT_TRUE(fs::exists(dir.path() / "parts" / "checkpoint" / "state.txt"));
+  const auto part2 = Train(file, dir.path() / "parts", true, 9);
+  EXPECT_FALSE(part2.finished);
+  const auto part3 = Train(file, dir.path() / "parts", true);
+  ASSERT_TRUE(part3.finished);
+  EXPECT_EQ(ValuesOfWeights(f, whole.weights), ValuesOfWeights(f, part3.weights));
+  // Restarting over a finished training without --resume is refused.
+  EXPECT_THROW(Train(file, dir.path() / "parts"), training::TrainError);
+}
+
+TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
+  TempDir dir;
+  TrainFile f;
+  f.training = kTiny;
+  Train(WriteTrainFile(dir, f), dir.path() / "out", false, 4);
+  f.humans = "{count: 2}";
+  try {
+    Train(WriteTrainFile(dir, f, "changed.yaml"), dir.path() / "out", true);
+    ADD_FAILURE() << "resumed a checkpoint of another configuration";
+  } catch (const training::TrainError& e) {
+    EXPECT_NE(std::string(e.what()).find("another configuration"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(Train(WriteTrainFile(dir, f, "fresh.yaml"), dir.path() / "none", true),
+               training::TrainError);
+}
+
+struct Combination {
+  const char* policy;
+  const char* sensors_param;
+  const char* sensors;
+};
+
+TEST(TrainingTest, EveryModelAndSensorSetTrains) {
+  const Combination all[] = {
+      {"cadrl", "person", "[person]"},
+      {"cadrl", "lidar", "[{type: lidar2d, beams: 15}]"},
+      {"cadrl", "lidar+person", "[person, {type: lidar2d, beams: 15}]"},
+      {"sarl", "person", "[person]"},
+      {"sarl", "lidar", "[{type: lidar2d, beams: 15}]"},
+      {"sarl", "lidar+person", "[person, {type: lidar2d, beams: 15}]"},
+  };
+  for (const auto& c : all) {
+    SCOPED_TRACE(std::string(c.policy) + " " + c.sensors_param);
+    TempDir dir;
+    TrainFile f;
+    f.policy = c.policy;
+    f.sensors_param = c.sensors_param;
+    f.sensors = c.sensors;
+    f.world = "{source: random_rect, obstacles: 1}";
+    f.humans = "{count: [0, 3]}";  // includes nobody: the stand-in human row
+    f.training =
+        "{il_episodes: 4, il_epochs: 1, rl_episodes: 4, batch_size: 16, train_batches: 2, "
+        "validation_interval: 0}";
+    const auto s = Train(WriteTrainFile(dir, f), dir.path() / "out");
+    EXPECT_TRUE(s.finished);
+    EXPECT_EQ(ValuesOfWeights(f, s.weights).size(), 8u);
+  }
+}
+
+TEST(TrainingTest, PolicyWithoutItsSensorIsRefused) {
+  TempDir dir;
+  TrainFile f;
+  f.sensors_param = "lidar+person";
+  f.training = kTiny;
+  try {
+    Train(WriteTrainFile(dir, f), dir.path() / "out");
+    ADD_FAILURE() << "trained without the lidar";
+  } catch (const training::TrainError& e) {
+    EXPECT_NE(std::string(e.what()).find("lidar2d"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace crowdsim::testing

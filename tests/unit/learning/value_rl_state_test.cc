@@ -1,0 +1,213 @@
+// The state transform, the action space and the networks against hand-worked numbers from
+// CrowdNav (reference 1.6-1.9).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "action_space.h"
+#include "crowdsim/lookahead.h"
+#include "state_encoding.h"
+#include "value_policy.h"
+
+namespace crowdsim::value_rl {
+namespace {
+
+ValueRlConfig Config(Model model, SensorSet sensors) {
+  ValueRlConfig c;
+  c.model = model;
+  c.sensors = sensors;
+  return c;
+}
+
+// Robot at (1, 2) heading for (4, 6): rot = atan2(4, 3), cos 0.6, sin 0.8, dg 5.
+AgentState Robot() {
+  AgentState r;
+  r.position = Vec2(1, 2);
+  r.goal = Vec2(4, 6);
+  r.velocity = Vec2(0.5, -0.5);
+  r.radius = 0.3;
+  r.v_pref = 1.0;
+  r.heading = HeadingToGoal(r);
+  return r;
+}
+
+// What the person sensor reports for a human at (2, 5) moving at (1, 0), radius 0.25.
+PersonObservation Person(const Frame& f) {
+  return PersonObservation{f.PointToLocal(Vec2(2, 5)), f.VectorToLocal(Vec2(1, 0)), 0.25};
+}
+
+TEST(StateEncodingTest, MatchesRotateByHand) {
+  const AgentState robot = Robot();
+  const Frame frame = Frame::Make(robot.position, robot.heading);
+  SensorReading people;
+  people.sensor = "person";
+  people.people.push_back(Person(frame));
+  const std::vector<SensorReading> readings = {people};
+  const EncodedState s = EncodeState(Config(Model::kCadrl, SensorSet::kPerson), robot, frame, readings);
+  // dg, v_pref, theta, radius, vx, vy | px1, py1, vx1, vy1, radius1, da, radius_sum
+  const std::vector<double> expected = {5.0, 1.0, 0.0, 0.3, -0.1, -0.7,
+                                        3.0, 1.0, 0.6, -0.8, 0.25, std::sqrt(10.0), 0.55};
+  ASSERT_EQ(s.values.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(s.values[i], expected[i], 1e-6) << i;
+}
+
+TEST(StateEncodingTest, LidarIsScaledByMaxRangeBeforeTheHumans) {
+  const AgentState robot = Robot();
+  const Frame frame = Frame::Make(robot.position, robot.heading);
+  ValueRlConfig c = Config(Model::kSarl, SensorSet::kLidarPerson);
+  c.lidar_beams = 3;
+  SensorReading lidar;
+  lidar.sensor = "lidar2d";
+  lidar.ranges = {1.0, 5.0, 2.5};
+  lidar.max_range = 5.0;
+  SensorReading people;
+  people.sensor = "person";
+  people.people.push_back(Person(frame));
+  const std::vector<SensorReading> readings = {lidar, people};
+  const EncodedState s = EncodeState(c, robot, frame, readings);
+  ASSERT_EQ(s.values.size(), 6u + 3u + 7u);
+  EXPECT_FLOAT_EQ(s.values[6], 0.2f);
+  EXPECT_FLOAT_EQ(s.values[7], 1.0f);
+  EXPECT_FLOAT_EQ(s.values[8], 0.5f);
+  EXPECT_NEAR(s.values[9], 3.0, 1e-6);
+  EXPECT_EQ(HumanRows(c, s), 1);
+
+  lidar.ranges = {1.0, 2.0};  // the sensor has 2 beams, the policy expects 3
+  const std::vector<SensorReading> wrong = {lidar, people};
+  EXPECT_THROW(EncodeState(c, robot, frame, wrong), std::runtime_error);
+}
+
+TEST(StateEncodingTest, NobodySeenGivesTheFarStandIn) {
+  const AgentState robot = Robot();
+  const Frame frame = Frame::Make(robot.position, robot.heading);
+  SensorReading people;
+  people.sensor = "person";
+  const std::vector<SensorReading> readings = {people};
+  const EncodedState s = EncodeState(Config(Model::kCadrl, SensorSet::kPerson), robot, frame, readings);
+  ASSERT_EQ(s.values.size(), 13u);
+  EXPECT_FLOAT_EQ(s.values[6], -static_cast<float>(kAbsentHumanDistance));
+  EXPECT_FLOAT_EQ(s.values[11], static_cast<float>(kAbsentHumanDistance));
+  const std::vector<SensorReading> none;
+  EXPECT_THROW(EncodeState(Config(Model::kCadrl, SensorSet::kPerson), robot, frame, none),
+               std::runtime_error);
+}
+
+TEST(ActionSpaceTest, ExponentialSpeedsAsCrowdNav) {
+  const auto two = ExponentialSpeeds(2, 1.0);
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_NEAR(two[0], 0.377541, 1e-6);
+  EXPECT_NEAR(two[1], 1.0, 1e-12);
+  const auto five = ExponentialSpeeds(5, 2.0);
+  const double expected[] = {0.128851, 0.286231, 0.478454, 0.713236, 1.0};
+  for (int i = 0; i < 5; ++i) EXPECT_NEAR(five[i], 2.0 * expected[i], 2e-6);
+}
+
+TEST(ActionSpaceTest, SixteenActionsRotationOuterSpeedInner) {
+  const auto a = BuildActionSpace(2, 8, false, 1.0);
+  ASSERT_EQ(a.size(), 16u);
+  EXPECT_NEAR(a[0].velocity.x(), 0.377541, 1e-6);
+  EXPECT_NEAR(a[0].velocity.y(), 0.0, 1e-12);
+  EXPECT_NEAR(a[1].velocity.x(), 1.0, 1e-12);
+  const double h = std::sqrt(0.5);
+  EXPECT_NEAR(a[2].velocity.x(), 0.377541 * h, 1e-6);
+  EXPECT_NEAR(a[2].velocity.y(), 0.377541 * h, 1e-6);
+  EXPECT_NEAR(a[5].velocity.x(), 0.0, 1e-12);  // 90 degrees, fast
+  EXPECT_NEAR(a[5].velocity.y(), 1.0, 1e-12);
+  EXPECT_NEAR(a[15].velocity.x(), h, 1e-12);  // 315 degrees, fast
+  EXPECT_NEAR(a[15].velocity.y(), -h, 1e-12);
+  const auto with_stop = BuildActionSpace(2, 8, true, 1.0);
+  ASSERT_EQ(with_stop.size(), 17u);
+  EXPECT_EQ(with_stop[0].velocity, Vec2::Zero());
+  EXPECT_EQ(with_stop[1].velocity, a[0].velocity);
+}
+
+TEST(ValueNetworkTest, ParameterCountsAsCrowdNav) {
+  EXPECT_EQ(ValuePolicy(Config(Model::kCadrl, SensorSet::kPerson)).ParameterCount(), 27401);
+  EXPECT_EQ(ValuePolicy(Config(Model::kSarl, SensorSet::kPerson)).ParameterCount(), 96502);
+  // The lidar encoder (45 -> 64 -> 32) and its 32 extra inputs of the first layer.
+  const int64_t encoder = 45 * 64 + 64 + 64 * 32 + 32;
+  EXPECT_EQ(ValuePolicy(Config(Model::kCadrl, SensorSet::kLidarPerson)).ParameterCount(),
+            27401 + encoder + 32 * 150);
+  EXPECT_EQ(ValuePolicy(Config(Model::kSarl, SensorSet::kLidar)).ParameterCount(),
+            encoder + (38 * 150 + 150) + (150 * 100 + 100) + (100 * 100 + 100) + 101);
+}
+
+/// Encodes one state with `n` humans spread around the robot.
+EncodedState StateWith(int n, float shift) {
+  EncodedState s;
+  s.values = {4.0f, 1.0f, 0.0f, 0.3f, 0.5f + shift, -0.2f};
+  for (int i = 0; i < n; ++i) {
+    const float x = 1.0f + i + shift, y = -1.0f + 0.5f * i;
+    s.values.insert(s.values.end(), {x, y, 0.3f, -0.1f, 0.3f, std::sqrt(x * x + y * y), 0.6f});
+  }
+  return s;
+}
+
+TEST(ValueNetworkTest, PaddedBatchEqualsOneByOne) {
+  for (Model model : {Model::kCadrl, Model::kSarl}) {
+    ValuePolicy policy(Config(model, SensorSet::kPerson));
+    const std::vector<EncodedState> states = {StateWith(1, 0.0f), StateWith(5, 0.1f), StateWith(3, 0.2f)};
+    std::vector<const EncodedState*> all;
+    for (const auto& s : states) all.push_back(&s);
+    const std::vector<float> batch = policy.Values(all);
+    for (size_t i = 0; i < states.size(); ++i) {
+      const EncodedState* one[] = {&states[i]};
+      EXPECT_NEAR(policy.Values(one)[0], batch[i], 1e-5) << ModelName(model) << " state " << i;
+    }
+  }
+}
+
+/// A lookahead whose outcomes all look alike except for their rewards.
+class FixedLookahead final : public Lookahead {
+ public:
+  explicit FixedLookahead(std::vector<double> rewards) : rewards_(std::move(rewards)) {}
+  std::span<const AgentState> NextHumans() const override { return {}; }
+  void Evaluate(std::span<const Action> actions, std::vector<LookaheadOutcome>* out) const override {
+    out->assign(actions.size(), LookaheadOutcome{});
+    for (size_t k = 0; k < actions.size(); ++k) {
+      LookaheadOutcome& o = (*out)[k];
+      o.robot = Robot();
+      o.frame = Frame::Make(o.robot.position, o.robot.heading);
+      SensorReading people;
+      people.sensor = "person";
+      o.readings = {people};
+      o.reward = k < rewards_.size() ? rewards_[k] : 0.0;
+    }
+  }
+
+ private:
+  std::vector<double> rewards_;
+};
+
+TEST(ValuePolicyTest, PicksTheBestRewardAndTiesGoToTheEarliest) {
+  ValuePolicy policy(Config(Model::kSarl, SensorSet::kPerson));
+  EpisodeContext ctx;
+  policy.Reset(ctx);
+  Observation obs;
+  obs.self = Robot();
+  const auto actions = BuildActionSpace(2, 8, false, 1.0);
+
+  FixedLookahead best_is_7(std::vector<double>{0, 0, 0, 0, 0, 0, 0, 0.5});
+  obs.lookahead = &best_is_7;
+  EXPECT_EQ(policy.Decide(obs).velocity, actions[7].velocity);
+  ASSERT_EQ(policy.last_action_values().size(), 16u);
+  EXPECT_NEAR(policy.last_action_values()[7] - policy.last_action_values()[0], 0.5, 1e-6);
+
+  FixedLookahead all_equal({});
+  obs.lookahead = &all_equal;
+  EXPECT_EQ(policy.Decide(obs).velocity, actions[0].velocity);
+
+  obs.lookahead = nullptr;
+  EXPECT_THROW(policy.Decide(obs), std::runtime_error);
+}
+
+TEST(ValuePolicyTest, NeedsLookaheadAndItsSensors) {
+  const PolicyNeeds needs = ValuePolicy(Config(Model::kCadrl, SensorSet::kLidarPerson)).Needs();
+  EXPECT_TRUE(needs.lookahead);
+  EXPECT_EQ(needs.sensors, (std::vector<std::string>{"lidar2d", "person"}));
+  EXPECT_EQ(ValuePolicy(Config(Model::kCadrl, SensorSet::kLidar)).Needs().sensors,
+            std::vector<std::string>{"lidar2d"});
+}
+
+}  // namespace
+}  // namespace crowdsim::value_rl

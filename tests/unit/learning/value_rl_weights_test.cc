@@ -1,0 +1,103 @@
+// Weights files: an identical round trip, and a clear error for weights of another model,
+// sensor set or action count.
+#include <gtest/gtest.h>
+
+#include "state_encoding.h"
+#include "temp_dir.h"
+#include "value_policy.h"
+
+namespace crowdsim::value_rl {
+namespace {
+
+ValueRlConfig Config(Model model, SensorSet sensors, std::uint64_t seed = 0) {
+  ValueRlConfig c;
+  c.model = model;
+  c.sensors = sensors;
+  c.lidar_beams = 9;
+  c.init_seed = seed;
+  return c;
+}
+
+std::vector<EncodedState> SomeStates(const ValueRlConfig& c) {
+  std::vector<EncodedState> states;
+  for (int k = 0; k < 4; ++k) {
+    EncodedState s;
+    s.values = {3.0f + k, 1.0f, 0.0f, 0.3f, 0.2f * k, -0.1f};
+    for (int b = 0; b < c.LidarInputs(); ++b) s.values.push_back(0.1f * ((b + k) % 10));
+    if (UsesPerson(c.sensors)) {
+      for (int h = 0; h <= k; ++h) {
+        s.values.insert(s.values.end(), {1.0f + h, 0.5f * k, -0.3f, 0.2f, 0.3f, 1.5f + h, 0.6f});
+      }
+    }
+    states.push_back(std::move(s));
+  }
+  return states;
+}
+
+std::vector<float> ValuesOf(ValuePolicy& p, const std::vector<EncodedState>& states) {
+  std::vector<const EncodedState*> ptrs;
+  for (const auto& s : states) ptrs.push_back(&s);
+  return p.Values(ptrs);
+}
+
+TEST(WeightsFileTest, RoundTripIsIdentical) {
+  testing::TempDir dir;
+  for (Model model : {Model::kCadrl, Model::kSarl}) {
+    for (SensorSet sensors : {SensorSet::kPerson, SensorSet::kLidar, SensorSet::kLidarPerson}) {
+      const ValueRlConfig c = Config(model, sensors, 7);
+      ValuePolicy saved(c);
+      const auto file = dir.path() / (std::string(ModelName(model)) + "_" + SensorSetName(sensors) + ".pt");
+      saved.SaveWeights(file);
+      ValuePolicy other(Config(model, sensors, 8));
+      const auto states = SomeStates(c);
+      EXPECT_NE(ValuesOf(saved, states), ValuesOf(other, states));
+      other.LoadWeights(file);
+      EXPECT_EQ(ValuesOf(saved, states), ValuesOf(other, states)) << file;
+    }
+  }
+}
+
+TEST(WeightsFileTest, InitIsDeterministic) {
+  const ValueRlConfig c = Config(Model::kSarl, SensorSet::kLidarPerson, 42);
+  ValuePolicy a(c), b(c);
+  EXPECT_EQ(ValuesOf(a, SomeStates(c)), ValuesOf(b, SomeStates(c)));
+}
+
+void ExpectRejected(const ValueRlConfig& loader, const std::filesystem::path& file,
+                    const std::string& mismatch) {
+  ValuePolicy p(loader);
+  try {
+    p.LoadWeights(file);
+    ADD_FAILURE() << "accepted " << file << " for " << mismatch;
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+    EXPECT_NE(msg.find(mismatch), std::string::npos) << msg;
+  }
+}
+
+TEST(WeightsFileTest, MismatchesAreClearErrors) {
+  testing::TempDir dir;
+  const auto file = dir.path() / "cadrl_person.pt";
+  ValuePolicy(Config(Model::kCadrl, SensorSet::kPerson)).SaveWeights(file);
+
+  ExpectRejected(Config(Model::kSarl, SensorSet::kPerson), file, "model: expected sarl, found cadrl");
+  ExpectRejected(Config(Model::kCadrl, SensorSet::kLidarPerson), file,
+                 "sensors: expected lidar+person, found person");
+  ValueRlConfig with_stop = Config(Model::kCadrl, SensorSet::kPerson);
+  with_stop.stop_action = true;
+  ExpectRejected(with_stop, file, "actions: expected 17, found 16");
+
+  const auto lidar_file = dir.path() / "cadrl_lidar.pt";
+  ValuePolicy(Config(Model::kCadrl, SensorSet::kLidar)).SaveWeights(lidar_file);
+  ValueRlConfig more_beams = Config(Model::kCadrl, SensorSet::kLidar);
+  more_beams.lidar_beams = 45;
+  ExpectRejected(more_beams, lidar_file, "lidar_beams: expected 45, found 9");
+
+  ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), dir.path() / "missing.pt", "does not exist");
+  const auto junk = dir.Write("junk.pt", "not a torch archive");
+  ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), junk, "not a libtorch archive");
+}
+
+}  // namespace
+}  // namespace crowdsim::value_rl
