@@ -11,7 +11,7 @@ packages=(
   libboost-serialization-dev libboost-program-options-dev
   libompl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libpng-dev libcairo2-dev
+  libpng-dev libcairo2-dev libgif-dev
 )
 if [[ "${1:-}" != "--no-torch" ]]; then
   packages+=(libtorch-dev libopenblas0-pthread)

@@ -9,5 +9,8 @@ namespace crowdsim::cli {
 int RunCommand(const std::vector<std::string>& args);
 int ValidateCommand(const std::vector<std::string>& args);
 int ListPluginsCommand(const std::vector<std::string>& args);
+int TrainCommand(const std::vector<std::string>& args);
+int RenderCommand(const std::vector<std::string>& args);
+int ReportCommand(const std::vector<std::string>& args);
 
 }  // namespace crowdsim::cli

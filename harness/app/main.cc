@@ -5,6 +5,7 @@
 
 #include "cli_args.h"
 #include "commands.h"
+#include "floorplan_cli.h"
 
 namespace {
 
@@ -16,6 +17,21 @@ usage:
       (DIR defaults to results/<suite name>/); rerunning resumes finished episodes
   crowdsim-bench validate SUITE.yaml...
       checks suites without running them; reports every error with file:line:col
+  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--quiet]
+      trains a learned policy (cadrl, sarl): imitation of ORCA, then RL; writes
+      DIR/weights.pt, best.pt, il.pt, training_log.csv (DIR defaults to results/train/<name>/);
+      checkpoints every 500 episodes and on Ctrl-C; --resume continues exactly
+  crowdsim-bench floorplan import IMAGE [--resolution M] [--kind navmesh|outline] [--max-rectangles 30] --out WORLD.yaml
+  crowdsim-bench floorplan preview WORLD.yaml [--image IMAGE] --out FILE.svg
+  crowdsim-bench floorplan dataset --source DIR --out worlds/floorplans
+      imports real floor plans into rectangle worlds (see worlds/floorplan/README.md)
+  crowdsim-bench render SUITE.yaml --row R --episode K [--compare R2] [--sensors-at STEP]
+                 [--animate] [--speed X] [--scale S] --out FILE.{svg,png,pdf,gif,mp4}
+      draws one episode (rows 1.. as in the table or by label, episodes 0..): trajectories,
+      time marks, outcome; --compare adds a second row's robot; --sensors-at draws the lidar
+      and person readings at a step; --animate writes a .gif (or .mp4) at --speed x real time
+  crowdsim-bench report RESULTS_DIR --out report.html [--suite SUITE.yaml]
+      one self-contained HTML page of a run: table, charts, first success/collision/timeout
   crowdsim-bench list-plugins [PLUGIN.so...]
       lists every plugin found, with its kind, description and parameters
   crowdsim-bench help
@@ -35,8 +51,12 @@ int main(int argc, char** argv) {
     if (command == "run") return crowdsim::cli::RunCommand(args);
     if (command == "validate") return crowdsim::cli::ValidateCommand(args);
     if (command == "list-plugins") return crowdsim::cli::ListPluginsCommand(args);
+    if (command == "floorplan") return crowdsim::floorplan::RunFloorplanCli(args);
+    if (command == "train") return crowdsim::cli::TrainCommand(args);
+    if (command == "render") return crowdsim::cli::RenderCommand(args);
+    if (command == "report") return crowdsim::cli::ReportCommand(args);
     std::cerr << "error: unknown command '" << command
-              << "' (valid: run, validate, list-plugins, help)\n\n" << kUsage;
+              << "' (valid: run, validate, train, floorplan, render, report, list-plugins, help)\n\n" << kUsage;
     return 2;
   } catch (const crowdsim::cli::UsageError& e) {
     std::cerr << "error: " << e.what() << "\n\n" << kUsage;

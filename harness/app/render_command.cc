@@ -1,0 +1,122 @@
+// render: one episode as a figure (svg, png, pdf) or an animation (gif, mp4).
+#include <iostream>
+#include <optional>
+
+#include "cli_args.h"
+#include "commands.h"
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/render/animation.h"
+#include "crowdsim/render/episode_replay.h"
+#include "crowdsim/render/figure_output.h"
+#include "crowdsim/render/output_format.h"
+#include "crowdsim/suite.h"
+
+namespace crowdsim::cli {
+
+int RenderCommand(const std::vector<std::string>& args) {
+  const Args a = Args::Parse(
+      args, {"--row", "--episode", "--compare", "--sensors-at", "--speed", "--scale", "--out"},
+      {"--animate"});
+  if (a.positional.size() != 1) throw UsageError("render needs exactly one suite file");
+  const auto out = a.Get("--out");
+  if (!out)
+    throw UsageError("render needs --out FILE.{svg,png,pdf} (or FILE.{gif,mp4} with --animate)");
+  if (!a.Get("--row"))
+    throw UsageError("render needs --row R (1-based as in the table, or a row label)");
+  if (!a.Get("--episode"))
+    throw UsageError("render needs --episode K (0-based, as in episodes.csv)");
+
+  // Every argument is checked before the (slow) replay.
+  render::OutputFormat format;
+  try {
+    format = render::FormatFromPath(*out);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const bool animate = a.Has("--animate");
+  if (animate && !render::IsAnimation(format)) {
+    throw UsageError("--animate writes .gif or .mp4, not '" + *out + "'");
+  }
+  if (!animate && render::IsAnimation(format)) {
+    throw UsageError("'" + *out +
+                     "' is an animation: add --animate (still figures: .svg, .png, .pdf)");
+  }
+  if (format == render::OutputFormat::kMp4 && !render::Mp4Supported()) {
+    throw UsageError(
+        "mp4 support was not built (libavcodec/libavformat were not found at configure time): "
+        "use --out FILE.gif, or install libavcodec-dev libavformat-dev libswscale-dev and rebuild");
+  }
+  if (animate && a.Has("--sensors-at"))
+    throw UsageError("--sensors-at draws still figures only (drop --animate)");
+  if (!animate && a.Has("--speed")) throw UsageError("--speed needs --animate");
+  double speed = 1.0;
+  if (auto s = a.Get("--speed")) {
+    try {
+      size_t used = 0;
+      speed = std::stod(*s, &used);
+      if (used != s->size()) throw std::invalid_argument("");
+    } catch (const std::exception&) {
+      speed = -1.0;
+    }
+    if (!(speed > 0.0 && speed <= 100.0))
+      throw UsageError("--speed must be a number in (0, 100] (x real time), got '" + *s + "'");
+  }
+  double png_scale = render::kDefaultPngScale;
+  if (auto s = a.Get("--scale")) {
+    if (format != render::OutputFormat::kPng) throw UsageError("--scale applies to .png only");
+    try {
+      size_t used = 0;
+      png_scale = std::stod(*s, &used);
+      if (used != s->size()) png_scale = -1.0;
+    } catch (const std::exception&) {
+      png_scale = -1.0;
+    }
+    if (!(png_scale > 0.0 && png_scale <= 8.0)) {
+      throw UsageError("--scale must be a number in (0, 8] (PNG px per figure px), got '" + *s +
+                       "'");
+    }
+  }
+  std::optional<int> sensors_at;
+  if (a.Has("--sensors-at")) sensors_at = a.GetInt("--sensors-at", 0, 0, 1'000'000);
+
+  PluginRegistry registry;
+  SuiteLoadResult loaded = LoadSuite(a.positional[0], registry);
+  if (!loaded.suite) {
+    for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
+    return 2;
+  }
+  const Suite& suite = *loaded.suite;
+  size_t row = 0, compare_row = 0;
+  int episode = 0;
+  try {
+    row = render::ResolveRow(suite, *a.Get("--row"));
+    if (auto c = a.Get("--compare")) compare_row = render::ResolveRow(suite, *c);
+    episode = render::ResolveEpisode(suite, *a.Get("--episode"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+
+  render::ReplayedEpisode replay;
+  try {
+    replay = render::ReplayForFigure(suite, row, episode, registry, sensors_at);
+  } catch (const std::out_of_range& e) {
+    throw UsageError(e.what());  // --sensors-at past the end: the message names the valid steps
+  }
+  std::optional<render::ReplayedEpisode> compare;
+  if (a.Get("--compare")) compare = render::ReplayForFigure(suite, compare_row, episode, registry);
+  const render::EpisodeFigure figure =
+      render::MakeFigure(suite, replay, compare ? &*compare : nullptr);
+  if (animate) {
+    render::AnimationOptions options;
+    options.speed = speed;
+    render::WriteAnimation(figure, suite.sim.time_step, *out, options);
+  } else {
+    render::WriteFigure(render::DrawEpisode(figure), *out, png_scale);
+  }
+  std::cerr << "wrote " << *out << " (" << figure.robots[0].label;
+  if (compare) std::cerr << "; " << figure.robots[1].label;
+  std::cerr << ")\n";
+  return 0;
+}
+
+}  // namespace crowdsim::cli

@@ -1,0 +1,336 @@
+#include "crowdsim/render/episode_figure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "crowdsim/render/palette.h"
+#include "crowdsim/render/view.h"
+
+namespace crowdsim::render {
+namespace {
+
+constexpr double kMargin = 14.0;
+constexpr double kTitleLine = 22.0;
+constexpr double kLegendLine = 18.0;
+
+std::string Format(const char* fmt, double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), fmt, x);
+  return buf;
+}
+
+Style Stroke(const Color& c, double width, bool dashed = false) {
+  Style s;
+  s.stroke = c;
+  s.stroke_width = width;
+  s.dashed = dashed;
+  return s;
+}
+
+Style Filled(const Color& fill, std::optional<Color> stroke = std::nullopt, double width = 1.0) {
+  Style s;
+  s.fill = fill;
+  s.stroke = stroke;
+  s.stroke_width = width;
+  return s;
+}
+
+void Grow(Rect* r, const Vec2& p, double pad) {
+  r->min = r->min.cwiseMin(p - Vec2(pad, pad));
+  r->max = r->max.cwiseMax(p + Vec2(pad, pad));
+}
+
+// The world area shown: the map bounds plus everything that moved (an agent may leave them).
+Rect WorldExtent(const EpisodeFigure& fig) {
+  const Scenario& sc = *fig.scenario;
+  Rect r{Vec2(kInfinity, kInfinity), Vec2(-kInfinity, -kInfinity)};
+  if (sc.map && sc.map->bounds.Area() > 0.0) r = sc.map->bounds;
+  if (sc.map) {
+    for (const Rect& o : sc.map->rectangles) {
+      Grow(&r, o.min, 0.0);
+      Grow(&r, o.max, 0.0);
+    }
+  }
+  Grow(&r, sc.robot_start, 0.5);
+  Grow(&r, sc.robot_goal, 0.5);
+  for (const HumanSpec& h : sc.humans) {
+    Grow(&r, h.start, h.radius);
+    for (const Vec2& g : h.goals) Grow(&r, g, h.radius);
+  }
+  for (const RobotTrack& t : fig.robots) {
+    for (const EpisodeFrame& f : t.result->trajectory) {
+      Grow(&r, f.robot.position, f.robot.radius);
+      for (const AgentState& h : f.humans) Grow(&r, h.position, h.radius);
+    }
+  }
+  return r.Inflated(0.2);
+}
+
+std::vector<Vec2> Star(const Vec2& c, double outer) {
+  std::vector<Vec2> pts;
+  for (int i = 0; i < 10; ++i) {
+    const double a = -M_PI / 2 + i * M_PI / 5;
+    const double r = i % 2 == 0 ? outer : 0.45 * outer;
+    pts.emplace_back(c.x() + r * std::cos(a), c.y() + r * std::sin(a));
+  }
+  return pts;
+}
+
+std::vector<Vec2> Square(const Vec2& c, double half) {
+  return {c + Vec2(-half, -half), c + Vec2(half, -half), c + Vec2(half, half),
+          c + Vec2(-half, half)};
+}
+
+std::vector<Vec2> Diamond(const Vec2& c, double half) {
+  return {c + Vec2(0, -half), c + Vec2(half, 0), c + Vec2(0, half), c + Vec2(-half, 0)};
+}
+
+// A navigable mask as an overlay: blocked cells grey, navigable cells transparent.
+std::shared_ptr<const RgbaImage> MaskImage(const NavigableMask& m) {
+  auto img = std::make_shared<RgbaImage>();
+  img->width = m.width;
+  img->height = m.height;
+  img->pixels.assign(static_cast<size_t>(m.width) * m.height * 4, 0);
+  for (int row = 0; row < m.height; ++row) {
+    for (int col = 0; col < m.width; ++col) {
+      if (m.Navigable(row, col)) continue;
+      std::uint8_t* p = &img->pixels[(static_cast<size_t>(row) * m.width + col) * 4];
+      p[0] = palette::kBlocked.r;
+      p[1] = palette::kBlocked.g;
+      p[2] = palette::kBlocked.b;
+      p[3] = 255;
+    }
+  }
+  return img;
+}
+
+// One agent's path up to `last` with a dot (and its time) every `interval` seconds.
+void DrawTrack(Drawing* d, const View& v, const std::vector<Vec2>& pts,
+               const std::vector<double>& times, const std::string& who, const Color& color,
+               double width, const FigureOptions& opt, double label_size) {
+  std::vector<Vec2> canvas;
+  canvas.reserve(pts.size());
+  for (const Vec2& p : pts) canvas.push_back(v.ToCanvas(p));
+  d->AddPolyline("trajectory " + who, canvas,
+                 Stroke(color.WithAlpha(who == "robot" ? 1.0 : 0.8), width));
+  if (opt.time_mark_interval <= 0.0) return;
+  double next = opt.time_mark_interval;
+  std::optional<Vec2> last_label;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    if (times[i] + 1e-9 < next) continue;
+    d->AddCircle("timemark " + who, canvas[i], who == "robot" ? 3.2 : 2.4, Filled(color));
+    // An agent that waits would stack its labels into an unreadable blot: the first one stays.
+    const bool crowded = last_label && (canvas[i] - *last_label).norm() < 2.5 * label_size;
+    if (opt.time_labels && !crowded) {
+      last_label = canvas[i];
+      d->AddText("timelabel " + who, canvas[i] + Vec2(4.0, -4.0), Format("%.0fs", next), label_size,
+                 color);
+    }
+    while (next <= times[i] + 1e-9) next += opt.time_mark_interval;
+  }
+}
+
+void DrawDisc(Drawing* d, const View& v, const AgentState& s, const std::string& cls,
+              const Color& color, const std::string& label) {
+  const Vec2 c = v.ToCanvas(s.position);
+  d->AddCircle(cls, c, v.Length(s.radius), Filled(color.WithAlpha(0.3), color, 1.6));
+  if (!label.empty()) {
+    d->AddText("agent-id", c + Vec2(0.0, 3.5), label, 10.0, palette::kInk, TextAnchor::kMiddle);
+  }
+}
+
+void DrawSensors(Drawing* d, const View& v, const SensorSnapshot& s) {
+  const Vec2 origin = v.ToCanvas(s.robot.position);
+  for (const SensorReading& r : s.readings) {
+    for (size_t b = 0; b < r.ranges.size() && b < r.angles.size(); ++b) {
+      const double a = s.frame.heading + r.angles[b];
+      const Vec2 end = s.robot.position + r.ranges[b] * Vec2(std::cos(a), std::sin(a));
+      d->AddPolyline("beam", {origin, v.ToCanvas(end)},
+                     Stroke(palette::kBeam.WithAlpha(0.45), 0.9));
+      if (r.ranges[b] < r.max_range - 1e-9) {
+        d->AddCircle("hit", v.ToCanvas(end), 2.6, Filled(palette::kBeam));
+      }
+    }
+  }
+  for (const SensorReading& r : s.readings) {
+    for (const PersonObservation& p : r.people) {
+      const Vec2 world = s.robot.position + s.frame.VectorToWorld(p.position);
+      const Vec2 vel = s.frame.VectorToWorld(p.velocity);
+      const Vec2 c = v.ToCanvas(world);
+      d->AddCircle("person-reading", c, v.Length(p.radius) + 3.0,
+                   Stroke(palette::kPersonReading, 1.6, true));
+      d->AddPolyline("person-velocity", {c, v.ToCanvas(world + vel)},
+                     Stroke(palette::kPersonReading, 1.6));
+    }
+  }
+}
+
+// Shared by the full figure (frame = none) and the animation frames.
+Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const FigureOptions& opt) {
+  if (fig.scenario == nullptr || fig.robots.empty()) {
+    throw std::invalid_argument("an episode figure needs a scenario and at least one robot track");
+  }
+  for (const RobotTrack& t : fig.robots) {
+    if (t.result == nullptr || t.result->trajectory.empty()) {
+      throw std::invalid_argument("robot track '" + t.label +
+                                  "' has no recorded trajectory (replay with recording on)");
+    }
+  }
+  const Scenario& sc = *fig.scenario;
+  const bool with_sensors = !frame && fig.sensors.has_value();
+  const int header_lines = static_cast<int>(fig.robots.size()) + (with_sensors || frame ? 1 : 0);
+  const double header = kTitleLine + kLegendLine * header_lines + 6.0;
+  const View v = View::Fit(WorldExtent(fig), opt.max_side, kMargin, header);
+
+  Drawing d;
+  d.width = std::round(v.width());
+  d.height = std::round(v.height());
+
+  // Map: mask under the rectangles, bounds, obstacles.
+  if (sc.map && sc.map->mask && sc.map->mask->width > 0 && sc.map->mask->height > 0) {
+    const NavigableMask& m = *sc.map->mask;
+    const Vec2 top_left = v.ToCanvas(Vec2(m.origin.x(), m.origin.y() + m.height * m.resolution));
+    const Vec2 bottom_right = v.ToCanvas(Vec2(m.origin.x() + m.width * m.resolution, m.origin.y()));
+    d.AddImage("mask", top_left, bottom_right, MaskImage(m));
+  }
+  if (sc.map && sc.map->bounds.Area() > 0.0) {
+    const Rect& b = sc.map->bounds;
+    d.AddRect("bounds", v.ToCanvas(Vec2(b.min.x(), b.max.y())),
+              v.ToCanvas(Vec2(b.max.x(), b.min.y())), Stroke(palette::kMutedInk, 1.0, true));
+  }
+  if (sc.map) {
+    for (const Rect& o : sc.map->rectangles) {
+      d.AddRect("obstacle", v.ToCanvas(Vec2(o.min.x(), o.max.y())),
+                v.ToCanvas(Vec2(o.max.x(), o.min.y())),
+                Filled(palette::kObstacleFill, palette::kObstacleEdge, 1.0));
+    }
+  }
+
+  // Humans, from one track (with invisible robots they are the same in every row).
+  const std::vector<EpisodeFrame>& hframes =
+      fig.robots[std::min(fig.humans_from, fig.robots.size() - 1)].result->trajectory;
+  const size_t hlast = frame ? std::min(*frame, hframes.size() - 1) : hframes.size() - 1;
+  const size_t humans = hframes[0].humans.size();
+  FigureOptions human_opt = opt;
+  if (frame) human_opt.time_labels = false;
+  for (size_t i = 0; i < humans; ++i) {
+    const Color c = palette::Human(static_cast<int>(i));
+    std::vector<Vec2> pts;
+    std::vector<double> times;
+    for (size_t f = 0; f <= hlast; ++f) {
+      pts.push_back(hframes[f].humans[i].position);
+      times.push_back(hframes[f].time);
+    }
+    if (i < sc.humans.size()) {
+      for (const Vec2& g : sc.humans[i].goals) {
+        d.AddPolygon("goal human", Diamond(v.ToCanvas(g), 4.5), Stroke(c, 1.4));
+      }
+    }
+    d.AddCircle("start human", v.ToCanvas(pts.front()), 3.0, Stroke(c, 1.4));
+    DrawTrack(&d, v, pts, times, "human", c, 1.6, human_opt, 8.5);
+  }
+
+  // Robots, their shared start and goal.
+  d.AddPolygon("start robot", Square(v.ToCanvas(sc.robot_start), 5.0),
+               Filled(Color{255, 255, 255, 1.0}, palette::kInk, 1.6));
+  d.AddPolygon("goal robot", Star(v.ToCanvas(sc.robot_goal), 9.0),
+               Filled(Color{255, 215, 0, 1.0}, palette::kInk, 1.2));
+  for (const RobotTrack& t : fig.robots) {
+    const auto& tr = t.result->trajectory;
+    const size_t last = frame ? std::min(*frame, tr.size() - 1) : tr.size() - 1;
+    std::vector<Vec2> pts;
+    std::vector<double> times;
+    for (size_t f = 0; f <= last; ++f) {
+      pts.push_back(tr[f].robot.position);
+      times.push_back(tr[f].time);
+    }
+    FigureOptions robot_opt = opt;
+    if (frame) robot_opt.time_labels = false;
+    DrawTrack(&d, v, pts, times, "robot", t.color, 2.6, robot_opt, 10.5);
+  }
+
+  // Discs: where everybody ended (or is, in an animation frame).
+  const std::string disc = frame ? "agent" : "final";
+  for (size_t i = 0; i < humans; ++i) {
+    DrawDisc(&d, v, hframes[hlast].humans[i], disc + " human", palette::Human(static_cast<int>(i)),
+             std::to_string(i + 1));
+  }
+  for (const RobotTrack& t : fig.robots) {
+    const auto& tr = t.result->trajectory;
+    const EpisodeFrame& f = tr[frame ? std::min(*frame, tr.size() - 1) : tr.size() - 1];
+    DrawDisc(&d, v, f.robot, disc + " robot", t.color, "R");
+    const bool collided = t.result->status == EpisodeStatus::kCollisionHuman ||
+                          t.result->status == EpisodeStatus::kCollisionObstacle;
+    if (collided && (!frame || *frame + 1 >= tr.size())) {
+      d.AddCircle("collision-mark", v.ToCanvas(f.robot.position), v.Length(f.robot.radius) + 5.0,
+                  Stroke(palette::kCollision, 2.2, true));
+    }
+  }
+
+  if (with_sensors) {
+    const SensorSnapshot& s = *fig.sensors;
+    for (size_t i = 0; i < s.humans.size(); ++i) {
+      d.AddCircle("sensed human", v.ToCanvas(s.humans[i].position), v.Length(s.humans[i].radius),
+                  Filled(palette::Human(static_cast<int>(i)).WithAlpha(0.15),
+                         palette::Human(static_cast<int>(i)), 1.0));
+    }
+    d.AddCircle("sensed robot", v.ToCanvas(s.robot.position), v.Length(s.robot.radius),
+                Filled(fig.robots[0].color.WithAlpha(0.25), fig.robots[0].color, 1.4));
+    DrawSensors(&d, v, s);
+  }
+
+  // Header: title, one legend line per robot, then the sensor or clock line.
+  double y = kMargin + 14.0;
+  d.AddText("title", Vec2(kMargin, y), fig.title, 14.0, palette::kInk, TextAnchor::kStart, true);
+  y += kTitleLine - 2.0;
+  for (const RobotTrack& t : fig.robots) {
+    d.AddPolyline("legend-swatch", {Vec2(kMargin, y - 4.0), Vec2(kMargin + 22.0, y - 4.0)},
+                  Stroke(t.color, 3.0));
+    d.AddText("legend", Vec2(kMargin + 30.0, y), t.label, 12.0, palette::kInk);
+    y += kLegendLine;
+  }
+  if (with_sensors) {
+    const SensorSnapshot& s = *fig.sensors;
+    std::string what;
+    for (const SensorReading& r : s.readings) {
+      if (!what.empty()) what += ", ";
+      what += r.sensor;
+      if (!r.ranges.empty()) what += " (" + std::to_string(r.ranges.size()) + " beams)";
+      if (!r.people.empty() || r.ranges.empty())
+        what += " (" + std::to_string(r.people.size()) + " people)";
+    }
+    d.AddText("sensor-caption", Vec2(kMargin, y),
+              "sensors at step " + std::to_string(s.step) + ", t = " + Format("%.2f", s.time) +
+                  " s: " + what,
+              12.0, palette::kMutedInk);
+  } else if (frame) {
+    double clock = 0.0;  // the longest track keeps the clock running after the other ended
+    for (const RobotTrack& t : fig.robots)
+      clock = std::max(
+          clock, t.result->trajectory[std::min(*frame, t.result->trajectory.size() - 1)].time);
+    d.AddText("clock", Vec2(kMargin, y), "t = " + Format("%.2f", clock) + " s", 12.0,
+              palette::kMutedInk);
+  }
+  return d;
+}
+
+}  // namespace
+
+Drawing DrawEpisode(const EpisodeFigure& figure, const FigureOptions& options) {
+  return Build(figure, std::nullopt, options);
+}
+
+Drawing DrawEpisodeFrame(const EpisodeFigure& figure, size_t frame, const FigureOptions& options) {
+  return Build(figure, frame, options);
+}
+
+size_t FrameCount(const EpisodeFigure& figure) {
+  size_t n = 0;
+  for (const RobotTrack& t : figure.robots)
+    n = std::max(n, t.result ? t.result->trajectory.size() : 0);
+  return n;
+}
+
+}  // namespace crowdsim::render

@@ -1,0 +1,39 @@
+#include "crowdsim/render/sensor_snapshot.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "crowdsim/collision_world.h"
+#include "crowdsim/sensor.h"
+
+namespace crowdsim::render {
+
+SensorSnapshot TakeSensorSnapshot(const Scenario& scenario, const EpisodeResult& result, int step,
+                                  std::span<const MountedSensor> sensors) {
+  const int frames = static_cast<int>(result.trajectory.size());
+  if (step < 0 || step >= frames) {
+    throw std::out_of_range(
+        "--sensors-at " + std::to_string(step) + " is outside the episode: valid steps are 0.." +
+        std::to_string(frames - 1) + " (" + std::to_string(frames) + " recorded frames)");
+  }
+  const EpisodeFrame& f = result.trajectory[static_cast<size_t>(step)];
+  SensorSnapshot snap;
+  snap.step = step;
+  snap.time = f.time;
+  snap.robot = f.robot;
+  // Episode::Step points the holonomic robot at its goal just before it senses; the recorded
+  // heading is the one of the previous decision.
+  snap.robot.heading = HeadingToGoal(snap.robot);
+  snap.frame = Frame::Make(snap.robot.position, snap.robot.heading);
+  snap.humans = f.humans;
+  const CollisionWorld world(scenario.map);
+  const SenseInput input{snap.robot, snap.frame, snap.humans, world};
+  snap.readings.resize(sensors.size());
+  for (size_t s = 0; s < sensors.size(); ++s) {
+    snap.readings[s].sensor = sensors[s].name;
+    sensors[s].sensor->Sense(input, &snap.readings[s]);
+  }
+  return snap;
+}
+
+}  // namespace crowdsim::render

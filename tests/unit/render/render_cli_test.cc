@@ -1,0 +1,106 @@
+// `crowdsim-bench render` and `report` end to end: files written, and bad arguments rejected
+// with the value and the valid range or choices (exit status 2).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <utility>
+
+#include "temp_dir.h"
+#include "test_paths.h"
+
+namespace crowdsim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::TempDir;
+
+std::pair<int, std::string> Shell(const std::string& cmd) {
+  std::string out;
+  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+  char buf[4096];
+  while (p && fgets(buf, sizeof(buf), p)) out += buf;
+  const int status = p ? pclose(p) : -1;
+  return {WEXITSTATUS(status), out};
+}
+
+std::string Exe() { return (testing::BinaryDir() / "bin" / "crowdsim-bench").string(); }
+std::string Quick() { return (testing::SourceDir() / "suites" / "quick.yaml").string(); }
+
+TEST(RenderCli, WritesEveryStillFormatAndAGif) {
+  TempDir tmp;
+  for (const char* ext : {"svg", "png", "pdf"}) {
+    const fs::path out = tmp.path() / (std::string("e.") + ext);
+    auto [rc, text] = Shell(Exe() + " render " + Quick() +
+                            " --row orca --episode 0 --compare 1 --out " + out.string());
+    EXPECT_EQ(rc, 0) << text;
+    EXPECT_GT(fs::file_size(out), 1000u) << ext;
+  }
+  const fs::path gif = tmp.path() / "e.gif";
+  auto [rc, text] = Shell(Exe() + " render " + Quick() +
+                          " --row 2 --episode 0 --animate --speed 4 --out " + gif.string());
+  EXPECT_EQ(rc, 0) << text;
+  EXPECT_GT(fs::file_size(gif), 1000u);
+  // Twice the same command, twice the same SVG bytes.
+  const fs::path again = tmp.path() / "again.svg";
+  Shell(Exe() + " render " + Quick() + " --row orca --episode 0 --compare 1 --out " +
+        again.string());
+  EXPECT_EQ(testing::ReadText(tmp.path() / "e.svg"), testing::ReadText(again));
+}
+
+TEST(RenderCli, BadArgumentsNameTheValueAndTheChoices) {
+  TempDir tmp;
+  const std::string svg = " --out " + (tmp.path() / "x.svg").string();
+  const std::string base = Exe() + " render " + Quick();
+  const std::pair<std::string, std::string> cases[] = {
+      {" --row 3 --episode 0" + svg, "row 3 is out of range (valid: 1..2 or a label: linear orca)"},
+      {" --row sarl --episode 0" + svg, "no row labelled 'sarl'"},
+      {" --row 1 --episode 100" + svg, "episode 100 is out of range (valid: 0..99"},
+      {" --row 1 --episode 0 --compare 7" + svg, "row 7 is out of range"},
+      {" --row 1 --episode 0 --out " + (tmp.path() / "x.bmp").string(),
+       "unknown output format '.bmp'"},
+      {" --row 1 --episode 0 --out " + (tmp.path() / "x.gif").string(), "add --animate"},
+      {" --row 1 --episode 0 --sensors-at 999" + svg,
+       "--sensors-at 999 is outside the episode: valid steps are 0.."},
+      {" --row 1 --episode 0 --animate --speed fast --out " + (tmp.path() / "x.gif").string(),
+       "--speed must be a number in (0, 100]"},
+      {" --row 1 --episode 0", "render needs --out"},
+  };
+  for (const auto& [args, expected] : cases) {
+    auto [rc, text] = Shell(base + args);
+    EXPECT_EQ(rc, 2) << args << "\n" << text;
+    EXPECT_NE(text.find(expected), std::string::npos) << args << "\n" << text;
+  }
+  EXPECT_FALSE(fs::exists(tmp.path() / "x.svg"));
+}
+
+TEST(ReportCli, WritesTheReportAndRejectsBadFolders) {
+  TempDir tmp;
+  const fs::path results = tmp.path() / "quick";
+  auto [rrc, rtext] =
+      Shell(Exe() + " run " + Quick() + " --episodes 3 --jobs 2 --quiet --out " + results.string());
+  ASSERT_EQ(rrc, 0) << rtext;
+  const fs::path html = tmp.path() / "report.html";
+  auto [rc, text] = Shell(Exe() + " report " + results.string() + " --out " + html.string());
+  EXPECT_EQ(rc, 0) << text;
+  EXPECT_NE(testing::ReadText(html).find("<h1>quick</h1>"), std::string::npos);
+
+  auto [mrc, mtext] =
+      Shell(Exe() + " report " + (tmp.path() / "missing").string() + " --out " + html.string());
+  EXPECT_EQ(mrc, 2) << mtext;
+  EXPECT_NE(mtext.find("results folder '" + (tmp.path() / "missing").string() + "' does not exist"),
+            std::string::npos)
+      << mtext;
+  auto [erc, etext] = Shell(Exe() + " report " + tmp.path().string() + " --out " + html.string());
+  EXPECT_EQ(erc, 2) << etext;
+  EXPECT_NE(etext.find("has no manifest.json"), std::string::npos) << etext;
+  auto [frc, ftext] =
+      Shell(Exe() + " report " + results.string() + " --out " + (tmp.path() / "r.pdf").string());
+  EXPECT_EQ(frc, 2) << ftext;
+  EXPECT_NE(ftext.find("--out must end in .html"), std::string::npos) << ftext;
+}
+
+}  // namespace
+}  // namespace crowdsim

@@ -1,0 +1,253 @@
+// Episode figures: what the SVG shows (countable by class), determinism, --compare, the sensor
+// snapshot and the floor-plan mask, on scripted episodes and on a replayed suite episode.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "crowdsim/episode.h"
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/render/episode_figure.h"
+#include "crowdsim/render/episode_replay.h"
+#include "crowdsim/render/palette.h"
+#include "crowdsim/render/svg_writer.h"
+#include "crowdsim/sensor.h"
+#include "crowdsim/suite.h"
+#include "scripted.h"
+#include "test_paths.h"
+
+namespace crowdsim::render {
+namespace {
+
+using crowdsim::testing::ConstantVelocityPolicy;
+using crowdsim::testing::GoStraightPolicy;
+using crowdsim::testing::MakeRoom;
+using crowdsim::testing::MakeScenario;
+
+int CountOf(const std::string& text, const std::string& needle) {
+  int n = 0;
+  for (size_t pos = text.find(needle); pos != std::string::npos; pos = text.find(needle, pos + 1))
+    ++n;
+  return n;
+}
+
+// A room (4 walls) with 2 obstacles off the robot's straight path and 2 walking humans.
+Scenario ScriptedScenario() {
+  return MakeScenario(
+      MakeRoom({Rect::FromCorners(-1, 1.5, 1, 2.5), Rect::FromCorners(-1, -3, 0, -2)}), Vec2(-4, 0),
+      Vec2(4, 0), {{Vec2(-3, 4), Vec2(3, 4)}, {Vec2(3, -4), Vec2(-3, -4)}});
+}
+
+EpisodeResult RunScripted(const Scenario& sc) {
+  GoStraightPolicy robot;
+  ConstantVelocityPolicy h1(Vec2(0.5, 0.0)), h2(Vec2(-0.5, 0.0));
+  EpisodeAgents agents{&robot, {&h1, &h2}, {}};
+  Episode ep(sc, SimConfig{}, agents, /*record_trajectory=*/true);
+  return ep.Run();
+}
+
+EpisodeFigure Figure(const Scenario& sc, const EpisodeResult& r) {
+  EpisodeFigure fig;
+  fig.scenario = &sc;
+  fig.title = "scripted";
+  fig.robots.push_back(RobotTrack{"robot: success", &r, palette::kRobot});
+  return fig;
+}
+
+TEST(EpisodeFigure, SvgShowsEveryRectangleAndTrajectory) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  ASSERT_EQ(r.status, EpisodeStatus::kSuccess);
+  ASSERT_DOUBLE_EQ(r.time, 8.0);  // 8 m at 1 m/s
+  const std::string svg = ToSvg(DrawEpisode(Figure(sc, r)));
+
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_EQ(CountOf(svg, "<rect class=\"obstacle\""), 6);  // 4 walls + 2 obstacles
+  EXPECT_EQ(CountOf(svg, "<polyline class=\"trajectory robot\""), 1);
+  EXPECT_EQ(CountOf(svg, "<polyline class=\"trajectory human\""), 2);
+  EXPECT_EQ(CountOf(svg, "<circle class=\"final robot\""), 1);
+  EXPECT_EQ(CountOf(svg, "<circle class=\"final human\""), 2);
+  EXPECT_EQ(CountOf(svg, "<polygon class=\"start robot\""), 1);
+  EXPECT_EQ(CountOf(svg, "<polygon class=\"goal robot\""), 1);
+  EXPECT_EQ(CountOf(svg, "<polygon class=\"goal human\""), 2);
+  // Time dots every 2 s of the 8 s episode: 2, 4, 6, 8 for the robot and for each human.
+  EXPECT_EQ(CountOf(svg, "<circle class=\"timemark robot\""), 4);
+  EXPECT_EQ(CountOf(svg, "<circle class=\"timemark human\""), 8);
+  EXPECT_EQ(CountOf(svg, ">8s</text>"), 3);
+  EXPECT_NE(svg.find("robot: success"), std::string::npos);
+  EXPECT_EQ(CountOf(svg, "class=\"beam\""), 0);  // no snapshot asked for
+  EXPECT_EQ(CountOf(svg, "class=\"mask\""), 0);
+}
+
+TEST(EpisodeFigure, TheSameEpisodeGivesTheSameSvgBytes) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult a = RunScripted(sc);
+  const EpisodeResult b = RunScripted(sc);
+  EXPECT_EQ(ToSvg(DrawEpisode(Figure(sc, a))), ToSvg(DrawEpisode(Figure(sc, b))));
+}
+
+TEST(EpisodeFigure, RobotPathFollowsTheTrajectoryInCanvasCoordinates) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  const Drawing d = DrawEpisode(Figure(sc, r));
+  const DrawItem* robot = nullptr;
+  for (const DrawItem& it : d.items) {
+    if (it.cls == "trajectory robot") robot = &it;
+  }
+  ASSERT_NE(robot, nullptr);
+  ASSERT_EQ(robot->points.size(), r.trajectory.size());
+  // Straight along +x in the world: left to right on one canvas row, inside the canvas.
+  EXPECT_LT(robot->points.front().x(), robot->points.back().x());
+  EXPECT_NEAR(robot->points.front().y(), robot->points.back().y(), 1e-9);
+  for (const Vec2& p : robot->points) {
+    EXPECT_GT(p.x(), 0.0);
+    EXPECT_LT(p.x(), d.width);
+    EXPECT_GT(p.y(), 0.0);
+    EXPECT_LT(p.y(), d.height);
+  }
+}
+
+TEST(EpisodeFigure, CompareDrawsTwoRobotsInTwoColours) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult a = RunScripted(sc);
+  // A second robot that only gets half way before the time limit.
+  ConstantVelocityPolicy slow(Vec2(0.15, 0.0));
+  ConstantVelocityPolicy h1(Vec2(0.5, 0.0)), h2(Vec2(-0.5, 0.0));
+  Episode ep(sc, SimConfig{}, EpisodeAgents{&slow, {&h1, &h2}, {}}, true);
+  const EpisodeResult b = ep.Run();
+  ASSERT_EQ(b.status, EpisodeStatus::kTimeout);
+  EpisodeFigure fig = Figure(sc, a);
+  fig.robots.push_back(RobotTrack{"slow: timeout", &b, palette::kRobotCompare});
+  const Drawing d = DrawEpisode(fig);
+  EXPECT_EQ(d.Count("trajectory robot"), 2);
+  EXPECT_EQ(d.Count("final robot"), 2);
+  EXPECT_EQ(d.Count("legend"), 2);
+  EXPECT_EQ(d.Count("trajectory human"), 2);  // the humans are drawn once
+  // The humans come from the chosen track: the longer run shows them until its end.
+  fig.humans_from = 1;
+  const Drawing longer = DrawEpisode(fig);
+  for (const DrawItem& it : longer.items) {
+    if (it.cls == "trajectory human") {
+      EXPECT_EQ(it.points.size(), b.trajectory.size());
+    }
+  }
+  std::vector<Color> colours;
+  for (const DrawItem& it : d.items) {
+    if (it.cls == "trajectory robot") colours.push_back(*it.style.stroke);
+  }
+  ASSERT_EQ(colours.size(), 2u);
+  EXPECT_FALSE(colours[0] == colours[1]);
+}
+
+// Three beams (the middle one hits nothing) and one person straight ahead.
+class FakeSensor final : public Sensor {
+ public:
+  void Sense(const SenseInput& in, SensorReading* out) const override {
+    out->max_range = 5.0;
+    out->angles = {-0.5, 0.0, 0.5};
+    out->ranges = {2.0, 5.0, 3.0};
+    out->people = {PersonObservation{Vec2(1.0, 0.0), Vec2(0.0, 0.5), 0.3}};
+    seen_robot_x = in.robot.position.x();
+  }
+  mutable double seen_robot_x = 0.0;
+};
+
+TEST(EpisodeFigure, SensorSnapshotDrawsBeamsHitsAndPeople) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  FakeSensor sensor;
+  const std::vector<MountedSensor> sensors = {{"fake", &sensor}};
+  EpisodeFigure fig = Figure(sc, r);
+  fig.sensors = TakeSensorSnapshot(sc, r, 8, sensors);
+  EXPECT_DOUBLE_EQ(fig.sensors->time, 2.0);
+  EXPECT_NEAR(sensor.seen_robot_x, -2.0, 1e-9);  // 2 s at 1 m/s from x = -4
+  ASSERT_EQ(fig.sensors->readings.size(), 1u);
+  EXPECT_EQ(fig.sensors->readings[0].sensor, "fake");
+  const Drawing d = DrawEpisode(fig);
+  EXPECT_EQ(d.Count("beam"), 3);
+  EXPECT_EQ(d.Count("hit"), 2);
+  EXPECT_EQ(d.Count("person-reading"), 1);
+  EXPECT_EQ(d.Count("sensed robot"), 1);
+  EXPECT_EQ(d.Count("sensed human"), 2);
+  EXPECT_EQ(d.Count("sensor-caption"), 1);
+  // Animation frames never show the snapshot.
+  EXPECT_EQ(DrawEpisodeFrame(fig, 3).Count("beam"), 0);
+}
+
+TEST(EpisodeFigure, SensorStepOutsideTheEpisodeNamesTheValidSteps) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  FakeSensor sensor;
+  const std::vector<MountedSensor> sensors = {{"fake", &sensor}};
+  try {
+    TakeSensorSnapshot(sc, r, 500, sensors);
+    FAIL() << "expected std::out_of_range";
+  } catch (const std::out_of_range& e) {
+    EXPECT_NE(std::string(e.what()).find("500"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("valid steps are 0..32"), std::string::npos) << e.what();
+  }
+}
+
+TEST(EpisodeFigure, FloorPlanMaskIsDrawnUnderTheRectangles) {
+  auto map = std::make_shared<StaticMap>(*MakeRoom());
+  auto mask = std::make_shared<NavigableMask>();
+  mask->width = 4;
+  mask->height = 3;
+  mask->resolution = 2.0;
+  mask->origin = Vec2(-4, -3);
+  mask->cells = {1, 1, 0, 1, 1, 1, 1, 1, 0, 1, 1, 1};
+  map->mask = mask;
+  const Scenario sc = MakeScenario(map, Vec2(-3, 0), Vec2(3, 0));
+  GoStraightPolicy robot;
+  Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {}, {}}, true);
+  const EpisodeResult r = ep.Run();
+  const Drawing d = DrawEpisode(Figure(sc, r));
+  ASSERT_EQ(d.Count("mask"), 1);
+  EXPECT_EQ(d.items.front().cls, "mask");  // painted first, under everything
+  EXPECT_EQ(d.items.front().image->width, 4);
+  const std::string svg = ToSvg(d);
+  EXPECT_NE(svg.find("<image class=\"mask\""), std::string::npos);
+  EXPECT_NE(svg.find("href=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);
+}
+
+TEST(EpisodeFigure, AnimationFramesGrowTheTrails) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  const EpisodeFigure fig = Figure(sc, r);
+  EXPECT_EQ(FrameCount(fig), r.trajectory.size());
+  const Drawing first = DrawEpisodeFrame(fig, 0);
+  const Drawing later = DrawEpisodeFrame(fig, 10);
+  EXPECT_EQ(first.width, later.width);  // every frame has the same size
+  EXPECT_EQ(first.height, later.height);
+  EXPECT_EQ(later.Count("agent robot"), 1);
+  EXPECT_EQ(later.Count("agent human"), 2);
+  EXPECT_EQ(later.Count("clock"), 1);
+  for (const DrawItem& it : later.items) {
+    if (it.cls == "trajectory robot") {
+      EXPECT_EQ(it.points.size(), 11u);
+    }
+  }
+}
+
+// The real thing: quick.yaml episode 0 replayed with the built plugins, twice.
+TEST(EpisodeFigure, ReplayedSuiteEpisodeIsDeterministicAndShowsTheLidar) {
+  PluginRegistry registry;
+  SuiteLoadResult loaded =
+      LoadSuite(crowdsim::testing::SourceDir() / "suites/quick.yaml", registry);
+  ASSERT_TRUE(loaded.suite) << (loaded.errors.empty() ? "" : loaded.errors[0].Format());
+  const Suite& suite = *loaded.suite;
+  const ReplayedEpisode a = ReplayForFigure(suite, 0, 0, registry, 4);
+  const ReplayedEpisode b = ReplayForFigure(suite, 0, 0, registry, 4);
+  const std::string svg_a = ToSvg(DrawEpisode(MakeFigure(suite, a)));
+  EXPECT_EQ(svg_a, ToSvg(DrawEpisode(MakeFigure(suite, b))));
+  EXPECT_EQ(CountOf(svg_a, "<polyline class=\"beam\""), 45);  // quick.yaml: 45 lidar beams
+  EXPECT_EQ(CountOf(svg_a, "<polyline class=\"trajectory human\""), 5);
+  EXPECT_EQ(CountOf(svg_a, "<rect class=\"obstacle\""),
+            static_cast<int>(a.scenario.map->rectangles.size()));
+  // Both rows share episode 0's scenario: the comparison figure has both robots.
+  const ReplayedEpisode orca = ReplayForFigure(suite, 1, 0, registry);
+  const Drawing both = DrawEpisode(MakeFigure(suite, a, &orca));
+  EXPECT_EQ(both.Count("trajectory robot"), 2);
+}
+
+}  // namespace
+}  // namespace crowdsim::render

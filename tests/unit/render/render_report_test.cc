@@ -1,0 +1,170 @@
+// The HTML report of a real (small) run: self-contained, with the table, charts, thumbnails
+// linking to full figures; clear errors for bad folders; and it opens in headless Chromium.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/render/report.h"
+#include "crowdsim/results.h"
+#include "crowdsim/runner.h"
+#include "crowdsim/suite.h"
+#include "temp_dir.h"
+#include "test_paths.h"
+
+namespace crowdsim::render {
+namespace {
+
+namespace fs = std::filesystem;
+using crowdsim::testing::TempDir;
+
+int CountOf(const std::string& text, const std::string& needle) {
+  int n = 0;
+  for (size_t pos = text.find(needle); pos != std::string::npos; pos = text.find(needle, pos + 1))
+    ++n;
+  return n;
+}
+
+// quick.yaml, 6 episodes per row, into a temporary results folder (once for all tests).
+class ReportTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir();
+    PluginRegistry registry;
+    SuiteLoadResult loaded =
+        LoadSuite(crowdsim::testing::SourceDir() / "suites/quick.yaml", registry);
+    ASSERT_TRUE(loaded.suite);
+    RunOptions opt;
+    opt.out_dir = dir_->path() / "quick";
+    opt.jobs = 2;
+    opt.episodes = 6;
+    opt.progress = false;
+    RunSuite(*loaded.suite, registry, opt);
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    dir_ = nullptr;
+  }
+  static fs::path Results() { return dir_->path() / "quick"; }
+  static TempDir* dir_;
+};
+TempDir* ReportTest::dir_ = nullptr;
+
+TEST_F(ReportTest, IsOneSelfContainedPageWithTableChartsAndFigures) {
+  PluginRegistry registry;
+  const std::string html = BuildReport(Results(), registry);
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("<h1>quick</h1>"), std::string::npos);
+  // The table: a header and one line per row.
+  EXPECT_NE(html.find("<th>success rate</th>"), std::string::npos);
+  EXPECT_EQ(CountOf(html, "<tr>"), 3);
+  // Three charts; the outcome chart stacks success, collision, timeout per row.
+  EXPECT_EQ(CountOf(html, "class=\"chart-title\""), 3);
+  EXPECT_EQ(CountOf(html, "<rect class=\"bar success\""), 2);
+  EXPECT_EQ(CountOf(html, "<rect class=\"bar nav-time\""), 2);
+  // Every thumbnail links to a full figure embedded in the page, and vice versa.
+  const std::regex link("href=\"#(fig-r[0-9]+-e[0-9]+)\"");
+  int links = 0;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), link); it != std::sregex_iterator();
+       ++it) {
+    ++links;
+    EXPECT_NE(html.find("id=\"" + (*it)[1].str() + "\""), std::string::npos) << (*it)[1].str();
+  }
+  EXPECT_GE(links, 2);  // at least one episode per row
+  EXPECT_EQ(CountOf(html, "src=\"data:image/png;base64,"), links);
+  EXPECT_EQ(CountOf(html, "<div class=\"figure\""), links);
+  EXPECT_EQ(CountOf(html, "<polyline class=\"trajectory robot\""), links);
+  // Nothing to fetch: no scripts, stylesheets, or remote URLs (the SVG namespace is a name).
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_EQ(html.find("src=\"http"), std::string::npos);
+  EXPECT_EQ(html.find("href=\"http"), std::string::npos);
+  EXPECT_EQ(html.find("url("), std::string::npos);
+}
+
+TEST_F(ReportTest, ShowsTheFirstOfEachOutcome) {
+  const auto lines = ReadEpisodesCsv(Results() / "episodes.csv");
+  int first_success = -1;
+  for (const EpisodeLine& l : lines) {
+    if (l.row == "orca" && l.record.status == EpisodeStatus::kSuccess && first_success < 0)
+      first_success = l.episode;
+  }
+  ASSERT_GE(first_success, 0) << "ORCA succeeds in quick.yaml";
+  PluginRegistry registry;
+  const std::string html = BuildReport(Results(), registry);
+  EXPECT_NE(html.find("id=\"fig-r2-e" + std::to_string(first_success) + "\""), std::string::npos);
+  // A replay that disagrees with the recorded outcome would be flagged.
+  EXPECT_EQ(html.find("replay: "), std::string::npos);
+}
+
+TEST(ReportErrors, MissingFolderNamesIt) {
+  PluginRegistry registry;
+  try {
+    BuildReport("/nonexistent/results/quick", registry);
+    FAIL() << "expected ReportError";
+  } catch (const ReportError& e) {
+    EXPECT_NE(std::string(e.what()).find("'/nonexistent/results/quick' does not exist"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ReportErrors, FolderWithoutResultsSaysWhatIsExpected) {
+  TempDir tmp;
+  PluginRegistry registry;
+  try {
+    BuildReport(tmp.path(), registry);
+    FAIL() << "expected ReportError";
+  } catch (const ReportError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no manifest.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("table.csv, episodes.csv"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(ReportTest, MissingSuiteFileSaysHowToFix) {
+  PluginRegistry registry;
+  ReportOptions opt;
+  opt.suite_file = "/nonexistent/suite.yaml";
+  try {
+    BuildReport(Results(), registry, opt);
+    FAIL() << "expected ReportError";
+  } catch (const ReportError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/suite.yaml"), std::string::npos) << e.what();
+  }
+}
+
+// Opens the report offline in headless Chromium and takes a screenshot.
+TEST_F(ReportTest, OpensInHeadlessChromium) {
+  const fs::path chromium = "/usr/bin/chromium";
+  if (!fs::exists(chromium))
+    GTEST_SKIP() << "/usr/bin/chromium is absent (apt-get install chromium to run this test)";
+  PluginRegistry registry;
+  const fs::path page = dir_->path() / "report.html";
+  std::ofstream(page) << BuildReport(Results(), registry);
+  const fs::path shot = dir_->path() / "report.png";
+  const fs::path profile = dir_->path() / "chromium-profile";
+  const std::string cmd =
+      "timeout 120 " + chromium.string() +
+      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+      " --disable-background-networking --disable-component-update --disable-sync"
+      " --user-data-dir=" +
+      profile.string() + " --screenshot=" + shot.string() + " --window-size=1400,1000 file://" +
+      page.string() + " > " + (dir_->path() / "chromium.log").string() + " 2>&1";
+  const int rc = std::system(cmd.c_str());
+  ASSERT_EQ(rc, 0) << cmd << "\n" << crowdsim::testing::ReadText(dir_->path() / "chromium.log");
+  ASSERT_TRUE(fs::exists(shot)) << crowdsim::testing::ReadText(dir_->path() / "chromium.log");
+  std::ifstream in(shot, std::ios::binary);
+  std::string magic(8, '\0');
+  in.read(magic.data(), 8);
+  EXPECT_EQ(magic, std::string("\x89PNG\r\n\x1a\n", 8));
+  // A blank page compresses to a few kB; the table, charts and thumbnails do not.
+  EXPECT_GT(fs::file_size(shot), 30000u);
+  if (const char* keep = std::getenv("CROWDSIM_KEEP_SCREENSHOT"))
+    fs::copy_file(shot, keep, fs::copy_options::overwrite_existing);
+}
+
+}  // namespace
+}  // namespace crowdsim::render
