@@ -291,7 +291,12 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
     }
   }
   if (!r.errors.empty()) {
-    result.errors = std::move(r.errors);
+    // Suite-level sections (world, humans, robot sensors) are read once per row: report each
+    // problem once.
+    std::set<std::string> seen;
+    for (auto& e : r.errors) {
+      if (seen.insert(e.Format()).second) result.errors.push_back(std::move(e));
+    }
     return result;
   }
   std::ostringstream os;

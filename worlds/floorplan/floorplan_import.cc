@@ -112,9 +112,8 @@ Grid Crop(const Grid& g, int r0, int c0, int h, int w) {
   return out;
 }
 
-Grid PrepareNavigable(const std::filesystem::path& image, const ImportOptions& o, PlanKind kind,
-                      double res) {
-  const Grid raw = ReadBinaryImage(image);
+Grid PrepareNavigable(const std::filesystem::path& image, const Grid& raw, const ImportOptions& o,
+                      PlanKind kind, double res) {
   if (raw.Count() == 0) {
     Fail(image, "every pixel is blocked (black): navigable space must be white or transparent");
   }
@@ -185,9 +184,11 @@ ImportResult ImportFloorplan(const std::filesystem::path& image, const ImportOpt
   }
   ImportResult result;
   result.kind = ResolveKind(image, o.kind);
+  // Read the image before anything else, so a file that is no image says so first.
+  const Grid raw = ReadBinaryImage(image);
   result.source_resolution = ResolveResolution(image, o, result.kind);
   const double cell = o.cell_size;
-  const Grid interior = PrepareNavigable(image, o, result.kind, result.source_resolution);
+  const Grid interior = PrepareNavigable(image, raw, o, result.kind, result.source_resolution);
 
   const double radius_cells = o.agent_radius / cell;
   const DiscComponent comp = LargestDiscComponent(interior, radius_cells);
