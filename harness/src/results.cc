@@ -9,6 +9,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "crowdsim/csv.h"
+
 namespace crowdsim {
 namespace fs = std::filesystem;
 
@@ -19,44 +21,6 @@ std::string Fixed(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
   return buf;
-}
-
-std::string CsvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c == '\n' ? ' ' : c;
-  }
-  return out + "\"";
-}
-
-std::vector<std::string> SplitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  bool quoted = false;
-  for (size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cur += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cur += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      out.push_back(cur);
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
 }
 
 EpisodeStatus ParseStatus(const std::string& s) {
@@ -203,7 +167,7 @@ std::vector<EpisodeLine> ReadEpisodesCsv(const fs::path& path) {
       if (f.eof() && !line.empty()) break;
       continue;
     }
-    auto v = SplitCsv(line);
+    auto v = SplitCsvLine(line);
     if (v.size() != 14) continue;
     try {
       EpisodeLine e;

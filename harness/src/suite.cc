@@ -235,15 +235,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
   s.file = file;
   const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
   r.CheckKeys(root, "", {"name", "description", "episodes", "seed", "sim", "world", "humans", "robot", "columns", "rows"});
-  if (!root["name"]) {
-    r.Error(root, "name", "missing key 'name' (names the results folder results/<name>/)");
-  } else if (auto name = r.String(root["name"], "name")) {
-    const bool ok = !name->empty() && std::all_of(name->begin(), name->end(), [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-    });
-    if (!ok) r.Error(root["name"], "name", "'" + *name + "' must use only letters, digits, '_', '-', '.'");
-    s.name = *name;
-  }
+  s.name = r.Name(root, "results/<name>/");
   if (root["description"]) s.description = root["description"].Scalar();
   if (root["episodes"]) {
     if (auto e = r.Integer(root["episodes"], "episodes", 1, 10'000'000)) s.episodes = static_cast<int>(*e);

@@ -141,6 +141,23 @@ class Reader {
     return n.Scalar();
   }
 
+  /// The required top-level `name`, used as a folder name (letters, digits, '_', '-', '.');
+  /// `folder` says which folder it names, for the message.
+  std::string Name(const YAML::Node& root, const std::string& folder) {
+    const YAML::Node n = root["name"];
+    if (!n.IsDefined() || n.IsNull()) {
+      Error(root, "name", "missing key 'name' (names the output folder " + folder + ")");
+      return "";
+    }
+    auto name = String(n, "name");
+    if (!name) return "";
+    const bool ok = !name->empty() && std::all_of(name->begin(), name->end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+    });
+    if (!ok) Error(n, "name", "'" + *name + "' must use only letters, digits, '_', '-', '.'");
+    return *name;
+  }
+
   /// Loads a plugin of `kind`; on failure records the error with the choices.
   const LoadedPlugin* Plugin(const YAML::Node& n, const std::string& path, PluginKind kind) {
     auto name = String(n, path);

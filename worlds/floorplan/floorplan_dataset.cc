@@ -7,6 +7,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "crowdsim/csv.h"
 #include "floorplan_error.h"
 #include "floorplan_import.h"
 
@@ -22,16 +23,6 @@ struct Entry {
   bool curated = false;
   std::string reason;  // why not curated
 };
-
-std::string Csv(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c == '\n' ? ' ' : c;
-  }
-  return out + "\"";
-}
 
 std::string Num(double x) {
   char buf[32];
@@ -127,14 +118,14 @@ int BuildDataset(const DatasetOptions& o, std::ostream& log) {
   int n_curated = 0, n_ok = 0;
   for (const auto& e : entries) {
     const std::string name = e.ok ? e.world.name : e.image.stem().string();
-    index << Csv(name) << "," << e.source << "," << (e.ok ? "ok" : "error") << ","
-          << (e.curated ? 1 : 0) << "," << Csv(e.ok ? e.reason : e.error);
+    index << CsvField(name) << "," << e.source << "," << (e.ok ? "ok" : "error") << ","
+          << (e.curated ? 1 : 0) << "," << CsvField(e.ok ? e.reason : e.error);
     for (const auto& k : keys) index << "," << (e.ok ? Num(StatValue(e.world, k)) : "");
     index << "\n";
     n_ok += e.ok;
     if (!e.curated) continue;
     ++n_curated;
-    curated << Csv(name) << "," << e.source << "," << Num(StatValue(e.world, "free_area_m2"))
+    curated << CsvField(name) << "," << e.source << "," << Num(StatValue(e.world, "free_area_m2"))
             << "," << Num(StatValue(e.world, "rectangles_kept")) << ","
             << Num(StatValue(e.world, "kept_coverage_pct")) << ","
             << Num(StatValue(e.world, "difficulty")) << "," << name << ".yaml\n";

@@ -32,29 +32,6 @@ th{background:#f0f0f0} td.text,th.text{text-align:left}
 .figure{background:#fff;border:1px solid #e2e2e2;padding:8px;margin:12px 0} .figure svg{max-width:100%;height:auto}
 )";
 
-std::string Html(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 double Number(const std::string& s) {
   try {
     return s.empty() ? 0.0 : std::stod(s);
@@ -154,32 +131,32 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
 
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
-       << Html(suite.name) << " · crowdsim-bench report</title>\n<style>" << kCss
+       << XmlEscape(suite.name) << " · crowdsim-bench report</title>\n<style>" << kCss
        << "</style></head><body>\n";
-  html << "<h1>" << Html(suite.name) << "</h1>\n";
+  html << "<h1>" << XmlEscape(suite.name) << "</h1>\n";
   if (!suite.description.empty())
-    html << "<p class=\"meta\">" << Html(suite.description) << "</p>\n";
-  html << "<p class=\"meta\">results: " << Html(dir.string())
-       << " · suite file: " << Html(suite_file.string()) << " · " << episodes.size()
+    html << "<p class=\"meta\">" << XmlEscape(suite.description) << "</p>\n";
+  html << "<p class=\"meta\">results: " << XmlEscape(dir.string())
+       << " · suite file: " << XmlEscape(suite_file.string()) << " · " << episodes.size()
        << " episodes recorded";
   for (const char* key : {"git_commit", "finished_utc", "config_hash"}) {
-    if (auto v = JsonStringField(manifest, key)) html << " · " << key << " " << Html(*v);
+    if (auto v = JsonStringField(manifest, key)) html << " · " << key << " " << XmlEscape(*v);
   }
   html << "</p>\n";
   if (!recorded_hash.empty() && recorded_hash != suite.ConfigHash()) {
     html << "<p class=\"warn\">The suite file changed since this run (config hash "
-         << Html(suite.ConfigHash()) << " vs " << Html(recorded_hash)
+         << XmlEscape(suite.ConfigHash()) << " vs " << XmlEscape(recorded_hash)
          << "): the figures replay the current suite and may differ from the table.</p>\n";
   }
 
   // Table.
   html << "<h2>Table</h2>\n<table><tr>";
-  for (const std::string& h : table.header) html << "<th>" << Html(h) << "</th>";
+  for (const std::string& h : table.header) html << "<th>" << XmlEscape(h) << "</th>";
   html << "</tr>\n";
   for (const auto& row : table.rows) {
     html << "<tr>";
     for (const std::string& f : row)
-      html << (IsNumber(f) ? "<td>" : "<td class=\"text\">") << Html(f) << "</td>";
+      html << (IsNumber(f) ? "<td>" : "<td class=\"text\">") << XmlEscape(f) << "</td>";
     html << "</tr>\n";
   }
   html << "</table>\n";
@@ -225,7 +202,7 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
   for (size_t r = 0; r < table.rows.size(); ++r) {
     const auto& row = table.rows[r];
     const std::string label = c_label < row.size() ? row[c_label] : "";
-    html << "<h3>row " << r + 1 << ": " << Html(label) << "</h3>\n<div class=\"thumbs\">\n";
+    html << "<h3>row " << r + 1 << ": " << XmlEscape(label) << "</h3>\n<div class=\"thumbs\">\n";
     std::optional<size_t> suite_row;
     for (size_t i = 0; i < suite.rows.size(); ++i) {
       if (suite.rows[i].label == label) suite_row = i;
@@ -249,14 +226,14 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
       const std::string recorded = EpisodeStatusName(pick.line->record.status);
       const bool differs = replay.result.status != pick.line->record.status;
       html << " · episode " << pick.line->episode << "<a href=\"#" << anchor << "\"><img alt=\""
-           << Html(label) << " episode " << pick.line->episode << "\" src=\"data:image/png;base64,"
+           << XmlEscape(label) << " episode " << pick.line->episode << "\" src=\"data:image/png;base64,"
            << Base64(PngBytes(drawing, options.thumbnail_scale)) << "\"></a>";
       if (differs)
         html << "<div class=\"warn\">replay: " << EpisodeStatusName(replay.result.status)
              << ", recorded: " << recorded << "</div>";
       html << "</div>\n";
       figures << "<div class=\"figure\" id=\"" << anchor << "\"><h3>row " << *suite_row + 1 << " "
-              << Html(label) << ", episode " << pick.line->episode << " (first " << pick.outcome
+              << XmlEscape(label) << ", episode " << pick.line->episode << " (first " << pick.outcome
               << ")</h3>\n"
               << ToSvg(drawing, SvgOptions{.standalone = false}) << "</div>\n";
     }

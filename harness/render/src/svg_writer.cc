@@ -23,29 +23,6 @@ std::string Rgb(const Color& c) {
   return buf;
 }
 
-std::string Escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string Paint(const Style& s) {
   std::string out;
   if (s.fill) {
@@ -75,6 +52,29 @@ std::string Points(const std::vector<Vec2>& pts) {
 
 }  // namespace
 
+std::string XmlEscape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
 std::string ToSvg(const Drawing& d, const SvgOptions& options) {
   std::string out;
   if (options.standalone) out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
@@ -85,7 +85,7 @@ std::string ToSvg(const Drawing& d, const SvgOptions& options) {
   out += "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" + Num(d.width) + "\" height=\"" +
          Num(d.height) + "\" fill=\"" + Rgb(d.background) + "\"/>\n";
   for (const DrawItem& it : d.items) {
-    const std::string cls = "class=\"" + Escape(it.cls) + "\"";
+    const std::string cls = "class=\"" + XmlEscape(it.cls) + "\"";
     switch (it.kind) {
       case ItemKind::kRect: {
         const Vec2 a = it.points[0].cwiseMin(it.points[1]);
@@ -115,7 +115,7 @@ std::string ToSvg(const Drawing& d, const SvgOptions& options) {
                Num(it.points[0].y()) + "\" font-size=\"" + Num(it.font_size) + "\" text-anchor=\"" +
                anchor + "\"";
         if (it.bold) out += " font-weight=\"bold\"";
-        out += Paint(it.style) + ">" + Escape(it.text) + "</text>\n";
+        out += Paint(it.style) + ">" + XmlEscape(it.text) + "</text>\n";
         break;
       }
       case ItemKind::kImage: {

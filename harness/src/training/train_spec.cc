@@ -184,15 +184,7 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
   s.file = file;
   const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
   r.CheckKeys(root, "", kTopKeys);
-  if (!Present(root["name"])) {
-    r.Error(root, "name", "missing key 'name' (names the output folder results/train/<name>/)");
-  } else if (auto name = r.String(root["name"], "name")) {
-    const bool ok = !name->empty() && std::all_of(name->begin(), name->end(), [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-    });
-    if (!ok) r.Error(root["name"], "name", "'" + *name + "' must use only letters, digits, '_', '-', '.'");
-    s.name = *name;
-  }
+  s.name = r.Name(root, "results/train/<name>/");
   if (Present(root["description"])) s.description = root["description"].Scalar();
   if (Present(root["seed"])) {
     if (auto v = r.Integer(root["seed"], "seed", 0, std::numeric_limits<std::int64_t>::max())) s.seed = static_cast<std::uint64_t>(*v);
