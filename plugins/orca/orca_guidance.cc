@@ -12,13 +12,17 @@ Vec2 PreferredVelocity(const Vec2& position, const GuidanceTarget& target, doubl
 
 void Guidance::Reset(std::shared_ptr<const Roadmap> roadmap) {
   roadmap_ = std::move(roadmap);
+  Restart();
+  plans_ = 0;
+}
+
+void Guidance::Restart() {
   path_.clear();
   remaining_.clear();
   next_ = 0;
   unreachable_ = false;
   best_progress_ = kInfinity;
   stalled_ = 0;
-  plans_ = 0;
 }
 
 void Guidance::Plan(const Vec2& position, const Vec2& goal) {

@@ -33,6 +33,10 @@ class Guidance {
   /// Forgets the path and switches to `roadmap` (null: head straight to the goal).
   void Reset(std::shared_ptr<const Roadmap> roadmap);
 
+  /// Forgets the path but keeps the roadmap: the next call plans afresh from wherever the
+  /// agent is then (after it stepped off its path to let others by).
+  void Restart();
+
   /// The point to head for from `position` on the way to `goal`.
   GuidanceTarget Next(const Vec2& position, const Vec2& goal);
 

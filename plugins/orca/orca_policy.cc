@@ -4,10 +4,28 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 
 #include "crowdsim/agent_index.h"
 
 namespace crowdsim::orca {
+namespace {
+
+YieldSettings YieldSettingsFrom(const Params& params) {
+  YieldSettings settings;
+  settings.jam_steps = static_cast<int>(params.GetInt("yield_steps"));
+  settings.min_time = params.GetDouble("yield_time");
+  settings.max_time = params.GetDouble("yield_max_time");
+  if (settings.max_time < settings.min_time) {
+    throw std::invalid_argument("orca: yield_max_time (" + std::to_string(settings.max_time) +
+                                " s) is shorter than yield_time (" +
+                                std::to_string(settings.min_time) +
+                                " s); raise yield_max_time or lower yield_time");
+  }
+  return settings;
+}
+
+}  // namespace
 
 ParamSchema Schema() {
   return {
@@ -81,6 +99,36 @@ ParamSchema Schema() {
        1000,
        {},
        "decisions without progress along the path before replanning"},
+      {"yield",
+       ParamType::kBool,
+       true,
+       0,
+       1,
+       {},
+       "resolve jams in narrow passages: the agent of lower rank backs off (humans among "
+       "rectangles, with guidance; see README)"},
+      {"yield_steps",
+       ParamType::kInt,
+       std::int64_t{8},
+       1,
+       1000,
+       {},
+       "decisions of near standstill (< 0.5 m moved) against a jammed agent of higher rank "
+       "before giving way"},
+      {"yield_time",
+       ParamType::kDouble,
+       2.0,
+       0.0,
+       60.0,
+       {},
+       "s; a yield lasts at least this long, longer while the other still comes at the agent"},
+      {"yield_max_time",
+       ParamType::kDouble,
+       8.0,
+       0.0,
+       60.0,
+       {},
+       "s; a yield never lasts longer than this (>= yield_time)"},
       {"others_pref_zero",
        ParamType::kBool,
        true,
@@ -102,7 +150,9 @@ OrcaPolicy::OrcaPolicy(const Params& params)
       max_speed_factor_(params.GetDouble("max_speed_factor")),
       guidance_enabled_(params.GetBool("guidance")),
       guidance_margin_(params.GetDouble("guidance_margin")),
-      guidance_(static_cast<int>(params.GetInt("stall_steps"))) {
+      yield_enabled_(params.GetBool("yield")),
+      guidance_(static_cast<int>(params.GetInt("stall_steps"))),
+      yielding_(YieldSettingsFrom(params)) {
   if (!params.GetBool("others_pref_zero")) {
     throw std::invalid_argument(
         "orca: others_pref_zero: false is not supported. In a decentralised solve only this "
@@ -123,6 +173,7 @@ void OrcaPolicy::Reset(const EpisodeContext& ctx) {
   const double radius = ctx.role == AgentRole::kRobot ? ctx.sim.robot_radius : ctx.sim.human_radius;
   UseMap(ctx.map, radius + radius_padding_ + safety_space_);
   guidance_.Reset(roadmap_);  // a new episode: new start and goal
+  yielding_.Reset();
 }
 
 void OrcaPolicy::UseMap(const StaticMap* map, double radius) {
@@ -172,21 +223,43 @@ void OrcaPolicy::GatherNeighbours(const Observation& obs) {
   for (const Seen& s : seen_) neighbours_.push_back(s.agent);
 }
 
+GuidanceTarget OrcaPolicy::Target(const Observation& obs, double radius, double time_step) {
+  const AgentState& self = obs.self;
+  if (!guidance_enabled_) return {self.goal, true};
+  // Jams happen in the narrow passages between rectangles; in the open plane ORCA alone is
+  // CrowdNav's model and stays untouched. The robot (no ground truth) never yields.
+  if (yield_enabled_ && roadmap_ != nullptr && obs.agents != nullptr &&
+      yielding_.Observe(self.position)) {
+    yield_neighbours_.clear();
+    const auto all = obs.agents->agents();
+    for (std::size_t k = 0; k < neighbour_ids_.size(); ++k) {
+      const AgentState& a = all[neighbour_ids_[k]];
+      yield_neighbours_.push_back({a.position, a.velocity, neighbours_[k].radius, a.v_pref,
+                                   YieldRank(a, neighbour_ids_[k])});
+    }
+    Vec2 back;
+    if (yielding_.Step(self.position, radius, YieldRank(self, obs.self_index), time_step,
+                       yield_neighbours_, &back)) {
+      return {back, false};
+    }
+    if (yielding_.finished()) guidance_.Restart();  // off the old path: plan from here
+  }
+  return guidance_.Next(self.position, self.goal);
+}
+
 Action OrcaPolicy::Decide(const Observation& obs) {
   const AgentState& self = obs.self;
   const double radius = self.radius + radius_padding_ + safety_space_;
   UseMap(obs.map != nullptr ? obs.map : ctx_map_, radius);
-
-  const GuidanceTarget target = guidance_enabled_ ? guidance_.Next(self.position, self.goal)
-                                                  : GuidanceTarget{self.goal, true};
-  const Vec2 pref = PreferredVelocity(self.position, target, self.v_pref);
+  const double time_step = obs.time_step > 0.0 ? obs.time_step : ctx_time_step_;
 
   GatherNeighbours(obs);
+  const Vec2 pref = PreferredVelocity(self.position, Target(obs, radius, time_step), self.v_pref);
+
   OrcaParams params;
   params.time_horizon = time_horizon_;
   params.time_horizon_obst = time_horizon_obst_;
   params.max_speed = self.v_pref * max_speed_factor_;
-  const double time_step = obs.time_step > 0.0 ? obs.time_step : ctx_time_step_;
   const OrcaAgent me{self.position, self.velocity, radius};
   return Action{ComputeOrcaVelocity(me, neighbours_, obstacles_, params, pref, time_step)};
 }

@@ -12,6 +12,7 @@
 #include "orca_guidance.h"
 #include "orca_obstacles.h"
 #include "orca_solver.h"
+#include "orca_yielding.h"
 
 namespace crowdsim::orca {
 
@@ -31,6 +32,9 @@ class OrcaPolicy final : public Policy {
   void UseMap(const StaticMap* map, double radius);
   /// Fills neighbours_ from the ground-truth agents (humans) or the person sensor (robot).
   void GatherNeighbours(const Observation& obs);
+  /// Where to head this decision: the guidance's waypoint, or a point to back off to while
+  /// giving way in a jam (humans among rectangles only).
+  GuidanceTarget Target(const Observation& obs, double radius, double time_step);
 
   // Settings.
   double neighbor_dist_;
@@ -42,6 +46,7 @@ class OrcaPolicy final : public Policy {
   double max_speed_factor_;
   bool guidance_enabled_;
   double guidance_margin_;
+  bool yield_enabled_;
 
   // Episode state.
   const StaticMap* ctx_map_ = nullptr;
@@ -52,6 +57,8 @@ class OrcaPolicy final : public Policy {
   OrcaObstacles obstacles_;
   std::shared_ptr<const Roadmap> roadmap_;  // null without guidance or rectangles
   Guidance guidance_;
+  Yielding yielding_;
+  std::vector<YieldNeighbour> yield_neighbours_;
   std::vector<OrcaAgent> neighbours_;
   std::vector<int> neighbour_ids_;
   struct Seen {

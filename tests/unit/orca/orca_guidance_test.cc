@@ -11,6 +11,7 @@
 #include "orca_obstacles.h"
 #include "orca_roadmap.h"
 #include "orca_solver.h"
+#include "orca_yielding.h"
 
 namespace crowdsim::orca {
 namespace {
@@ -112,6 +113,119 @@ TEST(OrcaGuidanceTest, WithoutGuidanceTheSameAgentStalls) {
   double penetration = 0.0;
   int plans = 0;
   EXPECT_GT(WalkBehindWall(false, 60.0, &penetration, &plans), 5.0);
+  EXPECT_LE(penetration, 1e-9);
+}
+
+// ---- Yielding (deadlock resolution) ----
+
+TEST(OrcaYieldingTest, RankPutsWalkersBeforeSettledAgentsThenHigherIndices) {
+  AgentState walker;
+  walker.position = Vec2(0, 0);
+  walker.goal = Vec2(5, 0);
+  AgentState settled;
+  settled.position = Vec2(1, 1);
+  settled.goal = Vec2(1.2, 1);
+  EXPECT_GT(YieldRank(walker, 0), YieldRank(settled, 3));
+  EXPECT_GT(YieldRank(walker, 2), YieldRank(walker, 1));
+  EXPECT_GT(YieldRank(settled, 2), YieldRank(settled, 1));
+}
+
+TEST(OrcaYieldingTest, OnlyTheLowerRankOfAJamBacksOffAlongItsTrail) {
+  const YieldSettings settings;  // 8 decisions, 0.5 m, 2-8 s
+  Yielding low(settings);
+  Yielding high(settings);
+  // Both walked east to x = 0 and stand there, nose to nose with a jammed neighbour.
+  for (double x = -2.0; x < 0.0; x += 0.25) {
+    EXPECT_FALSE(low.Observe(Vec2(x, 0)));
+    EXPECT_FALSE(high.Observe(Vec2(x, 0)));
+  }
+  const YieldNeighbour above_low{Vec2(0.62, 0), Vec2::Zero(), kRadius, 1.0, /*rank=*/2};
+  const YieldNeighbour below_high{Vec2(0.62, 0), Vec2::Zero(), kRadius, 1.0, /*rank=*/0};
+  Vec2 target;
+  int low_steps = 0;
+  for (int step = 0; step < settings.jam_steps; ++step) {
+    if (low.Observe(Vec2::Zero()) &&
+        low.Step(Vec2::Zero(), kRadius, 1, kDt, {&above_low, 1}, &target)) {
+      break;
+    }
+    ++low_steps;
+    ASSERT_FALSE(high.Observe(Vec2::Zero()) &&
+                 high.Step(Vec2::Zero(), kRadius, 1, kDt, {&below_high, 1}, &target))
+        << "the higher rank gave way";
+  }
+  EXPECT_LT(low_steps, settings.jam_steps) << "stuck but never gave way";
+  EXPECT_TRUE(low.yielding());
+  EXPECT_LT(target.x(), 0.0) << "it should walk back the way it came";
+  EXPECT_EQ(low.yields(), 1);
+  EXPECT_EQ(high.yields(), 0);
+
+  // The other stays jammed against it: the yield ends at yield_max_time, not before.
+  int yield_steps = 1;
+  while (low.Observe(Vec2::Zero()) &&
+         low.Step(Vec2::Zero(), kRadius, 1, kDt, {&above_low, 1}, &target)) {
+    ++yield_steps;
+    ASSERT_LT(yield_steps, 1000);
+  }
+  EXPECT_TRUE(low.finished());
+  EXPECT_NEAR(yield_steps * kDt, settings.max_time, kDt);
+}
+
+// Two agents meet head-on in an 8 m long, 1 m wide passage, too narrow for them to pass each
+// other (their ways cross it from opposite corners, as in the random worlds); returns
+// how many reach their goals within `seconds`, and the worst wall penetration (m).
+int MeetInAPassage(bool yield, double seconds, double* worst_penetration) {
+  StaticMap map;
+  map.bounds = Rect::FromCorners(-10, -10, 10, 10);
+  map.rectangles = {Rect::FromCorners(-4, 0.5, 4, 3), Rect::FromCorners(-4, -3, 4, -0.5)};
+  const OrcaObstacles obstacles = OrcaObstacles::FromMap(map);
+  std::array<AgentState, 2> agents;
+  agents[0].position = Vec2(-6, -1);
+  agents[0].goal = Vec2(6, -1);
+  agents[1].position = Vec2(6, 1);
+  agents[1].goal = Vec2(-6, 1);
+  std::array<Guidance, 2> guidance;
+  std::array<Yielding, 2> yielding;
+  for (auto& g : guidance) g.Reset(SharedRoadmap(map, kRadius, 0.2));
+  std::array<bool, 2> arrived = {false, false};
+  *worst_penetration = -kInfinity;
+  for (double t = 0.0; t < seconds; t += kDt) {
+    std::array<Vec2, 2> velocities;
+    for (int i = 0; i < 2; ++i) {
+      const AgentState& self = agents[i];
+      const AgentState& other = agents[1 - i];
+      GuidanceTarget target = guidance[i].Next(self.position, self.goal);
+      const YieldNeighbour n{other.position, other.velocity, kRadius, 1.0, YieldRank(other, 1 - i)};
+      Vec2 back;
+      if (yield && yielding[i].Observe(self.position) &&
+          yielding[i].Step(self.position, kRadius, YieldRank(self, i), kDt, {&n, 1}, &back)) {
+        target = {back, false};
+      }
+      const OrcaAgent me{self.position, self.velocity, kRadius};
+      const OrcaAgent them{other.position, other.velocity, kRadius};
+      velocities[i] = ComputeOrcaVelocity(me, {&them, 1}, obstacles, OrcaParams{5.0, 5.0, 1.0},
+                                          PreferredVelocity(self.position, target, 1.0), kDt);
+    }
+    for (int i = 0; i < 2; ++i) {
+      agents[i].velocity = velocities[i];
+      agents[i].position += velocities[i] * kDt;
+      arrived[i] = arrived[i] || (agents[i].position - agents[i].goal).norm() < kRadius;
+      for (const Rect& r : map.rectangles) {
+        *worst_penetration = std::max(*worst_penetration,
+                                      kRadius - std::sqrt(RectDistanceSq(r, agents[i].position)));
+      }
+    }
+  }
+  return static_cast<int>(arrived[0]) + static_cast<int>(arrived[1]);
+}
+
+TEST(OrcaYieldingTest, HeadOnMeetingInAOneMetrePassageResolves) {
+  double penetration = 0.0;
+  // Why yielding exists: ORCA alone freezes both agents nose to nose in the passage.
+  EXPECT_EQ(MeetInAPassage(false, 60.0, &penetration), 0);
+  EXPECT_LE(penetration, 1e-9);
+  // The lower rank backs out of the passage, the other follows it out and goes by: 12 m
+  // each at 1 m/s, plus the way back out (8 m passage) and in again.
+  EXPECT_EQ(MeetInAPassage(true, 45.0, &penetration), 2);
   EXPECT_LE(penetration, 1e-9);
 }
 

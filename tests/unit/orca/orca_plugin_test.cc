@@ -45,6 +45,10 @@ TEST_F(OrcaPluginTest, DeclaresCrowdNavDefaultsAndNeedsTheMap) {
   EXPECT_DOUBLE_EQ(params_.GetDouble("max_speed_factor"), 1.0);
   EXPECT_TRUE(params_.GetBool("guidance"));
   EXPECT_TRUE(params_.GetBool("others_pref_zero"));
+  EXPECT_TRUE(params_.GetBool("yield"));
+  EXPECT_EQ(params_.GetInt("yield_steps"), 8);
+  EXPECT_DOUBLE_EQ(params_.GetDouble("yield_time"), 2.0);
+  EXPECT_DOUBLE_EQ(params_.GetDouble("yield_max_time"), 8.0);
   EXPECT_TRUE(Make()->Needs().map);
 }
 
@@ -122,6 +126,12 @@ TEST_F(OrcaPluginTest, RobotSeesPeopleThroughItsPersonSensor) {
 
 TEST_F(OrcaPluginTest, RejectsOthersPrefNonZero) {
   params_.Set("others_pref_zero", false);
+  EXPECT_THROW(Make(), PluginError);
+}
+
+TEST_F(OrcaPluginTest, RejectsAYieldCappedBelowItsMinimum) {
+  params_.Set("yield_time", 3.0);
+  params_.Set("yield_max_time", 2.0);
   EXPECT_THROW(Make(), PluginError);
 }
 
