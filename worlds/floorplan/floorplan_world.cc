@@ -10,7 +10,7 @@ namespace crowdsim::floorplan {
 
 ParamSchema Schema() {
   return {
-      {"world", ParamType::kString, std::string("worlds/gibson/easy.yaml"), -kInfinity, kInfinity,
+      {"file", ParamType::kString, std::string("worlds/gibson/easy.yaml"), -kInfinity, kInfinity,
        {}, "world file of an imported floor plan (relative: suite folder, then data root)"},
       {"split", ParamType::kString, std::string("test"), -kInfinity, kInfinity, {"train", "test"},
        "which precomputed robot start/goal pairs to use"},
@@ -26,7 +26,7 @@ std::filesystem::path ResolveWorldPath(const Params& params, const std::string& 
 }
 
 FloorplanWorld::FloorplanWorld(const Params& params) : split_(params.GetString("split")) {
-  const std::string value = params.GetString("world");
+  const std::string value = params.GetString("file");
   const std::filesystem::path path = ResolveWorldPath(params, value);
   if (!std::filesystem::exists(path)) {
     throw std::invalid_argument("floorplan: world '" + value + "' not found (looked in the suite "

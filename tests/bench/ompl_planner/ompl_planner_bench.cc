@@ -22,7 +22,7 @@ struct Worlds {
     if (source == "random_rect") {
       params.Set("obstacles", std::int64_t{3});
     } else {
-      params.Set("world", (testing::SourceDir() / "worlds/gibson" / (level + ".yaml")).string());
+      params.Set("file", (testing::SourceDir() / "worlds/gibson" / (level + ".yaml")).string());
     }
     params.Set("split", std::string("test"));
     return registry.MakeWorld(p, params);

@@ -35,7 +35,7 @@ class OmplPlannerEpisodes : public ::testing::Test {
   std::shared_ptr<WorldSource> Gibson(const std::string& level) {
     const LoadedPlugin& p = registry_.Load("floorplan", PluginKind::kWorld);
     Params params = Params::Defaults(p.schema);
-    params.Set("world", (testing::SourceDir() / "worlds/gibson" / (level + ".yaml")).string());
+    params.Set("file", (testing::SourceDir() / "worlds/gibson" / (level + ".yaml")).string());
     params.Set("split", std::string("test"));
     return registry_.MakeWorld(p, params);
   }

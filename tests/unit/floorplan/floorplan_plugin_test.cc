@@ -33,7 +33,7 @@ class FloorplanPluginTest : public ::testing::Test {
 
   std::shared_ptr<WorldSource> Make(const std::string& world, const std::string& split) {
     const LoadedPlugin& p = registry_.Load("floorplan", PluginKind::kWorld);
-    Params params({{"world", world}, {"split", split}}, dir_.path());
+    Params params({{"file", world}, {"split", split}}, dir_.path());
     return registry_.MakeWorld(p, params);
   }
 
