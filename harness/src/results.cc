@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "crowdsim/csv.h"
+#include "crowdsim/version.h"
 
 namespace crowdsim {
 namespace fs = std::filesystem;
@@ -232,8 +233,8 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   os << "  \"suite\": " << JsonString(suite.name) << ",\n";
   os << "  \"suite_file\": " << JsonString(suite.file.string()) << ",\n";
   os << "  \"description\": " << JsonString(suite.description) << ",\n";
-  os << "  \"crowdsim_version\": " << JsonString(CROWDSIM_VERSION) << ",\n";
-  os << "  \"git_commit\": " << JsonString(CROWDSIM_GIT_COMMIT) << ",\n";
+  os << "  \"crowdsim_version\": " << JsonString(Version()) << ",\n";
+  os << "  \"git_commit\": " << JsonString(GitCommit()) << ",\n";
   os << "  \"compiler\": " << JsonString(std::string(__VERSION__)) << ",\n";
   os << "  \"config_hash\": " << JsonString(suite.ConfigHash()) << ",\n";
   os << "  \"seed\": " << suite.seed << ",\n";
@@ -296,10 +297,10 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   return os.str();
 }
 
-std::string ReadManifestConfigHash(const fs::path& path) {
+std::string ReadManifestField(const fs::path& path, const std::string& field) {
   std::ifstream f(path);
   std::string line;
-  const std::string key = "\"config_hash\": \"";
+  const std::string key = "\"" + field + "\": \"";
   while (std::getline(f, line)) {
     const auto p = line.find(key);
     if (p != std::string::npos) {

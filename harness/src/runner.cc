@@ -14,6 +14,7 @@
 
 #include "crowdsim/episode.h"
 #include "crowdsim/row_instance.h"
+#include "crowdsim/version.h"
 
 namespace crowdsim {
 namespace fs = std::filesystem;
@@ -115,7 +116,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   // Resume: keep the finished episodes of the same configuration.
   std::map<std::pair<std::string, int>, EpisodeLine> done;
   if (fs::exists(episodes_csv) && !options.fresh) {
-    const std::string stored = ReadManifestConfigHash(manifest);
+    const std::string stored = ReadManifestField(manifest, "config_hash");
     if (stored != suite.ConfigHash()) {
       throw RunError("'" + summary.out_dir.string() + "' holds results of a different configuration "
                      "of this suite (config hash " + (stored.empty() ? "unknown" : stored) +
@@ -124,6 +125,13 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
     }
     for (auto& line : ReadEpisodesCsv(episodes_csv)) {
       done[{line.row, line.episode}] = std::move(line);
+    }
+    const std::string commit = ReadManifestField(manifest, "git_commit");
+    if (!done.empty() && options.progress && commit != GitCommit()) {
+      std::fprintf(stderr,
+                   "note: resuming %zu stored episodes made by commit %s; this is %s. Pass --fresh "
+                   "to rerun them with this build.\n",
+                   done.size(), commit.empty() ? "unknown" : commit.c_str(), GitCommit());
     }
   }
   // Rewrite the stored lines cleanly (drops a line cut short by a crash), then append.

@@ -52,8 +52,9 @@ struct RunFacts {
 std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& rows,
                                const RunFacts& facts);
 
-/// Reads the config_hash recorded in a manifest.json ("" if absent or unreadable).
-std::string ReadManifestConfigHash(const std::filesystem::path& path);
+/// Reads a top-level string field (e.g. "config_hash", "git_commit") of a manifest.json
+/// ("" if absent or unreadable).
+std::string ReadManifestField(const std::filesystem::path& path, const std::string& key);
 
 /// Writes text to `path` atomically (temporary file, then rename).
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
