@@ -15,8 +15,9 @@ usage:
   crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet]
       runs a suite; writes DIR/table.md, table.csv, episodes.csv, manifest.json
       (DIR defaults to results/<suite name>/); rerunning resumes finished episodes
-  crowdsim-bench validate SUITE.yaml...
-      checks suites without running them; reports every error with file:line:col
+  crowdsim-bench validate FILE.yaml...
+      checks suites (and training files) without running them; reports every error with
+      file:line:col
   crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--quiet]
       trains a learned policy (cadrl, sarl): imitation of ORCA, then RL; writes
       DIR/weights.pt, best.pt, il.pt, training_log.csv (DIR defaults to results/train/<name>/);

@@ -1,5 +1,6 @@
 // run, validate and list-plugins.
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <thread>
 
@@ -8,6 +9,7 @@
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/runner.h"
 #include "crowdsim/suite.h"
+#include "crowdsim/training/train_spec.h"
 
 namespace crowdsim::cli {
 namespace {
@@ -20,6 +22,17 @@ std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& regis
     std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file << "\n";
   }
   return std::move(r.suite);
+}
+
+/// A training file has a top-level `training` or `policy` key (a suite has `rows`).
+bool LooksLikeTrainingFile(const std::string& file) {
+  std::ifstream f(file);
+  std::string line;
+  while (std::getline(f, line)) {
+    if (line.starts_with("training:") || line.starts_with("policy:")) return true;
+    if (line.starts_with("rows:")) return false;
+  }
+  return false;
 }
 
 }  // namespace
@@ -53,10 +66,22 @@ int RunCommand(const std::vector<std::string>& args) {
 
 int ValidateCommand(const std::vector<std::string>& args) {
   const Args a = Args::Parse(args, {}, {});
-  if (a.positional.empty()) throw UsageError("validate needs at least one suite file");
+  if (a.positional.empty()) throw UsageError("validate needs at least one suite or training file");
   int status = 0;
   for (const auto& file : a.positional) {
     PluginRegistry registry;
+    if (LooksLikeTrainingFile(file)) {
+      training::TrainSpecLoadResult loaded = training::LoadTrainSpec(file, registry);
+      if (!loaded.spec) {
+        for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
+        std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
+                  << " in " << file << "\n";
+        status = 2;
+      } else {
+        std::cout << file << ": ok (training file: " << loaded.spec->policy.plugin << ")\n";
+      }
+      continue;
+    }
     auto suite = LoadOrReport(file, registry);
     if (!suite) {
       status = 2;

@@ -2,8 +2,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "../src/training/train_spec.h"
-#include "../src/training/trainer.h"
+#include "crowdsim/training/train_spec.h"
+#include "crowdsim/training/trainer.h"
 #include "cli_args.h"
 #include "commands.h"
 

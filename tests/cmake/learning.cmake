@@ -5,7 +5,7 @@ if(CROWDSIM_WITH_TORCH)
     add_library(crowdsim_learning_test_util STATIC
       ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/learning_test_util.cc)
     target_include_directories(crowdsim_learning_test_util PUBLIC
-      ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning "${CMAKE_SOURCE_DIR}/harness/src")
+      ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning)
     target_link_libraries(crowdsim_learning_test_util PUBLIC crowdsim_core crowdsim_test_support
       crowdsim_value_rl)
     target_compile_options(crowdsim_learning_test_util PRIVATE ${CROWDSIM_WARNINGS})

@@ -1,4 +1,4 @@
-#include "train_spec.h"
+#include "crowdsim/training/train_spec.h"
 
 #include <yaml-cpp/yaml.h>
 

@@ -1,4 +1,4 @@
-#include "trainer.h"
+#include "crowdsim/training/trainer.h"
 
 #include <algorithm>
 #include <atomic>

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "trainer.h"
+#include "crowdsim/training/trainer.h"
 
 namespace crowdsim::training {
 

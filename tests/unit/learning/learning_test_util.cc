@@ -5,7 +5,7 @@
 
 #include "crowdsim/plugin_registry.h"
 #include "state_encoding.h"
-#include "training/train_spec.h"
+#include "crowdsim/training/train_spec.h"
 #include "value_policy.h"
 
 namespace crowdsim::testing {

@@ -7,7 +7,7 @@
 
 #include "crowdsim/trainable.h"
 #include "temp_dir.h"
-#include "training/trainer.h"
+#include "crowdsim/training/trainer.h"
 
 namespace crowdsim::testing {
 

@@ -5,7 +5,7 @@
 #include "crowdsim/plugin_registry.h"
 #include "learning_test_util.h"
 #include "test_paths.h"
-#include "training/train_spec.h"
+#include "crowdsim/training/train_spec.h"
 
 namespace crowdsim::testing {
 namespace {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "crowdsim/plugin_registry.h"
-#include "train_spec.h"
+#include "crowdsim/training/train_spec.h"
 
 namespace crowdsim::training {
 
