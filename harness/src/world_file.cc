@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -54,17 +55,117 @@ std::vector<StartGoal> Pairs(const std::string& file, const YAML::Node& n, const
   return out;
 }
 
+// parent[key] as a whole number >= 1; `path` names it in messages.
+int PositiveInt(const std::string& file, const YAML::Node& parent, const char* key,
+                const std::string& path) {
+  const YAML::Node n = parent[key];
+  if (!n) Fail(file, parent, "missing key '" + path + "' (a whole number >= 1)");
+  int v = 0;
+  try {
+    v = n.as<int>();
+  } catch (const YAML::Exception&) {
+    Fail(file, n, "'" + path + "' must be a whole number >= 1");
+  }
+  if (v < 1) Fail(file, n, "'" + path + "' must be a whole number >= 1, got " + std::to_string(v));
+  return v;
+}
+
+// One run-length row (world_file.h): appends its `width` cells to `cells`.
+void ParseMaskRow(const std::string& file, const YAML::Node& n, int row, int width,
+                  std::vector<unsigned char>* cells) {
+  const std::string key = "mask.rows[" + std::to_string(row) + "]";
+  std::string text;
+  try {
+    text = n.as<std::string>();
+  } catch (const YAML::Exception&) {
+    Fail(file, n, "'" + key + "' must be a string of run lengths, e.g. \"5 12 3 7\"");
+  }
+  // Whole numbers separated by single spaces, nothing else.
+  bool well_formed = !text.empty() && text.front() != ' ' && text.back() != ' ';
+  for (size_t i = 0; well_formed && i < text.size(); ++i) {
+    const bool digit = text[i] >= '0' && text[i] <= '9';
+    well_formed = digit || (text[i] == ' ' && text[i - 1] != ' ');
+  }
+  if (!well_formed) {
+    Fail(file, n, "'" + key + "' must be whole numbers separated by single spaces (run lengths "
+                  "alternating blocked, navigable, ...), got \"" + text + "\"");
+  }
+  long sum = 0;
+  int runs = 0;
+  for (size_t i = 0; i < text.size(); ++i, ++runs) {
+    long run = 0;
+    for (; i < text.size() && text[i] != ' '; ++i) {
+      run = std::min<long>(10 * run + (text[i] - '0'), long(width) + 1);  // no overflow
+    }
+    if (run == 0 && runs > 0) {
+      Fail(file, n, "'" + key + "': run " + std::to_string(runs + 1) +
+                        " is 0 (only the first run, blocked, may be 0)");
+    }
+    sum += run;
+    if (sum > width) break;
+    cells->insert(cells->end(), static_cast<size_t>(run), runs % 2 == 0 ? 0 : 1);
+  }
+  if (sum != width) {
+    Fail(file, n, "'" + key + "': the runs add up to " +
+                      (sum > width ? "more than" : std::to_string(sum) + " cells, not") +
+                      " the mask width " + std::to_string(width));
+  }
+}
+
+std::shared_ptr<const NavigableMask> ParseMask(const std::string& file, const YAML::Node& n) {
+  if (!n.IsMap()) {
+    Fail(file, n, "'mask' must be a map with resolution, origin, width, height, rows");
+  }
+  for (const auto& kv : n) {
+    const std::string key = kv.first.as<std::string>();
+    if (key != "resolution" && key != "origin" && key != "width" && key != "height" &&
+        key != "rows") {
+      Fail(file, kv.first,
+           "unknown key 'mask." + key + "' (valid: resolution, origin, width, height, rows)");
+    }
+  }
+  auto m = std::make_shared<NavigableMask>();
+  const YAML::Node res = n["resolution"];
+  if (!res) Fail(file, n, "missing key 'mask.resolution' (m per cell)");
+  try {
+    m->resolution = res.as<double>();
+  } catch (const YAML::Exception&) {
+    m->resolution = 0.0;
+  }
+  if (!(m->resolution > 0.0)) {
+    Fail(file, res, "'mask.resolution' must be a number > 0 (m per cell)");
+  }
+  if (!n["origin"]) Fail(file, n, "missing key 'mask.origin' ([x, y] of the lower-left corner)");
+  const auto origin = Numbers(file, n["origin"], 2, "mask.origin");
+  m->origin = Vec2(origin[0], origin[1]);
+  m->width = PositiveInt(file, n, "width", "mask.width");
+  m->height = PositiveInt(file, n, "height", "mask.height");
+  const YAML::Node rows = n["rows"];
+  if (!rows || !rows.IsSequence() || rows.size() != static_cast<size_t>(m->height)) {
+    Fail(file, rows ? rows : n, "'mask.rows' must be a list of " + std::to_string(m->height) +
+                                    " run-length strings (one per row, mask.height)" +
+                                    (rows && rows.IsSequence()
+                                         ? ", got " + std::to_string(rows.size())
+                                         : std::string()));
+  }
+  std::vector<unsigned char> cells;
+  cells.reserve(static_cast<size_t>(m->width) * m->height);
+  for (int r = 0; r < m->height; ++r) ParseMaskRow(file, rows[r], r, m->width, &cells);
+  m->cells = std::move(cells);
+  return m;
+}
+
 WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
   if (!root.IsMap()) Fail(file, root, "a world must be a map with bounds and rectangles");
   static const char* kKeys[] = {"format", "name", "attribution", "bounds", "rectangles",
-                                "robot_pairs", "free_points", "stats"};
+                                "robot_pairs", "free_points", "stats", "mask"};
   for (const auto& kv : root) {
     const std::string key = kv.first.as<std::string>();
     bool known = false;
     for (const char* k : kKeys) known = known || key == k;
     if (!known) {
       Fail(file, kv.first, "unknown key '" + key + "' (valid: format, name, attribution, bounds, "
-                           "rectangles, robot_pairs, free_points, stats)");
+                           "rectangles, robot_pairs, free_points, stats, mask)");
     }
   }
   WorldFile w;
@@ -91,6 +192,7 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
       w.stats.emplace_back(kv.first.as<std::string>(), kv.second.as<double>());
     }
   }
+  if (const auto mask = root["mask"]) w.mask = ParseMask(file, mask);
   return w;
 }
 
@@ -121,6 +223,37 @@ std::string Quote(const std::string& s) {
     out += c;
   }
   return out + "\"";
+}
+
+// The mask section (world_file.h): one run-length string per row, top row first.
+void EmitMask(const NavigableMask& m, const std::string& world, const std::string& indent,
+              std::ostream& os) {
+  if (m.width < 1 || m.height < 1 || m.cells.size() != static_cast<size_t>(m.width) * m.height) {
+    throw WorldFileError("world '" + world + "': mask of " + std::to_string(m.width) + " x " +
+                         std::to_string(m.height) + " cells holds " +
+                         std::to_string(m.cells.size()) + " values");
+  }
+  os << indent << "mask:\n";
+  os << indent << "  resolution: " << Num(m.resolution) << "\n";
+  os << indent << "  origin: [" << Num(m.origin.x()) << ", " << Num(m.origin.y()) << "]\n";
+  os << indent << "  width: " << m.width << "\n";
+  os << indent << "  height: " << m.height << "\n";
+  os << indent << "  rows:\n";
+  for (int r = 0; r < m.height; ++r) {
+    os << indent << "    - \"";
+    bool navigable = false;  // the first run counts blocked cells
+    int run = 0;
+    for (int c = 0; c < m.width; ++c) {
+      if (m.Navigable(r, c) == navigable) {
+        ++run;
+        continue;
+      }
+      os << run << ' ';
+      navigable = !navigable;
+      run = 1;
+    }
+    os << run << "\"\n";
+  }
 }
 
 void Emit(const WorldFile& w, const std::string& indent, bool first_dash, std::ostream& os) {
@@ -155,6 +288,7 @@ void Emit(const WorldFile& w, const std::string& indent, bool first_dash, std::o
     os << indent << "stats:\n";
     for (const auto& [k, v] : w.stats) os << indent << "  " << k << ": " << Num(v) << "\n";
   }
+  if (w.mask) EmitMask(*w.mask, w.name, indent, os);
 }
 
 void WriteText(const std::string& text, const std::filesystem::path& path) {
@@ -177,6 +311,7 @@ StaticMap WorldFile::ToStaticMap() const {
   m.bounds = bounds;
   m.rectangles = rectangles;
   m.attribution = attribution;
+  m.mask = mask;
   return m;
 }
 

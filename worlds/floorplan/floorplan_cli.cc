@@ -129,9 +129,16 @@ int Preview(const std::vector<std::string>& args) {
   const int pairs = p.options.count("--pairs") ? static_cast<int>(ToInt("--pairs", p.options.at("--pairs"))) : 40;
   ImportResult source;
   PreviewMask mask;
+  Grid stored;
+  if (world.mask && !p.options.count("--image")) {
+    const NavigableMask& m = *world.mask;
+    stored = Grid(m.width, m.height);
+    for (size_t i = 0; i < m.cells.size(); ++i) stored.cells[i] = m.cells[i] ? 1 : 0;
+    mask = PreviewMask{&stored, RasterFrame{m.origin, m.resolution, m.height}};
+  }
   if (p.options.count("--image")) {
-    // The world keeps no mask: import the source again with the world's settings (the mask
-    // does not depend on the sampling, so a single pair is enough).
+    // Import the source again with the world's settings (for worlds written without a mask,
+    // or to check the source; the mask does not depend on the sampling, so one pair is enough).
     const std::filesystem::path image = p.options.at("--image");
     ImportOptions o;
     o.kind = StatValue(world, "kind_navmesh") > 0.5 ? PlanKind::kNavmesh : PlanKind::kOutline;

@@ -152,6 +152,17 @@ Grid PrepareNavigable(const std::filesystem::path& image, const Grid& raw, const
 
 }  // namespace
 
+std::shared_ptr<const NavigableMask> ToNavigableMask(const Grid& mask, const RasterFrame& frame) {
+  auto m = std::make_shared<NavigableMask>();
+  m->width = mask.width;
+  m->height = mask.height;
+  m->resolution = frame.cell_size;
+  m->origin = frame.origin;
+  m->cells.reserve(mask.cells.size());
+  for (const std::uint8_t c : mask.cells) m->cells.push_back(c ? 1 : 0);
+  return m;
+}
+
 double MetadataResolution(const std::filesystem::path& image) {
   const auto meta = image.parent_path().parent_path() / "maps_metadata" /
                     (image.stem().string() + ".yaml");
@@ -220,6 +231,7 @@ ImportResult ImportFloorplan(const std::filesystem::path& image, const ImportOpt
     world.attribution = Format(kHm3dAttribution, BaseName(image));
   }
   world.bounds = Rect{result.frame.origin, result.frame.origin + cell * Vec2(w, h)};
+  world.mask = ToNavigableMask(result.mask, result.frame);
   long kept_cells = 0;
   for (int k = 0; k < kept; ++k) {
     const CellRect& r = all[k];

@@ -7,10 +7,12 @@
 //   largest component for a 0.3 m disc -> navigable mask (everything else blocked)
 //   crop to the mask + margin -> exact greedy rectangles of the blocked area, keep N largest
 //   sample test pairs, disjoint train pairs, free points; statistics.
+//   The world file carries the navigable mask (its `mask:` section), so renders draw it.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,7 +50,7 @@ struct ImportOptions {
 
 /// One import: the world file and what the report, the preview and the dataset need.
 struct ImportResult {
-  WorldFile world;
+  WorldFile world;                      ///< world.mask holds `mask` (the one sampled from)
   PlanKind kind = PlanKind::kOutline;   ///< the resolved kind
   double source_resolution = 0.0;       ///< m/px used
   Grid mask;                            ///< navigable mask of the world (cropped)
@@ -63,6 +65,9 @@ ImportResult ImportFloorplan(const std::filesystem::path& image, const ImportOpt
 /// Metres per pixel from maps_metadata/<stem>.yaml next to the image's maps/ folder (Gibson
 /// layout); 0 when there is no such file. Throws FloorplanError when it exists but is bad.
 double MetadataResolution(const std::filesystem::path& image);
+
+/// The world-file form of a navigable mask lying at `frame` (cell size = resolution).
+std::shared_ptr<const NavigableMask> ToNavigableMask(const Grid& mask, const RasterFrame& frame);
 
 /// Value of stat `key` in `world` (throws FloorplanError when absent).
 double StatValue(const WorldFile& world, const std::string& key);

@@ -10,7 +10,7 @@
 
 namespace crowdsim::floorplan {
 
-/// Optional mask drawn under the rectangles (from re-importing the source image).
+/// Optional mask drawn under the rectangles (the world's own, or a re-import of its source).
 struct PreviewMask {
   const Grid* mask = nullptr;  ///< navigable cells; null = no mask
   RasterFrame frame;

@@ -9,11 +9,24 @@
 //   robot_pairs: {train: [[sx, sy, gx, gy], ...], test: [...]}
 //   free_points: [[x, y], ...]      # sampled free space for humans (floor plans)
 //   stats: {free_area_m2: 61.2, ...}
+//   mask:                           # optional navigable raster (floor plans), see below
+//     resolution: 0.1000            # m per cell
+//     origin: [x, y]                # lower-left corner of the raster (m)
+//     width: W
+//     height: H
+//     rows:                         # H strings, the first is the top row (max y)
+//       - "5 12 3 7"
+//
+// Mask rows are run lengths: whole numbers separated by single spaces that alternate blocked,
+// navigable, blocked, ... starting with blocked (the first run is 0 when the row starts
+// navigable; no other run is 0) and sum to W. "5 12 3 7" with W = 27 is 5 blocked cells, 12
+// navigable, 3 blocked, 7 navigable. A fully blocked row is "W".
 //
 // A world set file holds many layouts: `format: crowdsim-world-set/1`, `worlds: [<world>...]`.
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -42,8 +55,9 @@ struct WorldFile {
   std::vector<StartGoal> test_pairs;
   std::vector<Vec2> free_points;
   std::vector<std::pair<std::string, double>> stats;  ///< in file order
+  std::shared_ptr<const NavigableMask> mask;  ///< navigable raster (floor plans); may be null
 
-  /// The static map of this world (rectangles and bounds).
+  /// The static map of this world (rectangles, bounds and the mask when there is one).
   StaticMap ToStaticMap() const;
 };
 

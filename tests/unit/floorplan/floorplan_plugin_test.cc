@@ -82,6 +82,31 @@ TEST_F(FloorplanPluginTest, SameRequestSameScenarioFromManyThreads) {
   EXPECT_EQ(a.map, b.map);  // one immutable map shared by every episode
 }
 
+// The world file's mask reaches the episode's map, so renders draw it under the rectangles.
+TEST_F(FloorplanPluginTest, StaticMapCarriesTheWorldsMask) {
+  ASSERT_TRUE(world_.mask);
+  const auto w = Make("room.yaml", "test");
+  ScenarioRequest req;
+  req.num_humans = 2;
+  const Scenario s = w->Make(req);
+  ASSERT_TRUE(s.map->mask);
+  const NavigableMask& m = *s.map->mask;
+  EXPECT_EQ(m.width, world_.mask->width);
+  EXPECT_EQ(m.height, world_.mask->height);
+  EXPECT_EQ(m.cells, world_.mask->cells);
+  EXPECT_DOUBLE_EQ(m.resolution, 0.1);
+  // The mask spans the world's bounds (the import crops both to the same window).
+  EXPECT_NEAR(m.origin.x(), s.map->bounds.min.x(), 1e-9);
+  EXPECT_NEAR(m.origin.y(), s.map->bounds.min.y(), 1e-9);
+  EXPECT_NEAR(m.origin.x() + m.width * m.resolution, s.map->bounds.max.x(), 1e-9);
+  EXPECT_NEAR(m.origin.y() + m.height * m.resolution, s.map->bounds.max.y(), 1e-9);
+  // The robot starts on a navigable cell (row 0 at max y).
+  const int col = static_cast<int>((s.robot_start.x() - m.origin.x()) / m.resolution);
+  const int row =
+      m.height - 1 - static_cast<int>((s.robot_start.y() - m.origin.y()) / m.resolution);
+  EXPECT_TRUE(m.Navigable(row, col));
+}
+
 TEST_F(FloorplanPluginTest, MissingWorldIsAClearError) {
   try {
     Make("no/such/world.yaml", "test");

@@ -118,6 +118,32 @@ TEST(ImportTest, PairsAreFreeFarApartReachableAndDisjoint) {
   EXPECT_GE(StatValue(r.world, "tortuosity_mean"), 1.0);
 }
 
+// The world file carries the mask the samples were drawn in, at the world's position.
+TEST(ImportTest, WorldCarriesTheNavigableMask) {
+  TempDir dir;
+  const ImportResult r = ImportFloorplan(RoomPlan(dir), Small());
+  ASSERT_TRUE(r.world.mask);
+  const NavigableMask& m = *r.world.mask;
+  ASSERT_EQ(m.width, r.mask.width);
+  ASSERT_EQ(m.height, r.mask.height);
+  EXPECT_EQ(m.origin, r.frame.origin);
+  EXPECT_DOUBLE_EQ(m.resolution, r.frame.cell_size);
+  for (size_t i = 0; i < m.cells.size(); ++i) ASSERT_EQ(m.cells[i] != 0, r.mask.cells[i] != 0) << i;
+  EXPECT_NEAR(r.mask.Count() * 0.01, StatValue(r.world, "free_area_m2"), 1e-9);
+  // Through the file and back: the same cells.
+  WriteWorldFile(r.world, dir.path() / "w.yaml");
+  const WorldFile back = ReadWorldFile(dir.path() / "w.yaml");
+  ASSERT_TRUE(back.mask);
+  EXPECT_EQ(back.mask->cells, m.cells);
+  EXPECT_EQ(back.mask->origin, m.origin);
+  // Every free point lies on a navigable cell.
+  for (const Vec2& p : back.free_points) {
+    const int col = static_cast<int>((p.x() - m.origin.x()) / m.resolution);
+    const int row = m.height - 1 - static_cast<int>((p.y() - m.origin.y()) / m.resolution);
+    EXPECT_TRUE(m.Navigable(row, col)) << p.transpose();
+  }
+}
+
 TEST(ImportTest, SameInputSameFile) {
   TempDir dir;
   const auto plan = RoomPlan(dir);
@@ -192,6 +218,8 @@ TEST(ImportTest, CliWritesNothingOnError) {
   const auto svg = dir.path() / "w.svg";
   EXPECT_EQ(RunFloorplanCli({"preview", out.string(), "--out", svg.string()}), 0);
   EXPECT_NE(ReadText(svg).find("<svg"), std::string::npos);
+  // The preview draws the world's own mask; no source image needed.
+  EXPECT_NE(ReadText(svg).find("<image "), std::string::npos);
 }
 
 // The committed easy/medium/hard worlds are exactly what the importer makes from the source.
@@ -214,6 +242,7 @@ TEST(CommittedWorldsTest, ReimportGivesIdenticalFiles) {
     const ImportResult r = ImportFloorplan(maps / (world.name + ".png"), o);
     WriteWorldFile(r.world, dir.path() / "again.yaml");
     EXPECT_EQ(ReadText(dir.path() / "again.yaml"), ReadText(committed)) << level;
+    EXPECT_TRUE(world.mask) << level;  // renders draw it
   }
 }
 

@@ -249,5 +249,30 @@ TEST(EpisodeFigure, ReplayedSuiteEpisodeIsDeterministicAndShowsTheLidar) {
   EXPECT_EQ(both.Count("trajectory robot"), 2);
 }
 
+// A floor-plan episode (gibson_baselines.yaml, the easy world): its world file carries the
+// navigable mask, and the figure paints it once, first (under the rectangles), over the world.
+TEST(EpisodeFigure, ReplayedFloorPlanEpisodeShowsTheMaskLayer) {
+  PluginRegistry registry;
+  SuiteLoadResult loaded =
+      LoadSuite(crowdsim::testing::SourceDir() / "suites/gibson_baselines.yaml", registry);
+  ASSERT_TRUE(loaded.suite) << (loaded.errors.empty() ? "" : loaded.errors[0].Format());
+  const ReplayedEpisode e = ReplayForFigure(*loaded.suite, 0, 0, registry);
+  ASSERT_TRUE(e.scenario.map && e.scenario.map->mask);
+  const NavigableMask& m = *e.scenario.map->mask;
+  EXPECT_EQ(m.cells.size(), static_cast<size_t>(m.width) * m.height);
+  EXPECT_NEAR(m.origin.x(), e.scenario.map->bounds.min.x(), 1e-9);
+  EXPECT_NEAR(m.origin.y() + m.height * m.resolution, e.scenario.map->bounds.max.y(), 1e-9);
+  const Drawing d = DrawEpisode(MakeFigure(*loaded.suite, e));
+  ASSERT_EQ(d.Count("mask"), 1);
+  EXPECT_EQ(d.items.front().cls, "mask");  // under the rectangles
+  EXPECT_EQ(d.items.front().image->width, m.width);
+  EXPECT_EQ(d.items.front().image->height, m.height);
+  const std::string svg = ToSvg(d);
+  EXPECT_EQ(CountOf(svg, "<image class=\"mask\""), 1);
+  EXPECT_LT(svg.find("<image class=\"mask\""), svg.find("<rect class=\"obstacle\""));
+  EXPECT_EQ(CountOf(svg, "<rect class=\"obstacle\""),
+            static_cast<int>(e.scenario.map->rectangles.size()));
+}
+
 }  // namespace
 }  // namespace crowdsim::render
