@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
               << "' (valid: run, validate, train, floorplan, render, report, list-plugins, help)\n\n" << kUsage;
     return 2;
   } catch (const crowdsim::cli::UsageError& e) {
-    std::cerr << "error: " << e.what() << "\n\n" << kUsage;
+    std::cerr << "error: " << e.what() << "\n(run `crowdsim-bench help` for the usage of every command)\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
