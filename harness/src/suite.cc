@@ -111,6 +111,14 @@ void ReadSensors(Reader& r, const YAML::Node& n, const std::string& path, const 
   }
 }
 
+void CanonicalSim(const SimConfig& sim, std::ostream& os) {
+  os << "sim=" << sim.time_step << "," << sim.time_limit << "," << sim.goal_radius << ","
+     << sim.discomfort_dist << "," << sim.robot_radius << "," << sim.robot_v_pref << ","
+     << sim.human_radius << "," << sim.human_v_pref << "," << sim.robot_visible << ","
+     << sim.success_reward << "," << sim.collision_penalty << ","
+     << sim.discomfort_penalty_factor << "," << sim.gamma << "\n";
+}
+
 void Canonical(const PluginUse& u, std::ostream& os) {
   os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
   for (const auto& [k, v] : u.params.values()) os << k << "=" << FormatParamValue(v) << ";";
@@ -293,11 +301,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
   }
   std::ostringstream os;
   os << "seed=" << s.seed << "\n";
-  os << "sim=" << s.sim.time_step << "," << s.sim.time_limit << "," << s.sim.goal_radius << ","
-     << s.sim.discomfort_dist << "," << s.sim.robot_radius << "," << s.sim.robot_v_pref << ","
-     << s.sim.human_radius << "," << s.sim.human_v_pref << "," << s.sim.robot_visible << ","
-     << s.sim.success_reward << "," << s.sim.collision_penalty << ","
-     << s.sim.discomfort_penalty_factor << "," << s.sim.gamma << "\n";
+  CanonicalSim(s.sim, os);
   for (const auto& row : s.rows) {
     os << "row " << row.label << ": ";
     Canonical(row.policy, os);

@@ -277,5 +277,7 @@ void ReadSensors(Reader& r, const YAML::Node& n, const std::string& path, const 
 
 /// Writes a plugin use (name and every parameter value) into a canonical config text.
 void Canonical(const PluginUse& u, std::ostream& os);
+/// Appends the canonical text of the simulation settings (one line).
+void CanonicalSim(const SimConfig& sim, std::ostream& os);
 
 }  // namespace crowdsim::suite_internal

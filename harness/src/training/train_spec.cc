@@ -136,11 +136,7 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
 std::string Canonical(const TrainSpec& s) {
   std::ostringstream os;
   os << "seed=" << s.seed << "\n";
-  os << "sim=" << s.sim.time_step << "," << s.sim.time_limit << "," << s.sim.goal_radius << ","
-     << s.sim.discomfort_dist << "," << s.sim.robot_radius << "," << s.sim.robot_v_pref << ","
-     << s.sim.human_radius << "," << s.sim.human_v_pref << "," << s.sim.robot_visible << ","
-     << s.sim.success_reward << "," << s.sim.collision_penalty << ","
-     << s.sim.discomfort_penalty_factor << "," << s.sim.gamma << "\n";
+  suite_internal::CanonicalSim(s.sim, os);
   os << "policy:";
   suite_internal::Canonical(s.policy, os);
   os << "\nsensors:";

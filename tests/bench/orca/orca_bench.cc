@@ -52,36 +52,7 @@ void BM_OrcaDecision5Neighbours7Rects(benchmark::State& state) {
 BENCHMARK(BM_OrcaDecision5Neighbours7Rects);
 
 // RVO2's Blocks (reference facts 2.6), restarted whenever every agent is within 20 m.
-testing::TestSim MakeBlocks() {
-  OrcaObstacles obstacles;
-  const std::array<std::array<Vec2, 4>, 4> squares = {{
-      {Vec2(-10, 40), Vec2(-40, 40), Vec2(-40, 10), Vec2(-10, 10)},
-      {Vec2(10, 40), Vec2(10, 10), Vec2(40, 10), Vec2(40, 40)},
-      {Vec2(10, -40), Vec2(40, -40), Vec2(40, -10), Vec2(10, -10)},
-      {Vec2(-10, -40), Vec2(-10, -10), Vec2(-40, -10), Vec2(-40, -40)},
-  }};
-  for (const auto& square : squares) obstacles.AddPolygon(square);
-  testing::TestSim sim(0.25, std::move(obstacles));
-  auto add = [&](const Vec2& start, const Vec2& goal) {
-    testing::SimAgent agent;
-    agent.neighbor_dist = 15.0;
-    agent.max_neighbors = 10;
-    agent.params = OrcaParams{5.0, 5.0, 2.0};
-    agent.state.radius = 2.0;
-    agent.state.position = start;
-    agent.goal = goal;
-    sim.AddAgent(agent);
-  };
-  for (int i = 0; i < 5; ++i) {
-    for (int j = 0; j < 5; ++j) {
-      add(Vec2(55.0 + 10 * i, 55.0 + 10 * j), Vec2(-75, -75));
-      add(Vec2(-55.0 - 10 * i, 55.0 + 10 * j), Vec2(75, -75));
-      add(Vec2(55.0 + 10 * i, -55.0 - 10 * j), Vec2(-75, 75));
-      add(Vec2(-55.0 - 10 * i, -55.0 - 10 * j), Vec2(75, 75));
-    }
-  }
-  return sim;
-}
+testing::TestSim MakeBlocks() { return testing::MakeBlocksSim(0.25); }
 
 void BM_Blocks100AgentStep(benchmark::State& state) {
   testing::TestSim sim = MakeBlocks();

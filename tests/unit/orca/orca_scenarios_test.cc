@@ -19,6 +19,8 @@ namespace {
 
 using testing::SimAgent;
 using testing::TestSim;
+using testing::BlocksSquares;
+using testing::MakeBlocksSim;
 
 constexpr double kDt = 0.25;
 
@@ -108,44 +110,9 @@ TEST(OrcaScenarioTest, CircleOf50AgentsArrivesWithoutOverlapAndMirrorSymmetric) 
 // ---- Blocks ----
 
 TEST(OrcaScenarioTest, BlocksOf100AgentsGetWithin20mAndNeverEnterAnObstacle) {
-  OrcaObstacles obstacles;
-  const std::array<std::array<Vec2, 4>, 4> squares = {{
-      {Vec2(-10, 40), Vec2(-40, 40), Vec2(-40, 10), Vec2(-10, 10)},
-      {Vec2(10, 40), Vec2(10, 10), Vec2(40, 10), Vec2(40, 40)},
-      {Vec2(10, -40), Vec2(40, -40), Vec2(40, -10), Vec2(10, -10)},
-      {Vec2(-10, -40), Vec2(-10, -10), Vec2(-40, -10), Vec2(-40, -40)},
-  }};
-  std::vector<Rect> boxes;
-  for (const auto& square : squares) {
-    obstacles.AddPolygon(square);
-    Rect box{square[0], square[0]};
-    for (const Vec2& v : square) {
-      box.min = box.min.cwiseMin(v);
-      box.max = box.max.cwiseMax(v);
-    }
-    boxes.push_back(box);
-  }
-  for (const auto& v : obstacles.vertices()) EXPECT_TRUE(v.convex);
-
-  TestSim sim(kDt, std::move(obstacles));
-  auto add = [&](const Vec2& start, const Vec2& goal) {
-    SimAgent agent;  // setAgentDefaults(15, 10, 5, 5, 2, 2)
-    agent.neighbor_dist = 15.0;
-    agent.max_neighbors = 10;
-    agent.params = OrcaParams{5.0, 5.0, 2.0};
-    agent.state.radius = 2.0;
-    agent.state.position = start;
-    agent.goal = goal;
-    sim.AddAgent(agent);
-  };
-  for (int i = 0; i < 5; ++i) {
-    for (int j = 0; j < 5; ++j) {
-      add(Vec2(55.0 + 10 * i, 55.0 + 10 * j), Vec2(-75, -75));
-      add(Vec2(-55.0 - 10 * i, 55.0 + 10 * j), Vec2(75, -75));
-      add(Vec2(55.0 + 10 * i, -55.0 - 10 * j), Vec2(-75, 75));
-      add(Vec2(-55.0 - 10 * i, -55.0 - 10 * j), Vec2(75, 75));
-    }
-  }
+  TestSim sim = MakeBlocksSim(kDt);
+  const std::vector<Rect> boxes = BlocksSquares();
+  for (const auto& v : sim.obstacles().vertices()) EXPECT_TRUE(v.convex);
   ASSERT_EQ(sim.agents().size(), 100u);
 
   // RVO2 perturbs the preferred velocities with rand(); a fixed seed keeps the test exact.

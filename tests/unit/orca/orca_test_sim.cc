@@ -48,4 +48,54 @@ double MinPairGap(const std::vector<SimAgent>& agents, bool feasible_only) {
   return gap;
 }
 
+namespace {
+
+// Counter-clockwise, as RVO2's example adds them.
+const std::array<std::array<Vec2, 4>, 4> kBlocksSquares = {{
+    {Vec2(-10, 40), Vec2(-40, 40), Vec2(-40, 10), Vec2(-10, 10)},
+    {Vec2(10, 40), Vec2(10, 10), Vec2(40, 10), Vec2(40, 40)},
+    {Vec2(10, -40), Vec2(40, -40), Vec2(40, -10), Vec2(10, -10)},
+    {Vec2(-10, -40), Vec2(-10, -10), Vec2(-40, -10), Vec2(-40, -40)},
+}};
+
+}  // namespace
+
+std::vector<Rect> BlocksSquares() {
+  std::vector<Rect> boxes;
+  for (const auto& square : kBlocksSquares) {
+    Rect box{square[0], square[0]};
+    for (const Vec2& v : square) {
+      box.min = box.min.cwiseMin(v);
+      box.max = box.max.cwiseMax(v);
+    }
+    boxes.push_back(box);
+  }
+  return boxes;
+}
+
+TestSim MakeBlocksSim(double time_step) {
+  OrcaObstacles obstacles;
+  for (const auto& square : kBlocksSquares) obstacles.AddPolygon(square);
+  TestSim sim(time_step, std::move(obstacles));
+  auto add = [&](const Vec2& start, const Vec2& goal) {
+    SimAgent agent;  // setAgentDefaults(15, 10, 5, 5, 2, 2)
+    agent.neighbor_dist = 15.0;
+    agent.max_neighbors = 10;
+    agent.params = OrcaParams{5.0, 5.0, 2.0};
+    agent.state.radius = 2.0;
+    agent.state.position = start;
+    agent.goal = goal;
+    sim.AddAgent(agent);
+  };
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 5; ++j) {
+      add(Vec2(55.0 + 10 * i, 55.0 + 10 * j), Vec2(-75, -75));
+      add(Vec2(-55.0 - 10 * i, 55.0 + 10 * j), Vec2(75, -75));
+      add(Vec2(55.0 + 10 * i, -55.0 - 10 * j), Vec2(-75, 75));
+      add(Vec2(-55.0 - 10 * i, -55.0 - 10 * j), Vec2(75, 75));
+    }
+  }
+  return sim;
+}
+
 }  // namespace crowdsim::orca::testing

@@ -2,6 +2,7 @@
 // agent computes its new velocity from the same snapshot, then all move (RVO2's doStep).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "crowdsim/agent_index.h"
@@ -56,5 +57,12 @@ class TestSim {
 /// Smallest centre distance minus radius sum over all pairs (negative: overlap), m. With
 /// `feasible_only`, only pairs whose last solves were both feasible count.
 double MinPairGap(const std::vector<SimAgent>& agents, bool feasible_only = false);
+
+/// RVO2's Blocks example (reference facts 2.6): 100 agents (radius 2, max speed 2,
+/// neighbours 15 m / 10, horizons 5 s) in four groups crossing four 30 x 30 m squares.
+TestSim MakeBlocksSim(double time_step);
+
+/// The four squares of Blocks as rectangles (for inside-obstacle checks).
+std::vector<Rect> BlocksSquares();
 
 }  // namespace crowdsim::orca::testing
