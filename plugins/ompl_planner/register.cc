@@ -2,24 +2,12 @@
 #include "ompl_planner_policy.h"
 
 namespace crowdsim::ompl_planner {
-namespace {
 
-std::unique_ptr<Policy> Make(const Params& params) {
-  return std::make_unique<OmplPlannerPolicy>(params);
-}
-
-}  // namespace
-
-extern "C++" const PluginDescriptor kDescriptor{
-    kPluginAbiVersion,
-    PluginKind::kPolicy,
+extern "C++" const PluginDescriptor kDescriptor = PolicyPlugin<OmplPlannerPolicy>(
     "ompl_planner",
-    "global path planned with OMPL on the known map (deterministic sample budget), followed "
-    "with ORCA or an action set avoiding people",
-    &Schema,
-    &Make,
-    nullptr,
-    nullptr};
+    "global path planned with OMPL on the known map (deterministic sample budget), "
+    "followed with ORCA or an action set avoiding people",
+    &Schema);
 
 }  // namespace crowdsim::ompl_planner
 

@@ -2,22 +2,12 @@
 #include "orca_policy.h"
 
 namespace crowdsim::orca {
-namespace {
 
-std::unique_ptr<Policy> Make(const Params& params) { return std::make_unique<OrcaPolicy>(params); }
-
-}  // namespace
-
-extern "C++" const PluginDescriptor kDescriptor{
-    kPluginAbiVersion,
-    PluginKind::kPolicy,
+extern "C++" const PluginDescriptor kDescriptor = PolicyPlugin<OrcaPolicy>(
     "orca",
-    "ORCA (RVO2's algorithm, CrowdNav's wrapper) with the map's rectangles as obstacles and "
-    "roadmap guidance; the humans' default",
-    &Schema,
-    &Make,
-    nullptr,
-    nullptr};
+    "ORCA (RVO2's algorithm, CrowdNav's wrapper) with the map's rectangles as obstacles "
+    "and roadmap guidance; the humans' default",
+    &Schema);
 
 }  // namespace crowdsim::orca
 

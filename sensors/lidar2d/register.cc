@@ -2,18 +2,11 @@
 #include "lidar2d_sensor.h"
 
 namespace crowdsim::lidar2d {
-namespace {
 
-std::unique_ptr<Sensor> Make(const Params& params) {
-  return std::make_unique<Lidar2dSensor>(params);
-}
-
-}  // namespace
-
-extern "C++" const PluginDescriptor kDescriptor{
-    kPluginAbiVersion, PluginKind::kSensor, "lidar2d",
+extern "C++" const PluginDescriptor kDescriptor = SensorPlugin<Lidar2dSensor>(
+    "lidar2d",
     "planar lidar: ranges to obstacles (and humans) along a fan of beams",
-    &Schema, nullptr, &Make, nullptr};
+    &Schema);
 
 }  // namespace crowdsim::lidar2d
 

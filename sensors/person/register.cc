@@ -2,18 +2,11 @@
 #include "person_sensor.h"
 
 namespace crowdsim::person {
-namespace {
 
-std::unique_ptr<Sensor> Make(const Params& params) {
-  return std::make_unique<PersonSensor>(params);
-}
-
-}  // namespace
-
-extern "C++" const PluginDescriptor kDescriptor{
-    kPluginAbiVersion, PluginKind::kSensor, "person",
+extern "C++" const PluginDescriptor kDescriptor = SensorPlugin<PersonSensor>(
+    "person",
     "people detector: every human's position, velocity and radius in the robot frame",
-    &Schema, nullptr, &Make, nullptr};
+    &Schema);
 
 }  // namespace crowdsim::person
 

@@ -1,24 +1,12 @@
-#include "crowdnav_world.h"
 #include "crowdsim/plugin_abi.h"
+#include "crowdnav_world.h"
 
 namespace crowdsim::crowdnav {
-namespace {
 
-std::unique_ptr<WorldSource> Make(const Params& params) {
-  return std::make_unique<CrowdNavWorld>(params);
-}
-
-}  // namespace
-
-extern "C++" const PluginDescriptor kDescriptor{
-    kPluginAbiVersion,
-    PluginKind::kWorld,
+extern "C++" const PluginDescriptor kDescriptor = WorldPlugin<CrowdNavWorld>(
     "crowdnav",
     "CrowdNav's obstacle-free circle_crossing / square_crossing scenarios, exact",
-    &Schema,
-    nullptr,
-    nullptr,
-    &Make};
+    &Schema);
 
 }  // namespace crowdsim::crowdnav
 

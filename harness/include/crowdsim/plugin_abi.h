@@ -36,6 +36,37 @@ struct PluginDescriptor {
   std::unique_ptr<WorldSource> (*make_world)(const Params&);
 };
 
+/// The factory of a plugin whose object `T` is constructed from its validated Params.
+template <typename Interface, typename T>
+std::unique_ptr<Interface> ConstructFromParams(const Params& params) {
+  return std::make_unique<T>(params);
+}
+
+/// The descriptor of a policy plugin whose class `T` takes `const Params&`:
+///   const PluginDescriptor kDescriptor = PolicyPlugin<MyPolicy>("mine", "what it does", &Schema);
+template <typename T>
+constexpr PluginDescriptor PolicyPlugin(const char* name, const char* description,
+                                        ParamSchema (*schema)()) {
+  return {kPluginAbiVersion, PluginKind::kPolicy, name, description, schema,
+          &ConstructFromParams<Policy, T>, nullptr, nullptr};
+}
+
+/// The descriptor of a sensor plugin whose class `T` takes `const Params&`.
+template <typename T>
+constexpr PluginDescriptor SensorPlugin(const char* name, const char* description,
+                                        ParamSchema (*schema)()) {
+  return {kPluginAbiVersion, PluginKind::kSensor, name, description, schema,
+          nullptr, &ConstructFromParams<Sensor, T>, nullptr};
+}
+
+/// The descriptor of a world plugin whose class `T` takes `const Params&`.
+template <typename T>
+constexpr PluginDescriptor WorldPlugin(const char* name, const char* description,
+                                       ParamSchema (*schema)()) {
+  return {kPluginAbiVersion, PluginKind::kWorld, name, description, schema,
+          nullptr, nullptr, &ConstructFromParams<WorldSource, T>};
+}
+
 }  // namespace crowdsim
 
 /// Exports `descriptor` (a crowdsim::PluginDescriptor variable with external linkage in the
