@@ -9,6 +9,7 @@
 #include <torch/serialize.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "action_space.h"
@@ -137,11 +138,16 @@ Action ValuePolicy::Decide(const Observation& obs) {
   const std::vector<float> next = m.Evaluate(*m.model, m.candidate_ptrs);
   const double discount = std::pow(m.gamma, obs.time_step * obs.self.v_pref);
   m.action_values.resize(next.size());
-  size_t best = 0;
+  float top = -std::numeric_limits<float>::infinity();
   for (size_t k = 0; k < next.size(); ++k) {
     m.action_values[k] = static_cast<float>(m.outcomes[k].reward + discount * next[k]);
-    if (m.action_values[k] > m.action_values[best]) best = k;  // ties: the earliest
+    top = std::max(top, m.action_values[k]);
   }
+  // The earliest action within kTieTolerance of the best: BLAS kernels give the rows of one
+  // batch (and different CPUs the same row) values that differ in the last bits, so exact
+  // comparison would let a CPU's kernel choice break ties.
+  size_t best = 0;
+  while (best + 1 < next.size() && m.action_values[best] < top - kTieTolerance) ++best;
   return m.actions[best];
 }
 

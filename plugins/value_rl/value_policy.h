@@ -17,6 +17,9 @@ namespace crowdsim::value_rl {
 
 class ValuePolicy final : public Policy, public Trainable {
  public:
+  /// Action values closer than this to the best one are ties, which go to the earliest action.
+  static constexpr float kTieTolerance = 1e-5f;
+
   /// From validated plugin parameters (loads `weights` when given).
   ValuePolicy(Model model, const Params& params);
   /// From a configuration (tests, benchmarks).

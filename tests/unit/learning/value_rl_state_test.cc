@@ -193,9 +193,15 @@ TEST(ValuePolicyTest, PicksTheBestRewardAndTiesGoToTheEarliest) {
   ASSERT_EQ(policy.last_action_values().size(), 16u);
   EXPECT_NEAR(policy.last_action_values()[7] - policy.last_action_values()[0], 0.5, 1e-6);
 
+  // Identical candidates are valued through different batch rows, whose last bits differ on
+  // some CPUs' BLAS kernels: they still tie, and the tie goes to the earliest action.
   FixedLookahead all_equal({});
   obs.lookahead = &all_equal;
   EXPECT_EQ(policy.Decide(obs).velocity, actions[0].velocity);
+  // A real difference above the tie tolerance still wins.
+  FixedLookahead best_is_3(std::vector<double>{0, 0, 0, 1e-3});
+  obs.lookahead = &best_is_3;
+  EXPECT_EQ(policy.Decide(obs).velocity, actions[3].velocity);
 
   obs.lookahead = nullptr;
   EXPECT_THROW(policy.Decide(obs), std::runtime_error);
