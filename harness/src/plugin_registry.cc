@@ -12,8 +12,10 @@ namespace {
 constexpr const char* kPrefix = "crowdsim_";
 constexpr const char* kSuffix = ".so";
 
+/// CROWDSIM_PLUGIN_PATH's folders first (like PATH, a user's folder overrides a built-in
+/// plugin of the same name, e.g. a frozen copy for a long campaign), then the build folder.
 std::vector<fs::path> DefaultSearchDirs() {
-  std::vector<fs::path> dirs{PluginRegistry::BuildPluginDir()};
+  std::vector<fs::path> dirs;
   if (const char* env = std::getenv("CROWDSIM_PLUGIN_PATH")) {
     std::stringstream ss(env);
     std::string item;
@@ -21,6 +23,7 @@ std::vector<fs::path> DefaultSearchDirs() {
       if (!item.empty()) dirs.emplace_back(item);
     }
   }
+  dirs.push_back(PluginRegistry::BuildPluginDir());
   return dirs;
 }
 
