@@ -18,10 +18,12 @@ usage:
   crowdsim-bench validate FILE.yaml...
       checks suites (and training files) without running them; reports every error with
       file:line:col
-  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--quiet]
+  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet]
       trains a learned policy (cadrl, sarl): imitation of ORCA, then RL; writes
-      DIR/weights.pt, best.pt, il.pt, training_log.csv (DIR defaults to results/train/<name>/);
-      checkpoints every 500 episodes and on Ctrl-C; --resume continues exactly
+      DIR/weights.pt, best.pt, il.pt, training_log.csv (validation), training_episodes.csv
+      (every episode), learning_curve.svg/.png, summary.json (DIR defaults to
+      results/train/<name>/, with --seed N to results/train/<name>_seed<N>/); checkpoints
+      every 500 episodes and on Ctrl-C; --resume continues exactly
   crowdsim-bench floorplan import IMAGE [--resolution M] [--kind navmesh|outline] [--max-rectangles 30] --out WORLD.yaml
   crowdsim-bench floorplan preview WORLD.yaml [--image IMAGE] --out FILE.svg
   crowdsim-bench floorplan dataset --source DIR --out worlds/floorplans

@@ -1,7 +1,10 @@
 // train: imitation + reinforcement learning of a learned policy from a training file.
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
+#include "crowdsim/render/learning_curve.h"
 #include "crowdsim/training/train_spec.h"
 #include "crowdsim/training/trainer.h"
 #include "cli_args.h"
@@ -10,7 +13,7 @@
 namespace crowdsim::cli {
 
 int TrainCommand(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args, {"--out"}, {"--resume", "--quiet"});
+  const Args a = Args::Parse(args, {"--out", "--seed"}, {"--resume", "--quiet"});
   if (a.positional.size() != 1) throw UsageError("train needs exactly one training file");
   PluginRegistry registry;
   training::TrainSpecLoadResult loaded = training::LoadTrainSpec(a.positional[0], registry);
@@ -21,9 +24,29 @@ int TrainCommand(const std::vector<std::string>& args) {
     return 2;
   }
   training::TrainOptions options;
+  if (auto seed = a.Get("--seed")) {
+    // Another training seed of the same file: its own default folder <name>_seed<N>.
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(seed->c_str(), &end, 10);
+    if (seed->empty() || *end != '\0' || (*seed)[0] == '-') {
+      throw UsageError("--seed needs a non-negative integer, got '" + *seed + "'");
+    }
+    training::OverrideSeed(*loaded.spec, v);
+    options.out_dir = std::filesystem::path("results") / "train" / (loaded.spec->name + "_seed" + *seed);
+  }
   if (auto out = a.Get("--out")) options.out_dir = *out;
+  for (const auto& w : training::TrainSpecWarnings(*loaded.spec)) {
+    std::cerr << "warning: " << a.positional[0] << ": " << w << "\n";
+  }
   options.resume = a.Has("--resume");
   options.progress = !a.Has("--quiet");
+  options.on_files_flushed = [](const std::filesystem::path& dir, const std::string& name) {
+    try {
+      render::WriteLearningCurve(dir, name);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(std::string("learning curve not drawn: ") + e.what());
+    }
+  };
   try {
     const training::TrainSummary s = training::RunTraining(*loaded.spec, registry, options);
     std::cout << "trained " << loaded.spec->name << " in " << s.wall_seconds << " s: "

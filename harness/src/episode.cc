@@ -150,19 +150,29 @@ void Episode::DecideHumans() {
   }
 }
 
+void Episode::FillRobotObservation() {
+  robot_.heading = HeadingToGoal(robot_);
+  robot_obs_.time = time_;
+  robot_obs_.time_step = sim_.time_step;
+  robot_obs_.self = robot_;
+  robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
+  Sense(robot_, robot_obs_.frame, humans_, &robot_obs_.readings);
+  robot_obs_.map = robot_needs_.map ? scenario_.map.get() : nullptr;
+  robot_obs_.lookahead = nullptr;
+}
+
+const Observation& Episode::ObserveRobot() {
+  FillRobotObservation();
+  return robot_obs_;
+}
+
 StepInfo Episode::Step() {
   StepInfo info;
   if (done()) return info;
   const double dt = sim_.time_step;
   try {
     DecideHumans();
-    robot_.heading = HeadingToGoal(robot_);
-    robot_obs_.time = time_;
-    robot_obs_.time_step = dt;
-    robot_obs_.self = robot_;
-    robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
-    Sense(robot_, robot_obs_.frame, humans_, &robot_obs_.readings);
-    robot_obs_.map = robot_needs_.map ? scenario_.map.get() : nullptr;
+    FillRobotObservation();
     if (robot_needs_.lookahead) {
       lookahead_->Prepare();
       robot_obs_.lookahead = lookahead_.get();

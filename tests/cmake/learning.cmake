@@ -17,6 +17,10 @@ if(CROWDSIM_WITH_TORCH)
         SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/${test}.cc
         LIBS crowdsim_learning_test_util)
     endforeach()
+    # The trainer's internal pieces (value targets, replay memory, episode log, learning curve).
+    crowdsim_add_gtest(value_targets_test unit
+      SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/value_targets_test.cc)
+    target_include_directories(value_targets_test PRIVATE ${CMAKE_SOURCE_DIR}/harness/src)
   endif()
 
   if(CROWDSIM_BUILD_BENCHMARKS)

@@ -85,12 +85,17 @@ class Episode {
   const SimConfig& sim() const { return sim_; }
   /// The robot observation the last Step() gave to the robot policy.
   const Observation& last_robot_observation() const { return robot_obs_; }
+  /// The robot's observation of the current state, made now without a decision and without
+  /// lookahead (e.g. the state a timed-out episode stopped in, which a learner bootstraps from).
+  /// It replaces last_robot_observation().
+  const Observation& ObserveRobot();
 
  private:
   class StepLookahead;
   void Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
              std::vector<SensorReading>* out) const;
   void DecideHumans();
+  void FillRobotObservation();
   void Finish(EpisodeStatus status);
   void Record();
 

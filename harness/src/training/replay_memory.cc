@@ -8,7 +8,8 @@ namespace crowdsim::training {
 
 namespace {
 
-constexpr std::uint64_t kMagic = 0x31594d4552524353ULL;  // "SCRREMY1"
+constexpr std::uint64_t kMagic = 0x32594d4552524353ULL;  // "SCRREMY2": entries carry their source
+constexpr std::uint64_t kMagicV1 = 0x31594d4552524353ULL;  // before sources
 
 template <typename T>
 void Put(std::ofstream& out, const T& v) {
@@ -24,14 +25,18 @@ T Get(std::ifstream& in) {
 
 }  // namespace
 
-void ReplayMemory::Push(EncodedState state, float value) {
+void ReplayMemory::Push(EncodedState state, float value, MemorySource source) {
+  ++counts_[static_cast<std::size_t>(source)];
   if (states_.size() < capacity_) {
     states_.push_back(std::move(state));
     values_.push_back(value);
+    sources_.push_back(source);
     return;
   }
+  --counts_[static_cast<std::size_t>(sources_[position_])];
   states_[position_] = std::move(state);
   values_[position_] = value;
+  sources_[position_] = source;
   position_ = (position_ + 1) % capacity_;
 }
 
@@ -43,6 +48,7 @@ void ReplayMemory::Save(const std::filesystem::path& file) const {
   Put(out, static_cast<std::uint64_t>(states_.size()));
   for (std::size_t i = 0; i < states_.size(); ++i) {
     Put(out, values_[i]);
+    Put(out, static_cast<std::uint8_t>(sources_[i]));
     Put(out, static_cast<std::uint32_t>(states_[i].values.size()));
     out.write(reinterpret_cast<const char*>(states_[i].values.data()),
               static_cast<std::streamsize>(states_[i].values.size() * sizeof(float)));
@@ -52,7 +58,12 @@ void ReplayMemory::Save(const std::filesystem::path& file) const {
 
 void ReplayMemory::Load(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in || Get<std::uint64_t>(in) != kMagic) {
+  const auto magic = Get<std::uint64_t>(in);
+  if (in && magic == kMagicV1) {
+    throw std::runtime_error("'" + file.string() + "' is a replay memory of an older crowdsim-bench "
+                             "(without entry sources); restart that training without --resume");
+  }
+  if (!in || magic != kMagic) {
     throw std::runtime_error("'" + file.string() + "' is not a replay memory file");
   }
   capacity_ = Get<std::uint64_t>(in);
@@ -63,8 +74,16 @@ void ReplayMemory::Load(const std::filesystem::path& file) {
   }
   states_.assign(n, EncodedState{});
   values_.assign(n, 0.0f);
+  sources_.assign(n, MemorySource::kImitation);
+  counts_.fill(0);
   for (std::size_t i = 0; i < n; ++i) {
     values_[i] = Get<float>(in);
+    const auto source = Get<std::uint8_t>(in);
+    if (source >= kMemorySources) {
+      throw std::runtime_error("the replay memory file '" + file.string() + "' is damaged");
+    }
+    sources_[i] = static_cast<MemorySource>(source);
+    ++counts_[source];
     states_[i].values.resize(Get<std::uint32_t>(in));
     in.read(reinterpret_cast<char*>(states_[i].values.data()),
             static_cast<std::streamsize>(states_[i].values.size() * sizeof(float)));

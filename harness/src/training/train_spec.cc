@@ -100,7 +100,7 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
       {"epsilon_start", &t.epsilon_start, 0.0, 1.0},
       {"epsilon_end", &t.epsilon_end, 0.0, 1.0},
   };
-  std::vector<std::string> keys = {"il_policy", "il_params"};
+  std::vector<std::string> keys = {"il_policy", "il_params", "store_timeouts"};
   for (const auto& f : ints) keys.push_back(f.key);
   for (const auto& f : reals) keys.push_back(f.key);
   const bool map = Present(n) && r.IsMap(n, "training", "imitation and RL settings");
@@ -114,6 +114,19 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
     for (const auto& f : reals) {
       if (Present(n[f.key])) {
         if (auto v = r.Number(n[f.key], Reader::Child("training", f.key), f.lo, f.hi)) *f.target = *v;
+      }
+    }
+    if (const YAML::Node st = n["store_timeouts"]; Present(st)) {
+      const std::string v = st.IsScalar() ? st.Scalar() : "";
+      if (v == "off") {
+        t.store_timeouts = StoreTimeouts::kOff;
+      } else if (v == "terminal") {
+        t.store_timeouts = StoreTimeouts::kTerminal;
+      } else if (v == "bootstrap") {
+        t.store_timeouts = StoreTimeouts::kBootstrap;
+      } else {
+        r.Error(st, "training.store_timeouts",
+                "expected off, terminal or bootstrap, got " + suite_internal::Scalar(st));
       }
     }
   }
@@ -152,11 +165,42 @@ std::string Canonical(const TrainSpec& s) {
      << t.rl_episodes << "," << t.rl_learning_rate << "," << t.momentum << "," << t.epsilon_start
      << "," << t.epsilon_end << "," << t.epsilon_decay_episodes << "," << t.target_update_interval
      << "," << t.capacity << "," << t.batch_size << "," << t.train_batches << ","
-     << t.validation_interval << "," << t.validation_episodes << "\n";
+     << t.validation_interval << "," << t.validation_episodes << ",store_timeouts="
+     << ToString(t.store_timeouts) << "\n";
   return os.str();
 }
 
 }  // namespace
+
+const char* ToString(StoreTimeouts s) {
+  switch (s) {
+    case StoreTimeouts::kTerminal: return "terminal";
+    case StoreTimeouts::kBootstrap: return "bootstrap";
+    case StoreTimeouts::kOff: break;
+  }
+  return "off";
+}
+
+void OverrideSeed(TrainSpec& spec, std::uint64_t seed) {
+  spec.seed = seed;
+  spec.canonical = Canonical(spec);
+}
+
+std::vector<std::string> TrainSpecWarnings(const TrainSpec& spec) {
+  std::vector<std::string> w;
+  const TrainingSettings& t = spec.training;
+  if (t.rl_episodes > 0 && t.epsilon_decay_episodes > t.rl_episodes && t.epsilon_start != t.epsilon_end) {
+    w.push_back("training.epsilon_decay_episodes (" + std::to_string(t.epsilon_decay_episodes) +
+                ") exceeds rl_episodes (" + std::to_string(t.rl_episodes) + "): epsilon never reaches " +
+                "epsilon_end; shorten the decay or lengthen the RL phase");
+  }
+  if (t.rl_episodes > 0 && t.epsilon_end >= 0.3 && t.store_timeouts == StoreTimeouts::kOff) {
+    w.push_back("exploration stays at epsilon >= " + std::to_string(t.epsilon_end).substr(0, 4) +
+                " and timeout episodes are not stored: the RL phase is known to make models worse "
+                "than their imitation start this way (docs/training.md)");
+  }
+  return w;
+}
 
 TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry) {
   TrainSpecLoadResult result;

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <fstream>
+#include <optional>
 #include <memory>
 #include <numeric>
 #include <sstream>
@@ -13,9 +15,11 @@
 #include "crowdsim/results.h"
 #include "crowdsim/rng.h"
 #include "crowdsim/trainable.h"
+#include "episode_log.h"
 #include "replay_memory.h"
 #include "training_checkpoint.h"
 #include "training_progress.h"
+#include "value_targets.h"
 
 namespace crowdsim::training {
 namespace fs = std::filesystem;
@@ -50,19 +54,48 @@ class SignalGuard {
 
 using Clock = std::chrono::steady_clock;
 
+/// The processor's model name (summary.json: trainings are platform-sensitive).
+std::string CpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      std::string m = colon == std::string::npos ? line : line.substr(colon + 1);
+      m.erase(0, m.find_first_not_of(' '));
+      std::erase(m, '"');
+      std::erase(m, '\\');
+      return m;
+    }
+  }
+  return "unknown";
+}
+
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-bool Stored(EpisodeStatus s) {
-  return s == EpisodeStatus::kSuccess || s == EpisodeStatus::kCollisionHuman ||
-         s == EpisodeStatus::kCollisionObstacle;
+/// Where an episode's transitions go in the replay memory; nothing for an episode that is not
+/// stored. Demonstrations store successes and collisions (CrowdNav); RL episodes store
+/// timeouts too when the training says so.
+std::optional<MemorySource> SourceOf(EpisodeStatus s, bool rl, StoreTimeouts timeouts) {
+  switch (s) {
+    case EpisodeStatus::kSuccess: return rl ? MemorySource::kSuccess : MemorySource::kImitation;
+    case EpisodeStatus::kCollisionHuman:
+    case EpisodeStatus::kCollisionObstacle: return rl ? MemorySource::kCollision : MemorySource::kImitation;
+    case EpisodeStatus::kTimeout:
+      if (rl && timeouts != StoreTimeouts::kOff) return MemorySource::kTimeout;
+      return std::nullopt;
+    default: return std::nullopt;
+  }
 }
 
-/// One recorded episode: the encoded state before each decision and the step rewards.
+/// One recorded episode: the encoded state before each decision and the step rewards, and
+/// when asked for, the state it stopped in (a timeout's bootstrap).
 struct Trajectory {
   std::vector<EncodedState> states;
   std::vector<float> rewards;
+  std::optional<EncodedState> final_state;
   EpisodeResult result;
 };
 
@@ -85,7 +118,8 @@ class Trainer {
  private:
   void Build();
   Scenario MakeScenario(const char* stream, int index) const;
-  Trajectory RunEpisode(Policy* robot, const Scenario& scenario, bool encode);
+  Trajectory RunEpisode(Policy* robot, const Scenario& scenario, bool encode, bool observe_timeout_end = false);
+  void LogEpisode(const char* phase, int index, double epsilon, const Trajectory& tr, double loss);
   void Demonstrations();
   void Imitation();
   void Reinforcement();
@@ -94,6 +128,8 @@ class Trainer {
   void SaveCheckpoint();
   void LoadCheckpoint();
   void WriteSummaryJson() const;
+  void OpenEpisodeLog(std::int64_t keep_bytes);
+  void WriteLearningCurve();
   /// True when the run must stop now (signal, or the test hook's episode budget).
   bool ShouldStop() const {
     return g_signal != 0 ||
@@ -115,6 +151,7 @@ class Trainer {
   EpisodeAgents agents_;
 
   ReplayMemory memory_;
+  EpisodeLog episode_log_;
   CheckpointState state_;
   TrainingProgress progress_;
   TrainSummary summary_;
@@ -167,7 +204,8 @@ Scenario Trainer::MakeScenario(const char* stream, int index) const {
   return world_->Make(req);
 }
 
-Trajectory Trainer::RunEpisode(Policy* robot, const Scenario& scenario, bool encode) {
+Trajectory Trainer::RunEpisode(Policy* robot, const Scenario& scenario, bool encode,
+                               bool observe_timeout_end) {
   agents_.robot = robot;
   Trajectory tr;
   Episode episode(scenario, spec_.sim, agents_);
@@ -184,7 +222,24 @@ Trajectory Trainer::RunEpisode(Policy* robot, const Scenario& scenario, bool enc
     throw TrainError("episode of scenario seed " + std::to_string(scenario.seed) +
                      ": the robot policy failed: " + tr.result.error);
   }
+  if (encode && observe_timeout_end && tr.result.status == EpisodeStatus::kTimeout) {
+    tr.final_state = learner_->Encode(episode.ObserveRobot());
+  }
   return tr;
+}
+
+void Trainer::LogEpisode(const char* phase, int index, double epsilon, const Trajectory& tr, double loss) {
+  EpisodeLogRow row;
+  row.phase = phase;
+  row.index = index;
+  row.epsilon = epsilon;
+  row.outcome = EpisodeStatusName(tr.result.status);
+  row.discounted_return = tr.result.discounted_return;
+  row.steps = tr.result.steps;
+  row.loss = loss;
+  row.memory_size = memory_.size();
+  row.memory = memory_.composition();
+  episode_log_.Append(row);
 }
 
 void Trainer::Demonstrations() {
@@ -193,16 +248,11 @@ void Trainer::Demonstrations() {
   while (state_.counter < t_.il_episodes && !ShouldStop()) {
     const auto t0 = Clock::now();
     Trajectory tr = RunEpisode(teacher_.get(), MakeScenario("il", state_.counter), true);
-    if (Stored(tr.result.status)) {
-      // Monte-Carlo returns v_i = sum_t gamma'^(t - i) r_t, from the end backwards.
-      std::vector<float> values(tr.rewards.size());
-      double v = 0.0;
-      for (std::size_t i = tr.rewards.size(); i-- > 0;) {
-        v = tr.rewards[i] + discount * v;
-        values[i] = static_cast<float>(v);
-      }
-      for (std::size_t i = 0; i < values.size(); ++i) memory_.Push(std::move(tr.states[i]), values[i]);
+    if (const auto source = SourceOf(tr.result.status, false, t_.store_timeouts)) {
+      const std::vector<float> values = MonteCarloReturns(tr.rewards, discount);
+      for (std::size_t i = 0; i < values.size(); ++i) memory_.Push(std::move(tr.states[i]), values[i], *source);
     }
+    LogEpisode("demonstration", state_.counter, 0.0, tr, 0.0);
     ++state_.counter;
     ++summary_.episodes_run;
     summary_.times.demonstrations += Since(t0);
@@ -247,6 +297,13 @@ void Trainer::Imitation() {
       loss += TrainOn(std::span<const std::size_t>(order.data() + start, n));
       ++batches;
     }
+    EpisodeLogRow row;
+    row.phase = "imitation";
+    row.index = state_.counter;
+    row.loss = loss / batches;
+    row.memory_size = memory_.size();
+    row.memory = memory_.composition();
+    episode_log_.Append(row);
     ++state_.counter;
     summary_.times.imitation += Since(t0);
     std::ostringstream os;
@@ -312,18 +369,19 @@ void Trainer::Reinforcement() {
     const double epsilon = Epsilon(t_, e);
     auto t0 = Clock::now();
     learner_->SetExploration(epsilon, DeriveSeed(spec_.seed, "explore", static_cast<std::uint64_t>(e)));
-    Trajectory tr = RunEpisode(learner_policy_.get(), MakeScenario("rl", e), true);
+    const bool bootstrap_timeouts = t_.store_timeouts == StoreTimeouts::kBootstrap;
+    Trajectory tr = RunEpisode(learner_policy_.get(), MakeScenario("rl", e), true, bootstrap_timeouts);
     summary_.times.rl_episodes += Since(t0);
-    if (Stored(tr.result.status)) {
+    if (const auto source = SourceOf(tr.result.status, true, t_.store_timeouts)) {
       t0 = Clock::now();
-      // TD(0): v_i = r_i + gamma' V_target(s_{i+1}); the last step keeps its reward.
+      // TD(0): y_i = r_i + gamma' V_target(s_{i+1}). A terminal last step keeps its reward; a
+      // timeout stored as a truncation bootstraps from the state it stopped in.
       std::vector<const EncodedState*> next;
       for (std::size_t i = 1; i < tr.states.size(); ++i) next.push_back(&tr.states[i]);
+      if (tr.final_state) next.push_back(&*tr.final_state);
       const std::vector<float> v_next = next.empty() ? std::vector<float>{} : learner_->TargetValues(next);
-      for (std::size_t i = 0; i < tr.states.size(); ++i) {
-        const double v = tr.rewards[i] + (i + 1 < tr.states.size() ? discount * v_next[i] : 0.0);
-        memory_.Push(std::move(tr.states[i]), static_cast<float>(v));
-      }
+      const std::vector<float> targets = TdTargets(tr.rewards, v_next, discount);
+      for (std::size_t i = 0; i < targets.size(); ++i) memory_.Push(std::move(tr.states[i]), targets[i], *source);
       summary_.times.rl_targets += Since(t0);
     }
     t0 = Clock::now();
@@ -341,6 +399,7 @@ void Trainer::Reinforcement() {
       loss /= t_.train_batches;
     }
     summary_.times.rl_updates += Since(t0);
+    LogEpisode("rl", e, epsilon, tr, loss);
     ++state_.counter;
     ++summary_.episodes_run;
     if (state_.counter % t_.target_update_interval == 0) learner_->UpdateTargetNetwork();
@@ -366,11 +425,13 @@ void Trainer::SaveCheckpoint() {
   learner_->SaveWeights(tmp / "model.pt");
   learner_->SaveTrainingState(tmp);
   memory_.Save(tmp / "memory.bin");
+  state_.episode_log_bytes = episode_log_.Flush();
   WriteCheckpointState(tmp / "state.txt", state_);
   // The complete new checkpoint replaces the old one; LoadCheckpoint also accepts a
   // checkpoint.tmp left complete by a crash between these two lines.
   fs::remove_all(dir);
   fs::rename(tmp, dir);
+  WriteLearningCurve();
   summary_.times.checkpoints += Since(t0);
 }
 
@@ -398,12 +459,39 @@ void Trainer::LoadCheckpoint() {
   }
 }
 
+void Trainer::OpenEpisodeLog(std::int64_t keep_bytes) {
+  try {
+    episode_log_.Open(Out("training_episodes.csv"), keep_bytes);
+  } catch (const std::exception& e) {
+    throw TrainError(e.what());
+  }
+}
+
+void Trainer::WriteLearningCurve() {
+  if (!options_.on_files_flushed) return;
+  // A figure is a convenience: a failure to draw it must not stop hours of training.
+  try {
+    options_.on_files_flushed(summary_.out_dir, spec_.name);
+  } catch (const std::exception& e) {
+    progress_.Note(std::string("warning: ") + e.what());
+  }
+}
+
 void Trainer::WriteSummaryJson() const {
   const TrainTimes& t = summary_.times;
+  const TrainingSettings& p = t_;
   std::ostringstream os;
   os.precision(6);
   os << "{\n  \"name\": \"" << spec_.name << "\",\n  \"config_hash\": \"" << spec_.ConfigHash()
-     << "\",\n  \"finished\": " << (summary_.finished ? "true" : "false")
+     << "\",\n  \"seed\": " << spec_.seed
+     << ",\n  \"procedure\": {\"il_episodes\": " << p.il_episodes << ", \"il_epochs\": " << p.il_epochs
+     << ", \"rl_episodes\": " << p.rl_episodes << ", \"epsilon_start\": " << p.epsilon_start
+     << ", \"epsilon_end\": " << p.epsilon_end << ", \"epsilon_decay_episodes\": " << p.epsilon_decay_episodes
+     << ", \"store_timeouts\": \"" << ToString(p.store_timeouts) << "\", \"train_batches\": "
+     << p.train_batches << ", \"validation_interval\": " << p.validation_interval
+     << ", \"validation_episodes\": " << p.validation_episodes << "}"
+     << ",\n  \"cpu\": \"" << CpuModel() << "\""
+     << ",\n  \"finished\": " << (summary_.finished ? "true" : "false")
      << ",\n  \"phase\": " << static_cast<int>(state_.phase) << ",\n  \"counter\": " << state_.counter
      << ",\n  \"memory_size\": " << memory_.size()
      << ",\n  \"episodes_this_run\": " << summary_.episodes_run
@@ -413,7 +501,8 @@ void Trainer::WriteSummaryJson() const {
      << ", \"rl_updates\": " << t.rl_updates << ", \"validation\": " << t.validation
      << ", \"checkpoints\": " << t.checkpoints << "},\n  \"best_validation_success\": "
      << std::max(0.0, state_.best_success) << ",\n  \"best_validation_episode\": " << state_.best_episode
-     << "\n}\n";
+     << ",\n  \"best_weights\": \"best.pt: the weights after " << state_.best_episode
+     << " RL episodes (-1: no validation ran)\"\n}\n";
   WriteFileAtomically(Out("summary.json"), os.str());
 }
 
@@ -427,6 +516,7 @@ TrainSummary Trainer::Run() {
   }
   if (options_.resume) {
     LoadCheckpoint();
+    OpenEpisodeLog(state_.episode_log_bytes);
     progress_.Note("resumed from " + (summary_.out_dir / "checkpoint").string());
   } else {
     if (fs::exists(Out("checkpoint")) || fs::exists(Out("weights.pt"))) {
@@ -435,6 +525,7 @@ TrainSummary Trainer::Run() {
     }
     state_.config_hash = spec_.ConfigHash();
     learner_->InitWeights(spec_.seed);
+    OpenEpisodeLog(-1);
   }
   WriteFileAtomically(Out("training.yaml"), "# copy of " + spec_.file.string() + "\n" + spec_.canonical);
   progress_.Note(learner_->Describe());
@@ -448,6 +539,8 @@ TrainSummary Trainer::Run() {
   summary_.weights = Out("weights.pt");
   if (state_.best_episode >= 0) summary_.best_weights = Out("best.pt");
   summary_.wall_seconds = Since(start);
+  episode_log_.Flush();
+  WriteLearningCurve();
   WriteSummaryJson();
   if (g_signal != 0) {
     throw TrainingInterrupted("interrupted by signal " + std::to_string(g_signal) +

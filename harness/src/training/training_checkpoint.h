@@ -2,6 +2,7 @@
 // text file; the weights, optimiser and memory are saved next to it by their owners.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ struct CheckpointState {
   int counter = 0;  ///< episodes (demonstrations, RL) or epochs (imitation) done in `phase`
   double best_success = -1.0;  ///< best validation success so far (-1: none)
   int best_episode = -1;
+  std::int64_t episode_log_bytes = -1;  ///< flushed size of training_episodes.csv (-1: none)
   std::vector<ValidationResult> validations;
 };
 

@@ -15,6 +15,7 @@ std::filesystem::path WriteTrainFile(const TempDir& dir, const TrainFile& f, con
                      "\nparams: {sensors: " + f.sensors_param + ", lidar_beams: 15}\nsensors: " +
                      f.sensors + "\nworld: " + f.world + "\nhumans: " + f.humans + "\n";
   if (!f.training.empty()) text += "training: " + f.training + "\n";
+  if (!f.sim.empty()) text += "sim: " + f.sim + "\n";
   return dir.Write(name, text);
 }
 

@@ -19,6 +19,7 @@ struct TrainFile {
   std::string world = "{source: random_rect, obstacles: 0}";
   std::string humans = "{count: 1}";
   std::string training;  ///< the `training:` map
+  std::string sim;       ///< the `sim:` map (empty: defaults)
   int seed = 5;
 };
 

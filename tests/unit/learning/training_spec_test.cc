@@ -47,6 +47,48 @@ TEST(TrainSpecTest, DefaultsAreThePapers) {
   EXPECT_DOUBLE_EQ(training::Epsilon(t, 2500), 0.7);
   EXPECT_DOUBLE_EQ(training::Epsilon(t, 5000), 0.5);
   EXPECT_DOUBLE_EQ(training::Epsilon(t, 9999), 0.5);
+  EXPECT_EQ(t.store_timeouts, training::StoreTimeouts::kOff);
+  EXPECT_EQ(t.validation_episodes, 100);
+  // The paper's literal schedule is accepted but warned about (it unlearns here).
+  const auto warnings = training::TrainSpecWarnings(*r.spec);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("timeout episodes are not stored"), std::string::npos) << warnings[0];
+}
+
+TEST(TrainSpecTest, StoreTimeoutsIsAProcedureKey) {
+  TempDir dir;
+  TrainFile f;
+  for (const auto& [text, value] : {std::pair{"terminal", training::StoreTimeouts::kTerminal},
+                                    std::pair{"bootstrap", training::StoreTimeouts::kBootstrap},
+                                    std::pair{"off", training::StoreTimeouts::kOff}}) {
+    f.training = std::string("{store_timeouts: ") + text + ", epsilon_end: 0.1}";
+    const auto r = Load(WriteTrainFile(dir, f));
+    ASSERT_TRUE(r.spec) << r.errors[0].Format();
+    EXPECT_EQ(r.spec->training.store_timeouts, value);
+    EXPECT_NE(r.spec->canonical.find(std::string("store_timeouts=") + text), std::string::npos);
+  }
+  f.training = "{store_timeouts: yes}";
+  const auto bad = Load(WriteTrainFile(dir, f));
+  ASSERT_FALSE(bad.spec);
+  EXPECT_NE(bad.errors[0].Format().find("training.store_timeouts: expected off, terminal or bootstrap, got 'yes'"),
+            std::string::npos) << bad.errors[0].Format();
+}
+
+TEST(TrainSpecTest, SeedOverrideChangesTheConfigurationAndDecayWarns) {
+  TempDir dir;
+  TrainFile f;
+  f.training = "{rl_episodes: 100, epsilon_decay_episodes: 400, epsilon_end: 0.1, store_timeouts: terminal}";
+  PluginRegistry registry;  // the spec points into it
+  auto r = training::LoadTrainSpec(WriteTrainFile(dir, f), registry);
+  ASSERT_TRUE(r.spec) << r.errors[0].Format();
+  const std::string hash = r.spec->ConfigHash();
+  training::OverrideSeed(*r.spec, 2020);
+  EXPECT_EQ(r.spec->seed, 2020u);
+  EXPECT_NE(r.spec->ConfigHash(), hash);
+  EXPECT_EQ(r.spec->canonical.rfind("seed=2020\n", 0), 0u);
+  const auto warnings = training::TrainSpecWarnings(*r.spec);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("epsilon_decay_episodes (400) exceeds rl_episodes (100)"), std::string::npos);
 }
 
 TEST(TrainSpecTest, ErrorsAreLocated) {

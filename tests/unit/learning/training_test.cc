@@ -2,6 +2,9 @@
 // deterministic and resumes exactly, and every model / sensor combination trains.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <sstream>
+
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/runner.h"
 #include "crowdsim/suite.h"
@@ -92,6 +95,12 @@ TEST(TrainingTest, ResumeContinuesExactly) {
   const auto part3 = Train(file, dir.path() / "parts", true);
   ASSERT_TRUE(part3.finished);
   EXPECT_EQ(ValuesOfWeights(f, whole.weights), ValuesOfWeights(f, part3.weights));
+  // The per-episode log is cut back to each checkpoint and so ends up as one uninterrupted run's.
+  const std::string log = ReadText(dir.path() / "whole" / "training_episodes.csv");
+  EXPECT_EQ(ReadText(dir.path() / "parts" / "training_episodes.csv"), log);
+  EXPECT_NE(log.find("\ndemonstration,9,"), std::string::npos);
+  EXPECT_NE(log.find("\nimitation,1,"), std::string::npos);
+  EXPECT_NE(log.find("\nrl,11,"), std::string::npos);
   // Restarting over a finished training without --resume is refused.
   EXPECT_THROW(Train(file, dir.path() / "parts"), training::TrainError);
 }
@@ -110,6 +119,45 @@ TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
   }
   EXPECT_THROW(Train(WriteTrainFile(dir, f, "fresh.yaml"), dir.path() / "none", true),
                training::TrainError);
+}
+
+/// The last line's replay-memory counts (imitation, success, collision, timeout).
+std::vector<long> LastMemoryComposition(const fs::path& log_file) {
+  const std::string log = ReadText(log_file);
+  const std::size_t start = log.rfind('\n', log.size() - 2) + 1;
+  std::vector<std::string> fields;
+  std::stringstream line(log.substr(start));
+  for (std::string f; std::getline(line, f, ',');) fields.push_back(f);
+  std::vector<long> counts;
+  for (std::size_t i = fields.size() - 4; i < fields.size(); ++i) counts.push_back(std::stol(fields[i]));
+  return counts;
+}
+
+TEST(TrainingTest, TimeoutsReachTheMemoryOnlyWhenTheProcedureSaysSo) {
+  // 3 s are too short to reach the goal: every episode times out.
+  TrainFile f;
+  f.sim = "{time_limit: 3}";
+  std::map<std::string, std::vector<float>> weights;
+  for (const char* mode : {"off", "terminal", "bootstrap"}) {
+    SCOPED_TRACE(mode);
+    TempDir dir;
+    f.training = std::string("{il_episodes: 3, il_epochs: 1, rl_episodes: 6, epsilon_start: 0.5, "
+                             "epsilon_end: 0.1, epsilon_decay_episodes: 4, batch_size: 8, "
+                             "train_batches: 2, validation_interval: 0, store_timeouts: ") + mode + "}";
+    const auto s = Train(WriteTrainFile(dir, f), dir.path() / "out");
+    ASSERT_TRUE(s.finished);
+    const auto counts = LastMemoryComposition(dir.path() / "out" / "training_episodes.csv");
+    EXPECT_EQ(counts[0], 0);  // the teacher timed out too: no demonstration is stored
+    EXPECT_EQ(counts[1] + counts[2], 0);
+    if (std::string(mode) == "off") {
+      EXPECT_EQ(counts[3], 0);
+    } else {
+      EXPECT_EQ(counts[3], 6 * 12);  // six episodes of 12 steps
+    }
+    weights[mode] = ValuesOfWeights(f, s.weights);
+  }
+  // Terminal and bootstrapped targets differ, so do the weights trained on them.
+  EXPECT_NE(weights["terminal"], weights["bootstrap"]);
 }
 
 struct Combination {

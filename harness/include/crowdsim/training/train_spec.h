@@ -14,7 +14,17 @@
 
 namespace crowdsim::training {
 
-/// The `training:` keys. Defaults: CrowdNav's train.config with the paper's epsilon.
+/// What the RL phase does with an episode that ran out of time (`store_timeouts`).
+enum class StoreTimeouts {
+  kOff,        ///< not stored (CrowdNav, the paper): wandering never meets its consequence
+  kTerminal,   ///< stored like a collision: the last transition's target is its own reward
+  kBootstrap,  ///< stored as a truncation: the last target bootstraps from the state reached
+};
+const char* ToString(StoreTimeouts s);
+
+/// The `training:` keys. Defaults: CrowdNav's train.config with the paper's epsilon, i.e. the
+/// paper's literal procedure; the training files under suites/train/ name the procedure that
+/// learns (docs/training.md).
 struct TrainingSettings {
   int il_episodes = 3000;          ///< demonstrations of the teacher
   int il_epochs = 50;              ///< passes over the memory after the demonstrations
@@ -32,6 +42,7 @@ struct TrainingSettings {
   int validation_interval = 1000;   ///< RL episodes between validations (0: none)
   int validation_episodes = 100;
   int checkpoint_interval = 500;    ///< episodes between checkpoints
+  StoreTimeouts store_timeouts = StoreTimeouts::kOff;
 };
 
 /// A validated training file.
@@ -61,5 +72,13 @@ struct TrainSpecLoadResult {
 
 /// Reads and validates a training file; loads the plugins it names to check parameters.
 TrainSpecLoadResult LoadTrainSpec(const std::filesystem::path& file, PluginRegistry& registry);
+
+/// `train --seed N`: the same training with another seed (weights, scenarios, exploration,
+/// batches); the canonical text and so the config hash follow.
+void OverrideSeed(TrainSpec& spec, std::uint64_t seed);
+
+/// Problems that do not stop a training but likely spoil it (e.g. an epsilon decay longer
+/// than the RL phase), one sentence each.
+std::vector<std::string> TrainSpecWarnings(const TrainSpec& spec);
 
 }  // namespace crowdsim::training

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,6 +34,10 @@ struct TrainOptions {
   /// Tests: write a checkpoint and return after this many episodes (demonstrations + RL) of
   /// this call, as an interruption would; -1 = run to the end.
   int stop_after_episodes = -1;
+  /// Called with (out_dir, training name) after every checkpoint and at the end, once the logs
+  /// are flushed (the CLI draws the learning curve there; the core links no figure library).
+  /// An exception it throws is reported as a warning and training goes on.
+  std::function<void(const std::filesystem::path&, const std::string&)> on_files_flushed;
 };
 
 /// One validation pass (greedy, fixed scenarios).

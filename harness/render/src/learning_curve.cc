@@ -1,0 +1,215 @@
+#include "crowdsim/render/learning_curve.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "crowdsim/csv.h"
+#include "crowdsim/render/figure_output.h"
+#include "crowdsim/render/palette.h"
+
+namespace crowdsim::render {
+namespace fs = std::filesystem;
+
+namespace {
+
+enum Outcome { kSuccessful, kCollided, kTimedOut, kOutcomes };
+
+struct RlEpisode {
+  double epsilon = 0;
+  Outcome outcome = kTimedOut;
+};
+
+struct Validation {
+  double episode = 0;
+  double rate[kOutcomes] = {0, 0, 0};
+};
+
+std::vector<RlEpisode> ReadRlEpisodes(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::vector<RlEpisode> out;
+  if (!std::getline(in, line)) return out;
+  std::map<std::string, std::size_t> col;
+  const auto header = SplitCsvLine(line);
+  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+  if (!col.count("phase") || !col.count("epsilon") || !col.count("outcome")) return out;
+  const std::size_t need = std::max({col["phase"], col["epsilon"], col["outcome"]});
+  while (std::getline(in, line)) {
+    const auto f = SplitCsvLine(line);
+    if (f.size() <= need || f[col["phase"]] != "rl") continue;
+    RlEpisode e;
+    e.epsilon = std::atof(f[col["epsilon"]].c_str());
+    const std::string& o = f[col["outcome"]];
+    e.outcome = o == "success" ? kSuccessful : (o.rfind("collision", 0) == 0 ? kCollided : kTimedOut);
+    out.push_back(e);
+  }
+  return out;
+}
+
+std::vector<Validation> ReadValidations(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::vector<Validation> out;
+  if (!std::getline(in, line)) return out;
+  while (std::getline(in, line)) {
+    const auto f = SplitCsvLine(line);
+    if (f.size() < 4) continue;
+    Validation v;
+    v.episode = std::atof(f[0].c_str());
+    for (int k = 0; k < kOutcomes; ++k) v.rate[k] = std::atof(f[1 + k].c_str());
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::string Fixed(double v, int decimals) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
+  return buf;
+}
+
+std::string ReadIfExists(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+/// Tick spacing 1, 2 or 5 times a power of ten, at most 10 intervals over [0, max].
+double TickStep(double max) {
+  for (double decade = 1;; decade *= 10) {
+    for (double m : {1.0, 2.0, 5.0}) {
+      if (max / (m * decade) <= 10) return m * decade;
+    }
+  }
+}
+
+}  // namespace
+
+Drawing LearningCurveDrawing(const std::string& episodes_csv, const std::string& validation_csv,
+                             const std::string& title) {
+  const std::vector<RlEpisode> eps = ReadRlEpisodes(episodes_csv);
+  const std::vector<Validation> val = ReadValidations(validation_csv);
+  double max_x = static_cast<double>(eps.size());
+  for (const auto& v : val) max_x = std::max(max_x, v.episode);
+  max_x = std::max(max_x, 1.0);
+
+  constexpr double kLeft = 60, kRight = 190, kTop = 40, kBottom = 50;
+  Drawing d;
+  d.width = 900;
+  d.height = 440;
+  const double pw = d.width - kLeft - kRight, ph = d.height - kTop - kBottom;
+  auto at = [&](double episode, double rate) {
+    return Vec2(kLeft + pw * episode / max_x, kTop + ph * (1.0 - rate));
+  };
+  const Color colour[kOutcomes] = {palette::kSuccess, palette::kCollision, palette::kTimeout};
+  const char* name[kOutcomes] = {"success", "collision", "timeout"};
+
+  d.AddText("chart-title", Vec2(kLeft, 24), title + ": learning curve (" + std::to_string(eps.size()) +
+            " RL episodes)", 15, palette::kInk, TextAnchor::kStart, true);
+  Style grid;
+  grid.stroke = Color{221, 221, 221, 1.0};
+  Style axis;
+  axis.stroke = palette::kInk;
+  for (int k = 0; k <= 5; ++k) {
+    const double r = k / 5.0;
+    d.AddPolyline("grid", {at(0, r), at(max_x, r)}, grid);
+    d.AddText("tick", at(0, r) + Vec2(-8, 4), Fixed(r, 1), 12, palette::kInk, TextAnchor::kEnd);
+  }
+  const double step = TickStep(max_x);
+  for (double e = 0; e <= max_x + 1e-9; e += step) {
+    d.AddPolyline("tick", {at(e, 0), at(e, 0) + Vec2(0, 5)}, axis);
+    d.AddText("tick", at(e, 0) + Vec2(0, 18), std::to_string(static_cast<long>(e)), 12, palette::kInk,
+              TextAnchor::kMiddle);
+  }
+  d.AddPolygon("axis", {at(0, 0), at(max_x, 0), at(max_x, 1), at(0, 1)}, axis);
+  d.AddText("axis-label", Vec2(kLeft + pw / 2, d.height - 12), "RL episode", 12, palette::kInk,
+            TextAnchor::kMiddle);
+  d.AddText("axis-label", Vec2(8, kTop - 10), "rate", 12, palette::kInk);
+
+  // Rolling rates over a window of about 1/25 of the run (at least 50 episodes), at most
+  // ~400 points per line.
+  const std::size_t window = std::max<std::size_t>(50, eps.size() / 25);
+  if (eps.size() >= 2) {
+    std::vector<Vec2> line[kOutcomes];
+    std::vector<Vec2> epsilon;
+    int count[kOutcomes] = {0, 0, 0};
+    const std::size_t stride = std::max<std::size_t>(1, eps.size() / 400);
+    for (std::size_t i = 0; i < eps.size(); ++i) {
+      ++count[eps[i].outcome];
+      if (i >= window) --count[eps[i - window].outcome];
+      if (i % stride != 0 && i + 1 != eps.size()) continue;
+      const double n = static_cast<double>(std::min(i + 1, window));
+      for (int k = 0; k < kOutcomes; ++k) line[k].push_back(at(i + 1.0, count[k] / n));
+      epsilon.push_back(at(i + 1.0, eps[i].epsilon));
+    }
+    for (int k = 0; k < kOutcomes; ++k) {
+      Style s;
+      s.stroke = colour[k];
+      s.stroke_width = 1.5;
+      d.AddPolyline(std::string("rolling ") + name[k], std::move(line[k]), s);
+    }
+    Style s;
+    s.stroke = palette::kMutedInk;
+    s.dashed = true;
+    d.AddPolyline("epsilon", std::move(epsilon), s);
+  }
+  // Validation points (greedy, fixed scenarios); episode 0 is the imitation start.
+  for (const auto& v : val) {
+    for (int k = 0; k < kOutcomes; ++k) {
+      Style s;
+      s.fill = Color{255, 255, 255, 1.0};
+      s.stroke = colour[k];
+      s.stroke_width = 2;
+      d.AddCircle(std::string("validation ") + name[k], at(v.episode, v.rate[k]), 4, s);
+    }
+  }
+  // Legend.
+  const double lx = kLeft + pw + 15;
+  for (int k = 0; k < kOutcomes; ++k) {
+    const double y = kTop + 10 + 20 * k;
+    Style s;
+    s.stroke = colour[k];
+    s.stroke_width = 2;
+    d.AddPolyline("legend-line", {Vec2(lx, y), Vec2(lx + 22, y)}, s);
+    d.AddText("legend", Vec2(lx + 28, y + 4), name[k], 12, palette::kInk);
+  }
+  Style dashed;
+  dashed.stroke = palette::kMutedInk;
+  dashed.dashed = true;
+  d.AddPolyline("legend-line", {Vec2(lx, kTop + 70), Vec2(lx + 22, kTop + 70)}, dashed);
+  d.AddText("legend", Vec2(lx + 28, kTop + 74), "epsilon", 12, palette::kInk);
+  Style marker;
+  marker.fill = Color{255, 255, 255, 1.0};
+  marker.stroke = palette::kInk;
+  marker.stroke_width = 2;
+  d.AddCircle("legend-marker", Vec2(lx + 11, kTop + 90), 4, marker);
+  d.AddText("legend", Vec2(lx + 28, kTop + 94), "validation (greedy)", 12, palette::kInk);
+  const std::string notes[] = {"lines: rolling rates of the", "last " + std::to_string(window) +
+                               " RL episodes (exploring)", "points: validation episodes;",
+                               "at 0 the imitation weights"};
+  for (int i = 0; i < 4; ++i) {
+    d.AddText("legend-note", Vec2(lx, kTop + 120 + 14 * i), notes[i], 10, palette::kMutedInk);
+  }
+  return d;
+}
+
+void WriteLearningCurve(const fs::path& folder, const std::string& title) {
+  const fs::path episodes = folder / "training_episodes.csv";
+  const fs::path validation = folder / "training_log.csv";
+  if (!fs::exists(episodes) && !fs::exists(validation)) {
+    throw std::runtime_error("'" + folder.string() + "' holds neither training_episodes.csv nor "
+                             "training_log.csv: not a training folder");
+  }
+  const Drawing d = LearningCurveDrawing(ReadIfExists(episodes), ReadIfExists(validation), title);
+  WriteFigure(d, folder / "learning_curve.svg");
+  WriteFigure(d, folder / "learning_curve.png", 1.0);
+}
+
+}  // namespace crowdsim::render

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Trains every training file (or those given) that has no finished training yet, N at a time,
+# each at low priority (nice) on one core; an interrupted training is resumed from its
+# checkpoint. Safe to rerun at any time: finished trainings are skipped.
+#
+#   scripts/train_all.sh [-j N] [--seeds "1010 2020 3030"] [--bin PATH] [FILE.yaml[@SEED] ...]
+#
+# Without files: suites/train/*.yaml. A file trains with its own seed into
+# results/train/<name>/; FILE@SEED (or --seeds for every file) with another seed into
+# results/train/<name>_seed<SEED>/. Trainings start in the order given. Each training's
+# output goes to <out>/train.log.
+set -euo pipefail
+
+jobs=2
+seeds=""
+bin="build/bin/crowdsim-bench"
+files=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    -j) jobs="$2"; shift 2 ;;
+    --seeds) seeds="$2"; shift 2 ;;
+    --bin) bin="$2"; shift 2 ;;
+    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -*) echo "train_all: unknown option '$1' (see --help)" >&2; exit 2 ;;
+    *) files+=("$1"); shift ;;
+  esac
+done
+[[ ${#files[@]} -gt 0 ]] || files=(suites/train/*.yaml)
+[[ -x "$bin" ]] || { echo "train_all: '$bin' not found; run 'make build' first (or pass --bin)" >&2; exit 2; }
+
+# One line per training to run: FILE SEED OUT (SEED '-' = the file's own).
+plan=()
+for entry in "${files[@]}"; do
+  f="${entry%@*}"
+  own_seeds="$seeds"
+  [[ "$entry" == *@* ]] && own_seeds="${entry##*@}"
+  [[ -f "$f" ]] || { echo "train_all: no training file '$f'" >&2; exit 2; }
+  name=$(sed -n 's/^name: *\([A-Za-z0-9_.-]*\).*/\1/p' "$f" | head -n1)
+  [[ -n "$name" ]] || { echo "train_all: '$f' has no 'name:' line" >&2; exit 2; }
+  for s in ${own_seeds:--}; do
+    [[ "$s" == "-" || "$s" =~ ^[0-9]+$ ]] || { echo "train_all: seed '$s' of '$entry' is not a number" >&2; exit 2; }
+    out="results/train/$name"
+    [[ "$s" == "-" ]] || out="${out}_seed$s"
+    if [[ -f "$out/weights.pt" ]] && grep -q '"finished": true' "$out/summary.json" 2>/dev/null; then
+      echo "train_all: $out is finished, skipped"
+      continue
+    fi
+    plan+=("$f $s $out")
+  done
+done
+[[ ${#plan[@]} -gt 0 ]] || { echo "train_all: nothing to train"; exit 0; }
+echo "train_all: ${#plan[@]} training(s), $jobs at a time"
+
+run_one() {
+  local f="$1" s="$2" out="$3" bin="$4"
+  local args=(train "$f" --out "$out" --quiet)
+  [[ "$s" == "-" ]] || args+=(--seed "$s")
+  [[ -f "$out/checkpoint/state.txt" || -f "$out/checkpoint.tmp/state.txt" ]] && args+=(--resume)
+  mkdir -p "$out"
+  echo "train_all: start $out ($(date -u +%H:%M:%S))"
+  if nice -n 10 "$bin" "${args[@]}" >>"$out/train.log" 2>&1; then
+    echo "train_all: done  $out ($(date -u +%H:%M:%S))"
+  else
+    echo "train_all: FAILED $out (exit $?), see $out/train.log" >&2
+    return 1
+  fi
+}
+export -f run_one
+printf '%s\n' "${plan[@]}" | xargs -P "$jobs" -L 1 bash -c 'run_one "$0" "$1" "$2" "'"$bin"'"'
