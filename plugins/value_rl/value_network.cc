@@ -48,6 +48,18 @@ StateBatch MakeBatch(const ValueRlConfig& config, std::span<const EncodedState* 
   return batch;
 }
 
+torch::Tensor ForwardJoined(torch::nn::Sequential& mlp, const torch::Tensor& state,
+                            const torch::Tensor& rows, bool state_first) {
+  const auto& first = mlp->ptr<torch::nn::LinearImpl>(0);
+  const torch::Tensor& w = first->weight;
+  const int64_t s = state.size(1), r = rows.size(2);
+  const torch::Tensor w_state = w.narrow(1, state_first ? 0 : r, s);
+  const torch::Tensor w_rows = w.narrow(1, state_first ? s : 0, r);
+  torch::Tensor x = torch::linear(rows, w_rows) + torch::linear(state, w_state, first->bias).unsqueeze(1);
+  for (auto it = mlp->begin() + 1; it != mlp->end(); ++it) x = it->forward(x);
+  return x;
+}
+
 namespace {
 
 /// Self state joined with the lidar feature (when there is a lidar): (B, 6 [+ F]).
@@ -82,9 +94,7 @@ class Cadrl final : public ValueNetwork {
   torch::Tensor Forward(const StateBatch& b) override {
     torch::Tensor s = self_(b);
     if (!humans_) return mlp_->forward(s).squeeze(1);
-    const int64_t n = b.humans.size(1);
-    torch::Tensor rows = torch::cat({s.unsqueeze(1).expand({-1, n, -1}), b.humans}, 2);
-    torch::Tensor v = mlp_->forward(rows).squeeze(2);
+    torch::Tensor v = ForwardJoined(mlp_, s, b.humans, /*state_first=*/true).squeeze(2);
     v = v.masked_fill(b.mask.logical_not(), std::numeric_limits<float>::infinity());
     return std::get<0>(v.min(1));
   }
@@ -110,16 +120,13 @@ class Sarl final : public ValueNetwork {
   torch::Tensor Forward(const StateBatch& b) override {
     torch::Tensor joint = self_(b);
     if (humans_) {
-      const int64_t n = b.humans.size(1);
       // The humans' rows carry the plain self state, as CrowdNav's 13-value rows do.
-      torch::Tensor rows = torch::cat({b.self.unsqueeze(1).expand({-1, n, -1}), b.humans}, 2);
-      torch::Tensor e = mlp1_->forward(rows);  // (B, N, 100)
-      torch::Tensor h = mlp2_->forward(e);     // (B, N, 50)
+      torch::Tensor e = ForwardJoined(mlp1_, b.self, b.humans, /*state_first=*/true);  // (B, N, 100)
+      torch::Tensor h = mlp2_->forward(e);  // (B, N, 50)
       torch::Tensor m = b.mask.to(torch::kFloat).unsqueeze(2);
       torch::Tensor global = (e * m).sum(1) / m.sum(1).clamp_min(1.0);
-      torch::Tensor scores =
-          attention_->forward(torch::cat({e, global.unsqueeze(1).expand({-1, n, -1})}, 2))
-              .squeeze(2);
+      // Attention on cat({e, global}): the mean embedding is the per-state part.
+      torch::Tensor scores = ForwardJoined(attention_, global, e, /*state_first=*/false).squeeze(2);
       // CrowdNav's "masked softmax": exp(s) * [s != 0], no max shift; padded rows masked too.
       torch::Tensor w = torch::exp(scores) * scores.ne(0).to(torch::kFloat) * m.squeeze(2);
       w = w / w.sum(1, /*keepdim=*/true);

@@ -28,6 +28,14 @@ StateBatch MakeBatch(const ValueRlConfig& config, std::span<const EncodedState* 
 /// Linear layers of the given widths with a ReLU after each but the last (CrowdNav's mlp()).
 torch::nn::Sequential Mlp(int64_t in, std::initializer_list<int64_t> dims, bool last_relu);
 
+/// `mlp` applied to rows that join a per-state part (B, S), the same for every row of a state,
+/// and a per-row part (B, N, R): mlp(cat({state broadcast over N, rows}, 2)), or with the
+/// rows first when `state_first` is false, without building the joined rows: the first
+/// layer's weight splits into the state's columns, applied once per state, and the rows'
+/// columns. Same parameters (and weights files) as the plain MLP, fewer operations.
+torch::Tensor ForwardJoined(torch::nn::Sequential& mlp, const torch::Tensor& state,
+                            const torch::Tensor& rows, bool state_first);
+
 /// State value network: V(batch) -> (B).
 class ValueNetwork : public torch::nn::Module {
  public:

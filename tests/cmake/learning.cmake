@@ -17,6 +17,9 @@ if(CROWDSIM_WITH_TORCH)
         SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/${test}.cc
         LIBS crowdsim_learning_test_util)
     endforeach()
+    # The weights test also checks the networks' tensor code directly.
+    target_link_libraries(value_rl_weights_test PRIVATE ${TORCH_LIBRARIES})
+    target_include_directories(value_rl_weights_test SYSTEM PRIVATE ${TORCH_INCLUDE_DIRS})
     # The trainer's internal pieces (value targets, replay memory, episode log, learning curve).
     crowdsim_add_gtest(value_targets_test unit
       SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/value_targets_test.cc)

@@ -15,6 +15,7 @@
 #include "crowdsim/results.h"
 #include "crowdsim/rng.h"
 #include "crowdsim/trainable.h"
+#include "crowdsim/version.h"
 #include "episode_log.h"
 #include "replay_memory.h"
 #include "training_checkpoint.h"
@@ -490,7 +491,7 @@ void Trainer::WriteSummaryJson() const {
      << ", \"store_timeouts\": \"" << ToString(p.store_timeouts) << "\", \"train_batches\": "
      << p.train_batches << ", \"validation_interval\": " << p.validation_interval
      << ", \"validation_episodes\": " << p.validation_episodes << "}"
-     << ",\n  \"cpu\": \"" << CpuModel() << "\""
+     << ",\n  \"cpu\": \"" << CpuModel() << "\",\n  \"commit\": \"" << GitCommit() << "\""
      << ",\n  \"finished\": " << (summary_.finished ? "true" : "false")
      << ",\n  \"phase\": " << static_cast<int>(state_.phase) << ",\n  \"counter\": " << state_.counter
      << ",\n  \"memory_size\": " << memory_.size()

@@ -4,6 +4,7 @@
 
 #include "state_encoding.h"
 #include "temp_dir.h"
+#include "value_network.h"
 #include "value_policy.h"
 
 namespace crowdsim::value_rl {
@@ -38,6 +39,21 @@ std::vector<float> ValuesOf(ValuePolicy& p, const std::vector<EncodedState>& sta
   std::vector<const EncodedState*> ptrs;
   for (const auto& s : states) ptrs.push_back(&s);
   return p.Values(ptrs);
+}
+
+// The networks apply their first layer to (state, row) pairs without building the joined
+// rows; the result is the plain MLP's on the concatenation (so weights files keep their meaning).
+TEST(WeightsFileTest, JoinedRowsEqualThePlainMlpOnTheConcatenation) {
+  torch::manual_seed(3);
+  auto mlp = Mlp(6 + 7, {20, 10, 1}, false);
+  const torch::Tensor state = torch::randn({4, 6});
+  const torch::Tensor rows = torch::randn({4, 3, 7});
+  const torch::Tensor plain_first =
+      mlp->forward(torch::cat({state.unsqueeze(1).expand({-1, 3, -1}), rows}, 2));
+  EXPECT_TRUE(torch::allclose(ForwardJoined(mlp, state, rows, true), plain_first, 1e-5, 1e-6));
+  const torch::Tensor plain_last =
+      mlp->forward(torch::cat({rows, state.unsqueeze(1).expand({-1, 3, -1})}, 2));
+  EXPECT_TRUE(torch::allclose(ForwardJoined(mlp, state, rows, false), plain_last, 1e-5, 1e-6));
 }
 
 TEST(WeightsFileTest, RoundTripIsIdentical) {
