@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Copies a finished training into results/models/<folder name>/ for committing: the weights
+# (weights.pt last, best.pt best on validation, il.pt imitation start), training.yaml,
+# training_log.csv (validation), training_episodes.csv.gz (every episode), the learning
+# curve (SVG and PNG), summary.json and the trainer's log. Refuses an unfinished training.
+#
+#   scripts/collect_model.sh results/train/<name>[_seed<N>] [...]
+set -euo pipefail
+[[ $# -gt 0 ]] || { sed -n '2,7p' "$0"; exit 2; }
+for src in "$@"; do
+  src="${src%/}"
+  if ! grep -q '"finished": true' "$src/summary.json" 2>/dev/null; then
+    echo "collect_model: '$src' is not a finished training (summary.json says so)" >&2
+    exit 1
+  fi
+  dst="results/models/$(basename "$src")"
+  rm -rf "$dst"
+  mkdir -p "$dst"
+  for f in weights.pt best.pt il.pt training.yaml training_log.csv summary.json learning_curve.svg learning_curve.png train.log; do
+    [[ -f "$src/$f" ]] && cp "$src/$f" "$dst/"
+  done
+  gzip -9 -n -c "$src/training_episodes.csv" > "$dst/training_episodes.csv.gz"
+  echo "collect_model: $dst ($(du -sh "$dst" | cut -f1))"
+done
