@@ -34,7 +34,9 @@ usage:
       time marks, outcome; --compare adds a second row's robot; --sensors-at draws the lidar
       and person readings at a step; --animate writes a .gif (or .mp4) at --speed x real time
   crowdsim-bench report RESULTS_DIR --out report.html [--suite SUITE.yaml]
-      one self-contained HTML page of a run: table, charts, first success/collision/timeout
+      one self-contained HTML page of a run: table, charts, first success/collision/timeout;
+      of a training folder (train --out): learning curve, validations, memory composition
+      (--out FILE.svg/.png/.pdf: the learning curve alone)
   crowdsim-bench list-plugins [PLUGIN.so...]
       lists every plugin found, with its kind, description and parameters
   crowdsim-bench help

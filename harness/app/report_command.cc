@@ -1,28 +1,55 @@
-// report: one self-contained HTML page of a results folder (table, charts, episode figures).
+// report: one self-contained HTML page of a results folder (table, charts, episode figures) or
+// of a training folder (learning curve, validations, outcomes and replay memory by block).
 #include <iostream>
 
 #include "cli_args.h"
 #include "commands.h"
 #include "crowdsim/plugin_registry.h"
+#include "crowdsim/render/figure_output.h"
+#include "crowdsim/render/learning_curve.h"
 #include "crowdsim/render/report.h"
+#include "crowdsim/render/results_folder.h"
+#include "crowdsim/render/training_report.h"
 #include "crowdsim/results.h"
 
 namespace crowdsim::cli {
+namespace {
+
+std::string ReadFileIfAny(const std::filesystem::path& p) {
+  return std::filesystem::exists(p) ? render::ReadTextFile(p) : std::string();
+}
+
+}  // namespace
 
 int ReportCommand(const std::vector<std::string>& args) {
   const Args a = Args::Parse(args, {"--out", "--suite"}, {});
   if (a.positional.size() != 1)
-    throw UsageError("report needs exactly one results folder (the --out of `run`)");
+    throw UsageError("report needs exactly one results folder (the --out of `run` or `train`)");
   const auto out = a.Get("--out");
   if (!out) throw UsageError("report needs --out FILE.html");
+  const std::filesystem::path dir = a.positional[0];
+  const bool training = render::IsTrainingFolder(dir) && !std::filesystem::exists(dir / "manifest.json");
+  const bool figure = out->ends_with(".svg") || out->ends_with(".png") || out->ends_with(".pdf");
+  if (training && figure) {
+    // A training folder's learning curve alone, as a figure.
+    const std::string name = dir.filename().empty() ? dir.parent_path().filename().string()
+                                                    : dir.filename().string();
+    render::WriteFigure(render::LearningCurveDrawing(ReadFileIfAny(dir / "training_episodes.csv"),
+                                                     ReadFileIfAny(dir / "training_log.csv"), name),
+                        *out);
+    std::cerr << "wrote " << *out << "\n";
+    return 0;
+  }
   if (!out->ends_with(".html") && !out->ends_with(".htm")) {
-    throw UsageError("report writes HTML: --out must end in .html, got '" + *out + "'");
+    throw UsageError("report writes HTML (or, for a training folder, its learning curve as .svg, .png "
+                     "or .pdf): --out must end in .html, got '" + *out + "'");
   }
   render::ReportOptions options;
   if (auto s = a.Get("--suite")) options.suite_file = *s;
   PluginRegistry registry;
   try {
-    WriteFileAtomically(*out, render::BuildReport(a.positional[0], registry, options));
+    WriteFileAtomically(*out, training ? render::BuildTrainingReport(dir)
+                                       : render::BuildReport(dir, registry, options));
   } catch (const render::ReportError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

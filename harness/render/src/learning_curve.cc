@@ -100,9 +100,9 @@ Drawing LearningCurveDrawing(const std::string& episodes_csv, const std::string&
   for (const auto& v : val) max_x = std::max(max_x, v.episode);
   max_x = std::max(max_x, 1.0);
 
-  constexpr double kLeft = 60, kRight = 190, kTop = 40, kBottom = 50;
+  constexpr double kLeft = 60, kRight = 215, kTop = 40, kBottom = 50;
   Drawing d;
-  d.width = 900;
+  d.width = 925;
   d.height = 440;
   const double pw = d.width - kLeft - kRight, ph = d.height - kTop - kBottom;
   auto at = [&](double episode, double rate) {

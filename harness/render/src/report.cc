@@ -19,18 +19,7 @@ namespace crowdsim::render {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr const char* kCss = R"(
-body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;margin:24px 32px;color:#212121;background:#fafafa}
-h1{font-size:22px;margin:0 0 4px} h2{font-size:18px;margin:28px 0 10px;border-bottom:1px solid #ddd;padding-bottom:4px}
-h3{font-size:15px;margin:16px 0 8px} .meta{color:#666;font-size:13px;margin:2px 0}
-table{border-collapse:collapse;font-size:12px;background:#fff} th,td{border:1px solid #ddd;padding:4px 7px;text-align:right}
-th{background:#f0f0f0} td.text,th.text{text-align:left}
-.charts{display:flex;flex-wrap:wrap;gap:18px} .chart{background:#fff;border:1px solid #e2e2e2;padding:8px}
-.thumbs{display:flex;flex-wrap:wrap;gap:14px} .thumb{background:#fff;border:1px solid #e2e2e2;padding:6px;width:260px;font-size:12px}
-.thumb img{width:100%;height:auto;display:block} .thumb a{color:inherit;text-decoration:none}
-.none{color:#999;font-style:italic;padding:40px 0;text-align:center} .warn{color:#b35c00}
-.figure{background:#fff;border:1px solid #e2e2e2;padding:8px;margin:12px 0} .figure svg{max-width:100%;height:auto}
-)";
+
 
 double Number(const std::string& s) {
   try {
@@ -90,6 +79,22 @@ fs::path FindSuiteFile(const fs::path& dir, const std::string& manifest,
 
 }  // namespace
 
+const char* ReportCss() {
+  static const char* const kCss = R"(
+body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;margin:24px 32px;color:#212121;background:#fafafa}
+h1{font-size:22px;margin:0 0 4px} h2{font-size:18px;margin:28px 0 10px;border-bottom:1px solid #ddd;padding-bottom:4px}
+h3{font-size:15px;margin:16px 0 8px} .meta{color:#666;font-size:13px;margin:2px 0}
+table{border-collapse:collapse;font-size:12px;background:#fff} th,td{border:1px solid #ddd;padding:4px 7px;text-align:right}
+th{background:#f0f0f0} td.text,th.text{text-align:left}
+.charts{display:flex;flex-wrap:wrap;gap:18px} .chart{background:#fff;border:1px solid #e2e2e2;padding:8px}
+.thumbs{display:flex;flex-wrap:wrap;gap:14px} .thumb{background:#fff;border:1px solid #e2e2e2;padding:6px;width:260px;font-size:12px}
+.thumb img{width:100%;height:auto;display:block} .thumb a{color:inherit;text-decoration:none}
+.none{color:#999;font-style:italic;padding:40px 0;text-align:center} .warn{color:#b35c00}
+.figure{background:#fff;border:1px solid #e2e2e2;padding:8px;margin:12px 0} .figure svg{max-width:100%;height:auto}
+)";
+  return kCss;
+}
+
 std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
                         const ReportOptions& options) {
   if (!fs::is_directory(dir)) {
@@ -131,7 +136,7 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
 
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
-       << XmlEscape(suite.name) << " · crowdsim-bench report</title>\n<style>" << kCss
+       << XmlEscape(suite.name) << " · crowdsim-bench report</title>\n<style>" << ReportCss()
        << "</style></head><body>\n";
   html << "<h1>" << XmlEscape(suite.name) << "</h1>\n";
   if (!suite.description.empty())

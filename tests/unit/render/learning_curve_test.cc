@@ -1,10 +1,13 @@
 // The learning curve of a training: rolling rates, epsilon and validation points from the
-// training folder's files, written as SVG and PNG by `train` (end to end, with --seed).
+// training folder's files, written as SVG and PNG by `train` (end to end, with --seed), and
+// `report` on a training folder.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdio>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "crowdsim/render/learning_curve.h"
 #include "temp_dir.h"
@@ -14,6 +17,15 @@ namespace crowdsim::render {
 namespace {
 
 namespace fs = std::filesystem;
+
+std::pair<int, std::string> Shell(const std::string& cmd) {
+  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+  std::string text;
+  char buf[4096];
+  while (p && fgets(buf, sizeof(buf), p)) text += buf;
+  const int status = p ? pclose(p) : -1;
+  return {WEXITSTATUS(status), text};
+}
 
 const char* kEpisodesHeader =
     "phase,index,epsilon,outcome,return,steps,loss,memory,mem_imitation,mem_success,"
@@ -65,18 +77,31 @@ TEST(LearningCurveTest, TrainWritesTheCurveAsSvgAndPng) {
       "training: {il_episodes: 4, il_epochs: 1, rl_episodes: 6, epsilon_start: 0.5, epsilon_end: 0.1, "
       "epsilon_decay_episodes: 4, batch_size: 8, train_batches: 2, validation_interval: 3, "
       "validation_episodes: 2, store_timeouts: terminal}\n");
-  const std::string cmd = (testing::BinaryDir() / "bin" / "crowdsim-bench").string() + " train " +
-                          file.string() + " --quiet --seed 11 --out " + (dir.path() / "out").string() + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string text;
-  char buf[4096];
-  while (p && fgets(buf, sizeof(buf), p)) text += buf;
-  ASSERT_EQ(WEXITSTATUS(pclose(p)), 0) << text;
+  const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
+  auto [rc, text] = Shell(exe + " train " + file.string() + " --quiet --seed 11 --out " +
+                          (dir.path() / "out").string());
+  ASSERT_EQ(rc, 0) << text;
   EXPECT_GT(fs::file_size(dir.path() / "out" / "learning_curve.svg"), 1000u);
   EXPECT_GT(fs::file_size(dir.path() / "out" / "learning_curve.png"), 1000u);
   const std::string summary = testing::ReadText(dir.path() / "out" / "summary.json");
   EXPECT_NE(summary.find("\"seed\": 11"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"store_timeouts\": \"terminal\""), std::string::npos) << summary;
+
+  // `report` on the training folder: the HTML page, or the curve alone as a figure.
+  std::tie(rc, text) = Shell(exe + " report " + (dir.path() / "out").string() + " --out " +
+                             (dir.path() / "t.html").string());
+  ASSERT_EQ(rc, 0) << text;
+  const std::string html = testing::ReadText(dir.path() / "t.html");
+  EXPECT_NE(html.find("<h1>Training tiny</h1>"), std::string::npos);
+  EXPECT_NE(html.find("RL episodes by block of 500"), std::string::npos);
+  EXPECT_NE(html.find("<td>0-5</td>"), std::string::npos) << html;  // one block of six episodes
+  std::tie(rc, text) = Shell(exe + " report " + (dir.path() / "out").string() + " --out " +
+                             (dir.path() / "curve.pdf").string());
+  ASSERT_EQ(rc, 0) << text;
+  EXPECT_GT(fs::file_size(dir.path() / "curve.pdf"), 1000u);
+  std::tie(rc, text) = Shell(exe + " report " + dir.path().string() + " --out x.png");
+  EXPECT_EQ(rc, 2) << text;  // not a training folder and not a run: HTML only, said so
+  EXPECT_NE(text.find("--out must end in .html"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -22,6 +22,9 @@ struct ReportOptions {
   double thumbnail_scale = 0.36;     ///< thumbnail px per figure px
 };
 
+/// The style sheet every report page embeds.
+const char* ReportCss();
+
 /// The report of a `crowdsim-bench run` output folder (manifest.json, table.csv, episodes.csv);
 /// replays the shown episodes with the suite's plugins. Throws ReportError.
 std::string BuildReport(const std::filesystem::path& results_dir, PluginRegistry& registry,

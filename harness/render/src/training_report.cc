@@ -1,0 +1,147 @@
+#include "crowdsim/render/training_report.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "crowdsim/csv.h"
+#include "crowdsim/render/learning_curve.h"
+#include "crowdsim/render/report.h"
+#include "crowdsim/render/results_folder.h"
+#include "crowdsim/render/svg_writer.h"
+
+namespace crowdsim::render {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Outcomes, loss and memory of a block of consecutive RL episodes.
+struct Block {
+  int first = 0, last = 0, episodes = 0;
+  std::array<int, 3> outcomes{};  // success, collision, timeout
+  double epsilon_sum = 0, loss_sum = 0;
+  std::array<double, 4> memory{};  // last episode's entries by source
+  double memory_size = 0;
+};
+
+std::string Fixed(double v, int decimals) {
+  char buf[40];
+  std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
+  return buf;
+}
+
+std::vector<Block> RlBlocks(const std::string& csv, int block_size) {
+  std::istringstream in(csv);
+  std::string line;
+  std::vector<Block> blocks;
+  if (!std::getline(in, line)) return blocks;
+  std::map<std::string, std::size_t> col;
+  const auto header = SplitCsvLine(line);
+  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+  for (const char* need : {"phase", "index", "epsilon", "outcome", "loss", "memory", "mem_imitation",
+                           "mem_success", "mem_collision", "mem_timeout"}) {
+    if (!col.count(need)) return blocks;
+  }
+  while (std::getline(in, line)) {
+    const auto f = SplitCsvLine(line);
+    if (f.size() < header.size() || f[col["phase"]] != "rl") continue;
+    const int index = std::atoi(f[col["index"]].c_str());
+    if (blocks.empty() || index / block_size != blocks.back().first / block_size) {
+      blocks.push_back(Block{});
+      blocks.back().first = index;
+    }
+    Block& b = blocks.back();
+    b.last = index;
+    ++b.episodes;
+    const std::string& o = f[col["outcome"]];
+    ++b.outcomes[o == "success" ? 0 : (o.rfind("collision", 0) == 0 ? 1 : 2)];
+    b.epsilon_sum += std::atof(f[col["epsilon"]].c_str());
+    b.loss_sum += std::atof(f[col["loss"]].c_str());
+    b.memory_size = std::atof(f[col["memory"]].c_str());
+    int k = 0;
+    for (const char* m : {"mem_imitation", "mem_success", "mem_collision", "mem_timeout"}) {
+      b.memory[k++] = std::atof(f[col[m]].c_str());
+    }
+  }
+  return blocks;
+}
+
+std::string ReadIfExists(const fs::path& p) { return fs::exists(p) ? ReadTextFile(p) : std::string(); }
+
+}  // namespace
+
+bool IsTrainingFolder(const fs::path& dir) {
+  return fs::exists(dir / "training_episodes.csv") || fs::exists(dir / "training_log.csv");
+}
+
+std::string BuildTrainingReport(const fs::path& dir) {
+  if (!IsTrainingFolder(dir)) {
+    throw ReportError("'" + dir.string() + "' is not a training folder (no training_episodes.csv "
+                      "or training_log.csv): give the --out of `crowdsim-bench train`");
+  }
+  const std::string summary = ReadIfExists(dir / "summary.json");
+  const std::string name = JsonStringField(summary, "name").value_or(dir.filename().string());
+  const std::string episodes = ReadIfExists(dir / "training_episodes.csv");
+  const std::string validation = ReadIfExists(dir / "training_log.csv");
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << XmlEscape(name)
+       << " · crowdsim-bench training report</title>\n<style>" << ReportCss()
+       << "</style></head><body>\n<h1>Training " << XmlEscape(name) << "</h1>\n<p class=\"meta\">"
+       << XmlEscape(dir.string()) << "</p>\n<h2>Learning curve</h2>\n<div class=\"figure\">"
+       << ToSvg(LearningCurveDrawing(episodes, validation, name), SvgOptions{.standalone = false})
+       << "</div>\n";
+
+  html << "<h2>Validation (greedy, fixed episodes)</h2>\n";
+  if (validation.empty()) {
+    html << "<p class=\"none\">no validation ran</p>\n";
+  } else {
+    html << "<table>\n";
+    std::istringstream in(validation);
+    bool first = true;
+    for (std::string line; std::getline(in, line);) {
+      html << "<tr>";
+      for (const auto& f : SplitCsvLine(line)) {
+        html << (first ? "<th>" : "<td>") << XmlEscape(f) << (first ? "</th>" : "</td>");
+      }
+      html << "</tr>\n";
+      first = false;
+    }
+    html << "</table>\n";
+  }
+
+  const std::vector<Block> blocks = RlBlocks(episodes, 500);
+  html << "<h2>RL episodes by block of 500</h2>\n<p class=\"meta\">Outcomes while exploring, mean "
+          "epsilon and loss, and the replay memory after the block: its size and the share of "
+          "entries from imitation, success, collision and timeout episodes.</p>\n";
+  if (blocks.empty()) {
+    html << "<p class=\"none\">no RL episode logged yet</p>\n";
+  } else {
+    html << "<table>\n<tr><th>episodes</th><th>success</th><th>collision</th><th>timeout</th>"
+            "<th>epsilon</th><th>loss</th><th>memory</th><th>imitation</th><th>success</th>"
+            "<th>collision</th><th>timeout</th></tr>\n";
+    for (const Block& b : blocks) {
+      const double n = std::max(1, b.episodes);
+      const double m = std::max(1.0, b.memory_size);
+      html << "<tr><td>" << b.first << "-" << b.last << "</td>";
+      for (int k = 0; k < 3; ++k) html << "<td>" << Fixed(b.outcomes[k] / n, 3) << "</td>";
+      html << "<td>" << Fixed(b.epsilon_sum / n, 3) << "</td><td>" << Fixed(b.loss_sum / n, 5)
+           << "</td><td>" << static_cast<long>(b.memory_size) << "</td>";
+      for (int k = 0; k < 4; ++k) html << "<td>" << Fixed(b.memory[k] / m, 3) << "</td>";
+      html << "</tr>\n";
+    }
+    html << "</table>\n";
+  }
+  html << "<h2>Summary</h2>\n";
+  if (summary.empty()) {
+    html << "<p class=\"none\">no summary.json yet (written when a training stops)</p>\n";
+  } else {
+    html << "<pre>" << XmlEscape(summary) << "</pre>\n";
+  }
+  html << "<p class=\"meta\">Made by <code>crowdsim-bench report</code> from the training folder's "
+          "files.</p>\n</body></html>\n";
+  return html.str();
+}
+
+}  // namespace crowdsim::render
