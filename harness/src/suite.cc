@@ -3,6 +3,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <functional>
 #include <set>
 #include <sstream>
@@ -119,9 +121,40 @@ void CanonicalSim(const SimConfig& sim, std::ostream& os) {
      << sim.discomfort_penalty_factor << "," << sim.gamma << "\n";
 }
 
+namespace {
+
+/// FNV-1a of a file's bytes, as 16 hex digits ("unreadable" when it cannot be read).
+std::string FileContentHash(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return "unreadable";
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  char buf[1 << 16];
+  while (in.read(buf, sizeof(buf)) || in.gcount() > 0) {
+    for (std::streamsize i = 0; i < in.gcount(); ++i) {
+      h ^= static_cast<unsigned char>(buf[i]);
+      h *= 0x100000001b3ULL;
+    }
+  }
+  char out[17];
+  std::snprintf(out, sizeof(out), "%016llx", static_cast<unsigned long long>(h));
+  return out;
+}
+
+}  // namespace
+
 void Canonical(const PluginUse& u, std::ostream& os) {
   os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
-  for (const auto& [k, v] : u.params.values()) os << k << "=" << FormatParamValue(v) << ";";
+  for (const auto& [k, v] : u.params.values()) {
+    os << k << "=" << FormatParamValue(v);
+    // A parameter that names a file (weights, a world file) counts with its content: replacing
+    // the file at the same path is another configuration, never resumed as the old one.
+    if (const auto* text = std::get_if<std::string>(&v); text && !text->empty()) {
+      std::error_code ec;
+      const fs::path file = u.params.ResolvePath(*text);
+      if (fs::is_regular_file(file, ec)) os << "#content:" << FileContentHash(file);
+    }
+    os << ";";
+  }
   os << "}";
 }
 

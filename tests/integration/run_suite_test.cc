@@ -114,6 +114,30 @@ TEST_F(RunSuiteTest, RefusesToMixConfigurations) {
   EXPECT_EQ(RunSuite(t, registry_, o).episodes_run, 4);
 }
 
+TEST_F(RunSuiteTest, AFileReplacedAtTheSamePathIsAnotherConfiguration) {
+  // Parameters that name files (weights, world files) count with their content: new weights
+  // or an edited world at the same path must not resume the old file's episodes.
+  const std::string world = ReadText(testing::SourceDir() / "worlds" / "gibson" / "easy.yaml");
+  dir_.Write("world.yaml", world);
+  const std::string suite =
+      "name: files\nepisodes: 2\nseed: 3\nworld: {source: floorplan, file: world.yaml}\n"
+      "humans: {count: 2, policy: orca}\nrobot: {sensors: [person]}\n"
+      "rows:\n  - {label: orca, policy: orca}\n";
+  const Suite s = LoadOrDie(suite);
+  Run(s, "out", 1);
+  EXPECT_EQ(LoadOrDie(suite).ConfigHash(), s.ConfigHash());  // same bytes, same configuration
+  EXPECT_EQ(Run(LoadOrDie(suite), "out", 1).episodes_resumed, 2);
+  dir_.Write("world.yaml", world + "# edited\n");
+  const Suite edited = LoadOrDie(suite);
+  EXPECT_NE(edited.ConfigHash(), s.ConfigHash());
+  try {
+    Run(edited, "out", 1);
+    ADD_FAILURE() << "resumed the episodes of the old world file";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("--fresh"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(RunSuiteTest, PolicyErrorIsRecordedAndTheSuiteGoesOn) {
   const Suite s = LoadOrDie(R"(name: errors
 episodes: 3
