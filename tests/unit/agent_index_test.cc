@@ -36,6 +36,40 @@ TEST(AgentIndex, NearestMatchesBruteForce) {
   }
 }
 
+// Large crowds, queries inside and outside the grid, and many exact distance ties (agents on
+// a lattice): the ring search with its early stop returns exactly the brute-force answer.
+TEST(AgentIndex, NearestMatchesBruteForceInLargeCrowdsWithTies) {
+  Rng rng(11);
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = 200 + static_cast<int>(rng.Below(800));
+    std::vector<AgentState> agents(n);
+    for (int i = 0; i < n; ++i) {
+      agents[i].position = trial % 2 == 0 ? Vec2(rng.Uniform(0, 60), rng.Uniform(0, 60))
+                                          : Vec2(static_cast<double>(i % 30), static_cast<double>(i / 30));
+    }
+    AgentIndex index;
+    index.Rebuild(agents);
+    for (int q = 0; q < 40; ++q) {
+      const Vec2 p = q % 4 == 0 ? Vec2(rng.Uniform(-20, 80), rng.Uniform(-20, 80))
+                                : agents[rng.Below(n)].position;
+      const double range = rng.Uniform(0.5, 25);
+      const int k = 1 + static_cast<int>(rng.Below(20));
+      const int exclude = static_cast<int>(rng.Below(n));
+      std::vector<std::pair<double, int>> brute;
+      for (int i = 0; i < n; ++i) {
+        const double d2 = (agents[i].position - p).squaredNorm();
+        if (i != exclude && d2 < range * range) brute.emplace_back(d2, i);
+      }
+      std::sort(brute.begin(), brute.end());
+      if (static_cast<int>(brute.size()) > k) brute.resize(k);
+      std::vector<int> got;
+      index.Nearest(p, range, k, exclude, &got);
+      ASSERT_EQ(got.size(), brute.size()) << "trial " << trial << " query " << q;
+      for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], brute[i].second);
+    }
+  }
+}
+
 TEST(AgentIndex, EmptyAndSingle) {
   AgentIndex index;
   std::vector<AgentState> none;
