@@ -1,70 +1,171 @@
 // crowdsim-bench: the command-line entry point.
+#include <cctype>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli_args.h"
 #include "commands.h"
+#include "crowdsim/version.h"
 #include "floorplan_cli.h"
 
 namespace {
 
-constexpr const char* kUsage = R"(crowdsim-bench: robot navigation among people and obstacles (CrowdSim++ in C++)
+/// One subcommand: its name, its entry point and its usage text.
+struct Command {
+  const char* name;
+  int (*run)(const std::vector<std::string>&);
+  const char* usage;
+};
 
-usage:
-  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet]
+const std::vector<Command>& Commands() {
+  static const std::vector<Command> commands = {
+    {"run", crowdsim::cli::RunCommand, R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet]
       runs a suite; writes DIR/table.md, table.csv, episodes.csv, manifest.json
       (DIR defaults to results/<suite name>/); rerunning resumes finished episodes
-  crowdsim-bench validate FILE.yaml...
+)"},
+    {"validate", crowdsim::cli::ValidateCommand, R"(  crowdsim-bench validate FILE.yaml...
       checks suites (and training files) without running them; reports every error with
       file:line:col
-  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet]
+)"},
+    {"train", crowdsim::cli::TrainCommand, R"(  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet]
       trains a learned policy (cadrl, sarl): imitation of ORCA, then RL; writes
       DIR/weights.pt, best.pt, il.pt, training_log.csv (validation), training_episodes.csv
       (every episode), learning_curve.svg/.png, summary.json (DIR defaults to
       results/train/<name>/, with --seed N to results/train/<name>_seed<N>/); checkpoints
       every 500 episodes and on Ctrl-C; --resume continues exactly
-  crowdsim-bench floorplan import IMAGE [--resolution M] [--kind navmesh|outline] [--max-rectangles 30] --out WORLD.yaml
+)"},
+    {"floorplan", crowdsim::floorplan::RunFloorplanCli, R"(  crowdsim-bench floorplan import IMAGE [--resolution M] [--kind navmesh|outline] [--max-rectangles 30] --out WORLD.yaml
   crowdsim-bench floorplan preview WORLD.yaml [--image IMAGE] --out FILE.svg
   crowdsim-bench floorplan dataset --source DIR --out worlds/floorplans
       imports real floor plans into rectangle worlds (see worlds/floorplan/README.md)
-  crowdsim-bench render SUITE.yaml --row R --episode K [--compare R2] [--sensors-at STEP]
+)"},
+    {"render", crowdsim::cli::RenderCommand, R"(  crowdsim-bench render SUITE.yaml --row R --episode K [--compare R2] [--sensors-at STEP]
                  [--animate] [--speed X] [--scale S] --out FILE.{svg,png,pdf,gif,mp4}
       draws one episode (rows 1.. as in the table or by label, episodes 0..): trajectories,
       time marks, outcome; --compare adds a second row's robot; --sensors-at draws the lidar
       and person readings at a step; --animate writes a .gif (or .mp4) at --speed x real time
-  crowdsim-bench report RESULTS_DIR --out report.html [--suite SUITE.yaml]
+)"},
+    {"report", crowdsim::cli::ReportCommand, R"(  crowdsim-bench report RESULTS_DIR --out report.html [--suite SUITE.yaml]
       one self-contained HTML page of a run: table, charts, first success/collision/timeout;
       of a training folder (train --out): learning curve, validations, memory composition
       (--out FILE.svg/.png/.pdf: the learning curve alone)
-  crowdsim-bench list-plugins [PLUGIN.so...]
+)"},
+    {"list-plugins", crowdsim::cli::ListPluginsCommand, R"(  crowdsim-bench list-plugins [PLUGIN.so...]
       lists every plugin found, with its kind, description and parameters
-  crowdsim-bench help
+)"},
+  };
+  return commands;
+}
+
+constexpr const char* kHeader =
+    "crowdsim-bench: robot navigation among people and obstacles (CrowdSim++ in C++)\n\nusage:\n";
+
+constexpr const char* kFooter = R"(  crowdsim-bench help [COMMAND]   (or COMMAND --help)
+      this text, or one command's
+  crowdsim-bench --version
+      version and the git commit of the build
+  crowdsim-bench completion bash
+      a bash completion script: source <(crowdsim-bench completion bash)
+
+exit codes: 0 done; 1 failed while running (a plugin, a file, the disk); 2 usage or
+validation error (nothing was run); 130 interrupted (train: checkpoint written, --resume).
+environment: CROWDSIM_PLUGIN_PATH (extra plugin folders, searched first, ':'-separated),
+CROWDSIM_DATA_DIR (where worlds/ is found; default: the source folder of the build).
 )";
+
+void PrintUsage(std::ostream& os) {
+  os << kHeader;
+  for (const Command& c : Commands()) os << c.usage;
+  os << kFooter;
+}
+
+const Command* Find(const std::string& name) {
+  for (const Command& c : Commands()) {
+    if (name == c.name) return &c;
+  }
+  return nullptr;
+}
+
+std::string Names() {
+  std::string names;
+  for (const Command& c : Commands()) names += std::string(c.name) + ", ";
+  return names + "help";
+}
+
+/// Completes the command names, then options and files (the options are read off the usage).
+void PrintBashCompletion() {
+  std::cout << "# bash completion for crowdsim-bench (source <(crowdsim-bench completion bash))\n"
+               "_crowdsim_bench() {\n"
+               "  local cur=${COMP_WORDS[COMP_CWORD]}\n"
+               "  if [[ $COMP_CWORD -eq 1 ]]; then\n"
+               "    COMPREPLY=($(compgen -W \"";
+  for (const Command& c : Commands()) std::cout << c.name << " ";
+  std::cout << "help completion --version\" -- \"$cur\")); return\n  fi\n"
+               "  case ${COMP_WORDS[1]} in\n";
+  for (const Command& c : Commands()) {
+    std::string opts;
+    const std::string u = c.usage;
+    for (std::size_t p = u.find("--"); p != std::string::npos; p = u.find("--", p + 2)) {
+      std::size_t e = p + 2;
+      while (e < u.size() && (std::isalnum(static_cast<unsigned char>(u[e])) || u[e] == '-')) ++e;
+      const std::string opt = u.substr(p, e - p);
+      if (opt.size() > 2 && opts.find(opt + " ") == std::string::npos) opts += opt + " ";
+    }
+    std::cout << "    " << c.name << ") COMPREPLY=($(compgen -W \"" << opts << "--help\" -- \"$cur\") "
+              << "$(compgen -f -- \"$cur\"));;\n";
+  }
+  std::cout << "  esac\n}\ncomplete -o filenames -F _crowdsim_bench crowdsim-bench\n";
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
-    std::cout << kUsage;
-    return args.empty() ? 2 : 0;
-  }
-  const std::string command = args[0];
-  args.erase(args.begin());
-  try {
-    if (command == "run") return crowdsim::cli::RunCommand(args);
-    if (command == "validate") return crowdsim::cli::ValidateCommand(args);
-    if (command == "list-plugins") return crowdsim::cli::ListPluginsCommand(args);
-    if (command == "floorplan") return crowdsim::floorplan::RunFloorplanCli(args);
-    if (command == "train") return crowdsim::cli::TrainCommand(args);
-    if (command == "render") return crowdsim::cli::RenderCommand(args);
-    if (command == "report") return crowdsim::cli::ReportCommand(args);
-    std::cerr << "error: unknown command '" << command
-              << "' (valid: run, validate, train, floorplan, render, report, list-plugins, help)\n\n" << kUsage;
+  if (args.empty()) {
+    PrintUsage(std::cerr);
     return 2;
+  }
+  if (args[0] == "--version" || args[0] == "version") {
+    std::cout << "crowdsim-bench " << crowdsim::Version() << " (commit " << crowdsim::GitCommit() << ")\n";
+    return 0;
+  }
+  if (args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    if (args.size() > 1) {
+      const Command* c = Find(args[1]);
+      if (c == nullptr) {
+        std::cerr << "error: no command '" << args[1] << "' (valid: " << Names() << ")\n";
+        return 2;
+      }
+      std::cout << "usage:\n" << c->usage;
+      return 0;
+    }
+    PrintUsage(std::cout);
+    return 0;
+  }
+  if (args[0] == "completion") {
+    if (args.size() != 2 || args[1] != "bash") {
+      std::cerr << "error: completion needs the shell: crowdsim-bench completion bash\n";
+      return 2;
+    }
+    PrintBashCompletion();
+    return 0;
+  }
+  const Command* command = Find(args[0]);
+  if (command == nullptr) {
+    std::cerr << "error: unknown command '" << args[0] << "' (valid: " << Names() << ")\n"
+              << "(run `crowdsim-bench help` for the usage of every command)\n";
+    return 2;
+  }
+  args.erase(args.begin());
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::cout << "usage:\n" << command->usage;
+    return 0;
+  }
+  try {
+    return command->run(args);
   } catch (const crowdsim::cli::UsageError& e) {
-    std::cerr << "error: " << e.what() << "\n(run `crowdsim-bench help` for the usage of every command)\n";
+    std::cerr << "error: " << e.what() << "\nusage:\n" << command->usage;
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -204,5 +204,44 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_NE(mtext.find("suite file does not exist"), std::string::npos) << mtext;
 }
 
+TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
+  const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
+  auto [rc, text] = Shell(exe + " --version");
+  EXPECT_EQ(rc, 0) << text;
+  EXPECT_EQ(text.rfind("crowdsim-bench ", 0), 0u) << text;
+  EXPECT_NE(text.find("(commit "), std::string::npos) << text;
+  // One command's usage three ways; the whole usage documents exit codes and the environment.
+  const auto [h1, run_help] = Shell(exe + " run --help");
+  const auto [h2, help_run] = Shell(exe + " help run");
+  EXPECT_EQ(h1, 0);
+  EXPECT_EQ(h2, 0);
+  EXPECT_EQ(run_help, help_run);
+  EXPECT_NE(run_help.find("crowdsim-bench run SUITE.yaml"), std::string::npos) << run_help;
+  EXPECT_EQ(run_help.find("crowdsim-bench train"), std::string::npos) << run_help;
+  const auto [h3, all] = Shell(exe + " help");
+  EXPECT_EQ(h3, 0);
+  for (const char* word : {"exit codes:", "CROWDSIM_PLUGIN_PATH", "CROWDSIM_DATA_DIR", "crowdsim-bench train",
+                           "crowdsim-bench report"}) {
+    EXPECT_NE(all.find(word), std::string::npos) << word;
+  }
+  const auto [h4, missing] = Shell(exe + " help frob");
+  EXPECT_EQ(h4, 2);
+  EXPECT_NE(missing.find("no command 'frob' (valid: run, validate, train"), std::string::npos) << missing;
+  // A usage error shows that command's usage.
+  const auto [u, usage_error] = Shell(exe + " run");
+  EXPECT_EQ(u, 2);
+  EXPECT_NE(usage_error.find("error: run needs exactly one suite file\nusage:\n  crowdsim-bench run"),
+            std::string::npos) << usage_error;
+  // The completion script knows every command and each command's options, and is valid bash.
+  const auto [c, completion] = Shell(exe + " completion bash");
+  EXPECT_EQ(c, 0);
+  EXPECT_NE(completion.find("run validate train floorplan render report list-plugins"), std::string::npos);
+  EXPECT_NE(completion.find("train) COMPREPLY=($(compgen -W \"--resume --out --seed --quiet --help\""),
+            std::string::npos) << completion;
+  const auto script = dir_.Write("completion.bash", completion);
+  const auto [b, bash_text] = Shell("bash -n " + script.string());
+  EXPECT_EQ(b, 0) << bash_text;
+}
+
 }  // namespace
 }  // namespace crowdsim
