@@ -1,5 +1,10 @@
 // run, validate and list-plugins.
+#include <unistd.h>
+
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <thread>
@@ -35,6 +40,26 @@ bool LooksLikeTrainingFile(const std::string& file) {
   return false;
 }
 
+/// Ctrl-C during a run: finished episodes are already on disk, so say that a rerun resumes,
+/// then die of the signal as before (exit status 130 from the shell).
+char g_interrupt_message[1024];
+
+extern "C" void OnRunInterrupted(int sig) {
+  const ssize_t n = ::write(STDERR_FILENO, g_interrupt_message, std::strlen(g_interrupt_message));
+  (void)n;
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+void ExplainInterruption(const std::filesystem::path& out_dir) {
+  std::snprintf(g_interrupt_message, sizeof(g_interrupt_message),
+                "\ninterrupted: the finished episodes are kept in %s/episodes.csv; run the "
+                "command again without --fresh to resume\n",
+                out_dir.string().c_str());
+  std::signal(SIGINT, OnRunInterrupted);
+  std::signal(SIGTERM, OnRunInterrupted);
+}
+
 }  // namespace
 
 int RunCommand(const std::vector<std::string>& args) {
@@ -50,6 +75,7 @@ int RunCommand(const std::vector<std::string>& args) {
   opt.episodes = a.GetInt("--episodes", -1, 1, 10'000'000);
   opt.fresh = a.Has("--fresh");
   opt.progress = !a.Has("--quiet");
+  ExplainInterruption(opt.out_dir.empty() ? std::filesystem::path("results") / suite->name : opt.out_dir);
   try {
     RunSummary s = RunSuite(*suite, registry, opt);
     std::cout << "## " << suite->name;
