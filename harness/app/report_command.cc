@@ -13,13 +13,6 @@
 #include "crowdsim/results.h"
 
 namespace crowdsim::cli {
-namespace {
-
-std::string ReadFileIfAny(const std::filesystem::path& p) {
-  return std::filesystem::exists(p) ? render::ReadTextFile(p) : std::string();
-}
-
-}  // namespace
 
 int ReportCommand(const std::vector<std::string>& args) {
   const Args a = Args::Parse(args, {"--out", "--suite"}, {});
@@ -34,8 +27,8 @@ int ReportCommand(const std::vector<std::string>& args) {
     // A training folder's learning curve alone, as a figure.
     const std::string name = dir.filename().empty() ? dir.parent_path().filename().string()
                                                     : dir.filename().string();
-    render::WriteFigure(render::LearningCurveDrawing(ReadFileIfAny(dir / "training_episodes.csv"),
-                                                     ReadFileIfAny(dir / "training_log.csv"), name),
+    render::WriteFigure(render::LearningCurveDrawing(render::ReadTextFileIfExists(dir / "training_episodes.csv"),
+                                                     render::ReadTextFileIfExists(dir / "training_log.csv"), name),
                         *out);
     std::cerr << "wrote " << *out << "\n";
     return 0;

@@ -8,6 +8,22 @@
 namespace crowdsim {
 namespace {
 
+/// Nearest gives the brute-force answer: within range, nearest first, ties by index.
+void ExpectBruteForceAnswer(const std::vector<AgentState>& agents, const AgentIndex& index,
+                            const Vec2& p, double range, int k, int exclude) {
+  std::vector<std::pair<double, int>> brute;
+  for (int i = 0; i < static_cast<int>(agents.size()); ++i) {
+    const double d2 = (agents[i].position - p).squaredNorm();
+    if (i != exclude && d2 < range * range) brute.emplace_back(d2, i);
+  }
+  std::sort(brute.begin(), brute.end());
+  if (static_cast<int>(brute.size()) > k) brute.resize(k);
+  std::vector<int> got;
+  index.Nearest(p, range, k, exclude, &got);
+  ASSERT_EQ(got.size(), brute.size());
+  for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], brute[i].second);
+}
+
 TEST(AgentIndex, NearestMatchesBruteForce) {
   Rng rng(3);
   for (int trial = 0; trial < 50; ++trial) {
@@ -21,17 +37,7 @@ TEST(AgentIndex, NearestMatchesBruteForce) {
       const double range = rng.Uniform(0.5, 12);
       const int k = 1 + static_cast<int>(rng.Below(12));
       const int exclude = static_cast<int>(rng.Below(n));
-      std::vector<std::pair<double, int>> brute;
-      for (int i = 0; i < n; ++i) {
-        const double d2 = (agents[i].position - p).squaredNorm();
-        if (i != exclude && d2 < range * range) brute.emplace_back(d2, i);
-      }
-      std::sort(brute.begin(), brute.end());
-      if (static_cast<int>(brute.size()) > k) brute.resize(k);
-      std::vector<int> got;
-      index.Nearest(p, range, k, exclude, &got);
-      ASSERT_EQ(got.size(), brute.size());
-      for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], brute[i].second);
+      ExpectBruteForceAnswer(agents, index, p, range, k, exclude);
     }
   }
 }
@@ -55,17 +61,8 @@ TEST(AgentIndex, NearestMatchesBruteForceInLargeCrowdsWithTies) {
       const double range = rng.Uniform(0.5, 25);
       const int k = 1 + static_cast<int>(rng.Below(20));
       const int exclude = static_cast<int>(rng.Below(n));
-      std::vector<std::pair<double, int>> brute;
-      for (int i = 0; i < n; ++i) {
-        const double d2 = (agents[i].position - p).squaredNorm();
-        if (i != exclude && d2 < range * range) brute.emplace_back(d2, i);
-      }
-      std::sort(brute.begin(), brute.end());
-      if (static_cast<int>(brute.size()) > k) brute.resize(k);
-      std::vector<int> got;
-      index.Nearest(p, range, k, exclude, &got);
-      ASSERT_EQ(got.size(), brute.size()) << "trial " << trial << " query " << q;
-      for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], brute[i].second);
+      SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
+      ExpectBruteForceAnswer(agents, index, p, range, k, exclude);
     }
   }
 }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -12,6 +11,7 @@
 #include "crowdsim/csv.h"
 #include "crowdsim/render/figure_output.h"
 #include "crowdsim/render/palette.h"
+#include "crowdsim/render/results_folder.h"
 
 namespace crowdsim::render {
 namespace fs = std::filesystem;
@@ -20,37 +20,10 @@ namespace {
 
 enum Outcome { kSuccessful, kCollided, kTimedOut, kOutcomes };
 
-struct RlEpisode {
-  double epsilon = 0;
-  Outcome outcome = kTimedOut;
-};
-
 struct Validation {
   double episode = 0;
   double rate[kOutcomes] = {0, 0, 0};
 };
-
-std::vector<RlEpisode> ReadRlEpisodes(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string line;
-  std::vector<RlEpisode> out;
-  if (!std::getline(in, line)) return out;
-  std::map<std::string, std::size_t> col;
-  const auto header = SplitCsvLine(line);
-  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
-  if (!col.count("phase") || !col.count("epsilon") || !col.count("outcome")) return out;
-  const std::size_t need = std::max({col["phase"], col["epsilon"], col["outcome"]});
-  while (std::getline(in, line)) {
-    const auto f = SplitCsvLine(line);
-    if (f.size() <= need || f[col["phase"]] != "rl") continue;
-    RlEpisode e;
-    e.epsilon = std::atof(f[col["epsilon"]].c_str());
-    const std::string& o = f[col["outcome"]];
-    e.outcome = o == "success" ? kSuccessful : (o.rfind("collision", 0) == 0 ? kCollided : kTimedOut);
-    out.push_back(e);
-  }
-  return out;
-}
 
 std::vector<Validation> ReadValidations(const std::string& csv) {
   std::istringstream in(csv);
@@ -74,12 +47,6 @@ std::string Fixed(double v, int decimals) {
   return buf;
 }
 
-std::string ReadIfExists(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 /// Tick spacing 1, 2 or 5 times a power of ten, at most 10 intervals over [0, max].
 double TickStep(double max) {
@@ -92,9 +59,41 @@ double TickStep(double max) {
 
 }  // namespace
 
+std::vector<RlEpisodeRow> ParseRlEpisodes(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::vector<RlEpisodeRow> out;
+  if (!std::getline(in, line)) return out;
+  std::map<std::string, std::size_t> col;
+  const auto header = SplitCsvLine(line);
+  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+  const char* names[] = {"phase", "index", "epsilon", "outcome", "loss", "memory",
+                         "mem_imitation", "mem_success", "mem_collision", "mem_timeout"};
+  std::size_t need = 0;
+  for (const char* n : names) {
+    if (!col.count(n)) return out;
+    need = std::max(need, col[n]);
+  }
+  auto number = [](const std::string& s) { return std::atof(s.c_str()); };
+  while (std::getline(in, line)) {
+    const auto f = SplitCsvLine(line);
+    if (f.size() <= need || f[col["phase"]] != "rl") continue;
+    RlEpisodeRow e;
+    e.index = std::atoi(f[col["index"]].c_str());
+    e.epsilon = number(f[col["epsilon"]]);
+    const std::string& o = f[col["outcome"]];
+    e.outcome = o == "success" ? kSuccessful : (o.rfind("collision", 0) == 0 ? kCollided : kTimedOut);
+    e.loss = number(f[col["loss"]]);
+    e.memory = number(f[col["memory"]]);
+    for (int k = 0; k < 4; ++k) e.sources[k] = number(f[col[names[6 + k]]]);
+    out.push_back(e);
+  }
+  return out;
+}
+
 Drawing LearningCurveDrawing(const std::string& episodes_csv, const std::string& validation_csv,
                              const std::string& title) {
-  const std::vector<RlEpisode> eps = ReadRlEpisodes(episodes_csv);
+  const std::vector<RlEpisodeRow> eps = ParseRlEpisodes(episodes_csv);
   const std::vector<Validation> val = ReadValidations(validation_csv);
   double max_x = static_cast<double>(eps.size());
   for (const auto& v : val) max_x = std::max(max_x, v.episode);
@@ -207,7 +206,7 @@ void WriteLearningCurve(const fs::path& folder, const std::string& title) {
     throw std::runtime_error("'" + folder.string() + "' holds neither training_episodes.csv nor "
                              "training_log.csv: not a training folder");
   }
-  const Drawing d = LearningCurveDrawing(ReadIfExists(episodes), ReadIfExists(validation), title);
+  const Drawing d = LearningCurveDrawing(ReadTextFileIfExists(episodes), ReadTextFileIfExists(validation), title);
   WriteFigure(d, folder / "learning_curve.svg");
   WriteFigure(d, folder / "learning_curve.png", 1.0);
 }

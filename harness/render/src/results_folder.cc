@@ -81,6 +81,10 @@ CsvTable ReadCsv(const std::filesystem::path& path) {
   return t;
 }
 
+std::string ReadTextFileIfExists(const std::filesystem::path& path) {
+  return std::filesystem::exists(path) ? ReadTextFile(path) : std::string();
+}
+
 std::string ReadTextFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + path.string());

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <map>
 #include <sstream>
 
 #include "crowdsim/csv.h"
@@ -33,42 +32,23 @@ std::string Fixed(double v, int decimals) {
 }
 
 std::vector<Block> RlBlocks(const std::string& csv, int block_size) {
-  std::istringstream in(csv);
-  std::string line;
   std::vector<Block> blocks;
-  if (!std::getline(in, line)) return blocks;
-  std::map<std::string, std::size_t> col;
-  const auto header = SplitCsvLine(line);
-  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
-  for (const char* need : {"phase", "index", "epsilon", "outcome", "loss", "memory", "mem_imitation",
-                           "mem_success", "mem_collision", "mem_timeout"}) {
-    if (!col.count(need)) return blocks;
-  }
-  while (std::getline(in, line)) {
-    const auto f = SplitCsvLine(line);
-    if (f.size() < header.size() || f[col["phase"]] != "rl") continue;
-    const int index = std::atoi(f[col["index"]].c_str());
-    if (blocks.empty() || index / block_size != blocks.back().first / block_size) {
+  for (const RlEpisodeRow& e : ParseRlEpisodes(csv)) {
+    if (blocks.empty() || e.index / block_size != blocks.back().first / block_size) {
       blocks.push_back(Block{});
-      blocks.back().first = index;
+      blocks.back().first = e.index;
     }
     Block& b = blocks.back();
-    b.last = index;
+    b.last = e.index;
     ++b.episodes;
-    const std::string& o = f[col["outcome"]];
-    ++b.outcomes[o == "success" ? 0 : (o.rfind("collision", 0) == 0 ? 1 : 2)];
-    b.epsilon_sum += std::atof(f[col["epsilon"]].c_str());
-    b.loss_sum += std::atof(f[col["loss"]].c_str());
-    b.memory_size = std::atof(f[col["memory"]].c_str());
-    int k = 0;
-    for (const char* m : {"mem_imitation", "mem_success", "mem_collision", "mem_timeout"}) {
-      b.memory[k++] = std::atof(f[col[m]].c_str());
-    }
+    ++b.outcomes[e.outcome];
+    b.epsilon_sum += e.epsilon;
+    b.loss_sum += e.loss;
+    b.memory_size = e.memory;
+    b.memory = e.sources;
   }
   return blocks;
 }
-
-std::string ReadIfExists(const fs::path& p) { return fs::exists(p) ? ReadTextFile(p) : std::string(); }
 
 }  // namespace
 
@@ -81,10 +61,10 @@ std::string BuildTrainingReport(const fs::path& dir) {
     throw ReportError("'" + dir.string() + "' is not a training folder (no training_episodes.csv "
                       "or training_log.csv): give the --out of `crowdsim-bench train`");
   }
-  const std::string summary = ReadIfExists(dir / "summary.json");
+  const std::string summary = ReadTextFileIfExists(dir / "summary.json");
   const std::string name = JsonStringField(summary, "name").value_or(dir.filename().string());
-  const std::string episodes = ReadIfExists(dir / "training_episodes.csv");
-  const std::string validation = ReadIfExists(dir / "training_log.csv");
+  const std::string episodes = ReadTextFileIfExists(dir / "training_episodes.csv");
+  const std::string validation = ReadTextFileIfExists(dir / "training_log.csv");
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << XmlEscape(name)
        << " · crowdsim-bench training report</title>\n<style>" << ReportCss()

@@ -24,5 +24,7 @@ CsvTable ReadCsv(const std::filesystem::path& path);
 
 /// Whole file as a string. Throws std::runtime_error naming the path.
 std::string ReadTextFile(const std::filesystem::path& path);
+/// Whole file as a string, or "" when there is no such file (a log not written yet).
+std::string ReadTextFileIfExists(const std::filesystem::path& path);
 
 }  // namespace crowdsim::render
