@@ -73,6 +73,13 @@ void ReadSim(Reader& r, const YAML::Node& n, SimConfig* sim) {
   if (n["robot_visible"]) {
     if (auto b = r.Bool(n["robot_visible"], "sim.robot_visible")) sim->robot_visible = *b;
   }
+  // A step count beyond any real episode is a typo (time_step: 1e-300 ran forever).
+  constexpr double kMaxSteps = 1e6;
+  if (sim->time_limit / sim->time_step > kMaxSteps) {
+    r.Error(n["time_step"] ? n["time_step"] : n, "sim.time_step",
+            "time_limit / time_step = " + std::to_string(sim->time_limit / sim->time_step) +
+                " steps per episode, more than 1,000,000; raise time_step or lower time_limit");
+  }
 }
 
 void ReadWorld(Reader& r, const YAML::Node& n, const std::string& path, const fs::path& base,

@@ -1,8 +1,11 @@
 #include "crowdsim/world_file.h"
 
+#include <cmath>
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -32,6 +35,8 @@ std::vector<double> Numbers(const std::string& file, const YAML::Node& n, size_t
     } catch (const YAML::Exception&) {
       Fail(file, x, "'" + key + "' holds a value that is not a number");
     }
+    // .inf or .nan would silently drop out of every geometric test.
+    if (!std::isfinite(v.back())) Fail(file, x, "'" + key + "' holds '" + x.Scalar() + "', not a finite number");
   }
   return v;
 }

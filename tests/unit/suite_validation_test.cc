@@ -138,6 +138,15 @@ TEST_F(SuiteValidation, BrokenPluginByPathIsReported) {
   EXPECT_NE(Find(r, "ABI version"), "") << All(r);
 }
 
+TEST_F(SuiteValidation, EpisodesOfMoreThanAMillionStepsAreATypo) {
+  std::string text = kGood;
+  text.insert(text.find("world:"), "sim: {time_step: 1e-300}\n");
+  const SuiteLoadResult r = Load(text);
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "sim.time_step: time_limit / time_step"), "") << All(r);
+  EXPECT_NE(Find(r, "more than 1,000,000"), "") << All(r);
+}
+
 TEST_F(SuiteValidation, DuplicateLabels) {
   auto r = Load("name: t\nworld: {source: random_rect}\nrows:\n  - {policy: linear}\n  - {policy: linear}\n");
   ASSERT_FALSE(r.suite);

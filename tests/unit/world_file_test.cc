@@ -123,6 +123,21 @@ TEST(WorldFileMask, WriterRejectsAMaskOfTheWrongSize) {
   EXPECT_THROW(WriteWorldFile(w, dir.path() / "bad.yaml"), WorldFileError);
 }
 
+TEST(WorldFileValues, NonFiniteCoordinatesAreRejected) {
+  TempDir dir;
+  for (const char* bad : {"[-.inf, -1, 1, 1]", "[0, 0, .nan, 1]", "[0, 0, 1, .Inf]"}) {
+    const auto file = dir.Write("w.yaml", std::string("format: crowdsim-world/1\nname: \"w\"\nbounds: [-5, -5, 5, 5]\n"
+                                                      "rectangles:\n  - ") + bad + "\n");
+    try {
+      ReadWorldFile(file);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const WorldFileError& e) {
+      EXPECT_NE(std::string(e.what()).find("not a finite number"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("w.yaml:5:"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(WorldFileMask, MalformedMasksNameTheFileLineAndKey) {
   TempDir dir;
   ASSERT_TRUE(ReadWorldFile(dir.Write("good.yaml", WithMask(kGoodMask))).mask);
