@@ -7,6 +7,7 @@
 namespace crowdsim::cli {
 
 int RunCommand(const std::vector<std::string>& args);
+int MergeCommand(const std::vector<std::string>& args);
 int ValidateCommand(const std::vector<std::string>& args);
 int ListPluginsCommand(const std::vector<std::string>& args);
 int TrainCommand(const std::vector<std::string>& args);

@@ -20,9 +20,14 @@ struct Command {
 
 const std::vector<Command>& Commands() {
   static const std::vector<Command> commands = {
-    {"run", crowdsim::cli::RunCommand, R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet]
+    {"run", crowdsim::cli::RunCommand, R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet] [--shard K/N]
       runs a suite; writes DIR/table.md, table.csv, episodes.csv, manifest.json
-      (DIR defaults to results/<suite name>/); rerunning resumes finished episodes
+      (DIR defaults to results/<suite name>/); rerunning resumes finished episodes;
+      --shard K/N runs only the K-th of N disjoint slices of the episodes (a cluster job array)
+)"},
+    {"merge", crowdsim::cli::MergeCommand, R"(  crowdsim-bench merge SHARD_DIR... --out DIR [--suite SUITE.yaml]
+      joins the output folders of `run --shard K/N` into the tables of a single run, after
+      checking that they are one configuration and hold every episode exactly once
 )"},
     {"validate", crowdsim::cli::ValidateCommand, R"(  crowdsim-bench validate FILE.yaml...
       checks suites (and training files) without running them; reports every error with

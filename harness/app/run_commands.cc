@@ -63,8 +63,19 @@ void ExplainInterruption(const std::filesystem::path& out_dir) {
 }  // namespace
 
 int RunCommand(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args, {"--out", "--jobs", "--episodes"}, {"--fresh", "--quiet"});
+  const Args a = Args::Parse(args, {"--out", "--jobs", "--episodes", "--shard"}, {"--fresh", "--quiet"});
   if (a.positional.size() != 1) throw UsageError("run needs exactly one suite file");
+  int shard_index = 1, shard_count = 1;
+  if (auto shard = a.Get("--shard")) {
+    char slash = 0, extra = 0;
+    if (std::sscanf(shard->c_str(), "%d%c%d%c", &shard_index, &slash, &shard_count, &extra) != 3 ||
+        slash != '/' || shard_count < 1 || shard_count > 1'000'000 || shard_index < 1 ||
+        shard_index > shard_count) {
+      throw UsageError("--shard needs K/N with 1 <= K <= N (e.g. --shard 2/8, or "
+                       "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT with ids from 1), got '" +
+                       *shard + "'");
+    }
+  }
   PluginRegistry registry;
   auto suite = LoadOrReport(a.positional[0], registry);
   if (!suite) return 2;
@@ -75,14 +86,36 @@ int RunCommand(const std::vector<std::string>& args) {
   opt.episodes = a.GetInt("--episodes", -1, 1, 10'000'000);
   opt.fresh = a.Has("--fresh");
   opt.progress = !a.Has("--quiet");
+  opt.shard_index = shard_index;
+  opt.shard_count = shard_count;
   ExplainInterruption(opt.out_dir.empty() ? std::filesystem::path("results") / suite->name : opt.out_dir);
   try {
     RunSummary s = RunSuite(*suite, registry, opt);
     std::cout << "## " << suite->name;
     if (!suite->description.empty()) std::cout << ": " << suite->description;
     std::cout << "\n\n" << s.table_markdown << "\n";
-    std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
+    std::cerr << "wrote " << (s.out_dir / (shard_count > 1 ? "episodes.csv" : "table.md")).string()
+              << (shard_count > 1 ? ", manifest.json (" : ", table.csv, episodes.csv, manifest.json (")
               << s.episodes_run << " episodes run, " << s.episodes_resumed << " resumed)\n";
+  } catch (const RunError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+int MergeCommand(const std::vector<std::string>& args) {
+  const Args a = Args::Parse(args, {"--out", "--suite"}, {});
+  if (a.positional.empty()) throw UsageError("merge needs the output folders of the shards");
+  const auto out = a.Get("--out");
+  if (!out) throw UsageError("merge needs --out DIR (the folder of the joined results)");
+  std::vector<std::filesystem::path> dirs(a.positional.begin(), a.positional.end());
+  PluginRegistry registry;
+  try {
+    const RunSummary s = MergeShards(dirs, *out, a.Get("--suite").value_or(""), registry);
+    std::cout << s.table_markdown << "\n";
+    std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
+              << s.episodes_resumed << " episodes from " << dirs.size() << " folders)\n";
   } catch (const RunError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;

@@ -239,6 +239,7 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   os << "  \"config_hash\": " << JsonString(suite.ConfigHash()) << ",\n";
   os << "  \"seed\": " << suite.seed << ",\n";
   os << "  \"episodes\": " << facts.episodes << ",\n";
+  if (!facts.shard.empty()) os << "  \"shard\": " << JsonString(facts.shard) << ",\n";
   os << "  \"jobs\": " << facts.jobs << ",\n";
   os << "  \"started_utc\": " << JsonString(facts.started_utc) << ",\n";
   os << "  \"finished_utc\": " << JsonString(facts.finished_utc) << ",\n";
@@ -309,6 +310,17 @@ std::string ReadManifestField(const fs::path& path, const std::string& field) {
     }
   }
   return "";
+}
+
+long ReadManifestInteger(const fs::path& path, const std::string& field) {
+  std::ifstream f(path);
+  std::string line;
+  const std::string key = "\"" + field + "\": ";
+  while (std::getline(f, line)) {
+    const auto p = line.find(key);
+    if (p != std::string::npos) return std::strtol(line.c_str() + p + key.size(), nullptr, 10);
+  }
+  return -1;
 }
 
 void WriteFileAtomically(const fs::path& path, const std::string& text) {

@@ -75,6 +75,16 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   facts.jobs = std::max(1, options.jobs);
   const int episodes = options.episodes > 0 ? options.episodes : suite.episodes;
   facts.episodes = episodes;
+  const int shards = std::max(1, options.shard_count);
+  if (options.shard_index < 1 || options.shard_index > shards) {
+    throw RunError("shard " + std::to_string(options.shard_index) + "/" + std::to_string(shards) +
+                   " does not exist (shards are numbered 1.." + std::to_string(shards) + ")");
+  }
+  if (shards > 1) facts.shard = std::to_string(options.shard_index) + "/" + std::to_string(shards);
+  auto in_shard = [&](size_t row, int k) {
+    return (row * static_cast<size_t>(episodes) + static_cast<size_t>(k)) % static_cast<size_t>(shards) ==
+           static_cast<size_t>(options.shard_index - 1);
+  };
 
   RunSummary summary;
   summary.out_dir = options.out_dir.empty() ? fs::path("results") / suite.name : options.out_dir;
@@ -150,6 +160,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   int resumed = 0;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     for (int k = 0; k < episodes; ++k) {
+      if (!in_shard(r, k)) continue;
       if (done.count({suite.rows[r].label, k})) {
         ++resumed;
       } else {
@@ -165,8 +176,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   std::atomic<size_t> next{0};
   std::atomic<bool> failed{false};
   std::string failure;
-  Progress progress(suite.name, static_cast<int>(suite.rows.size()) * episodes, resumed,
-                    options.progress);
+  Progress progress(suite.name, static_cast<int>(tasks.size()) + resumed, resumed, options.progress);
 
   auto worker = [&]() {
     std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());
@@ -212,6 +222,27 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   out.close();
   if (failed) throw RunError(failure + " (finished episodes are kept in " + episodes_csv.string() + "; rerun to resume)");
   summary.episodes_run = static_cast<int>(tasks.size());
+
+  if (shards > 1) {
+    // A shard: its episodes in (row, episode) order and a manifest saying which shard; the
+    // tables come from `merge`.
+    std::string text = EpisodeCsvHeader() + "\n";
+    for (size_t r = 0; r < suite.rows.size(); ++r) {
+      for (int k = 0; k < episodes; ++k) {
+        if (in_shard(r, k)) text += FormatEpisodeLine(done.at({suite.rows[r].label, k})) + "\n";
+      }
+    }
+    WriteFileAtomically(episodes_csv, text);
+    fs::remove(summary.out_dir / "table.md", ec);
+    fs::remove(summary.out_dir / "table.csv", ec);
+    facts.finished_utc = NowUtc();
+    facts.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    WriteFileAtomically(manifest, FormatManifestJson(suite, {}, facts));
+    summary.table_markdown = "shard " + facts.shard + " of suite " + suite.name + ": " +
+                             std::to_string(resumed + summary.episodes_run) +
+                             " episodes; join the shards with `crowdsim-bench merge`\n";
+    return summary;
+  }
 
   // Final files: episodes in (row, episode) order, so any job count gives the same file.
   std::string text = EpisodeCsvHeader() + "\n";

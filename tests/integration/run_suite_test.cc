@@ -17,6 +17,7 @@
 namespace crowdsim {
 namespace {
 
+namespace fs = std::filesystem;
 using testing::ReadText;
 using testing::TempDir;
 
@@ -136,6 +137,57 @@ TEST_F(RunSuiteTest, AFileReplacedAtTheSamePathIsAnotherConfiguration) {
   } catch (const RunError& e) {
     EXPECT_NE(std::string(e.what()).find("--fresh"), std::string::npos) << e.what();
   }
+}
+
+TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "whole", 2);
+  std::vector<std::filesystem::path> shards;
+  int episodes = 0;
+  for (int k = 1; k <= 3; ++k) {
+    RunOptions o;
+    o.out_dir = dir_.path() / ("shard" + std::to_string(k));
+    o.shard_index = k;
+    o.shard_count = 3;
+    o.progress = false;
+    episodes += RunSuite(s, registry_, o).episodes_run;
+    EXPECT_FALSE(std::filesystem::exists(o.out_dir / "table.md"));
+    EXPECT_NE(ReadText(o.out_dir / "manifest.json").find("\"shard\": \"" + std::to_string(k) + "/3\""),
+              std::string::npos);
+    shards.push_back(o.out_dir);
+  }
+  EXPECT_EQ(episodes, 2 * 12);  // disjoint slices that cover the suite
+  const fs::path suite_file = dir_.path() / "suite.yaml";
+  const RunSummary merged = MergeShards(shards, dir_.path() / "merged", suite_file, registry_);
+  EXPECT_EQ(merged.episodes_resumed, 24);
+  EXPECT_EQ(WithoutWallTime(ReadText(dir_.path() / "whole" / "episodes.csv")),
+            WithoutWallTime(ReadText(dir_.path() / "merged" / "episodes.csv")));
+  EXPECT_EQ(ReadText(dir_.path() / "whole" / "table.csv").substr(0, 200),
+            ReadText(dir_.path() / "merged" / "table.csv").substr(0, 200));
+  EXPECT_EQ(ReadManifestField(dir_.path() / "merged" / "manifest.json", "config_hash"), s.ConfigHash());
+
+  // A missing shard, a shard given twice, a shard of another configuration: each named.
+  auto merge_error = [&](const std::vector<std::filesystem::path>& dirs) {
+    try {
+      MergeShards(dirs, dir_.path() / "bad", suite_file, registry_);
+    } catch (const RunError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(merge_error({shards[0], shards[1]}).find("is in none of the 2 folders"), std::string::npos);
+  EXPECT_NE(merge_error({shards[0], shards[1], shards[1]}).find("shard 2/3 is given twice"), std::string::npos);
+  EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "whole"}).find("is in both"), std::string::npos);
+  std::string other = kSuite;
+  other.replace(other.find("seed: 11"), 8, "seed: 12");
+  const Suite t = LoadOrDie(other);
+  RunOptions o;
+  o.out_dir = dir_.path() / "other";
+  o.shard_count = 3;
+  o.shard_index = 3;
+  o.progress = false;
+  RunSuite(t, registry_, o);
+  EXPECT_NE(merge_error({shards[0], shards[1], o.out_dir}).find("holds another configuration"), std::string::npos);
 }
 
 TEST_F(RunSuiteTest, PolicyErrorIsRecordedAndTheSuiteGoesOn) {

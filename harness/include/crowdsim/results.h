@@ -48,6 +48,7 @@ struct RunFacts {
   int episodes = 0;
   double wall_seconds = 0.0;
   std::map<std::string, std::string> world_identities;  ///< per row label
+  std::string shard;  ///< "K/N" for a shard of a run, empty for a whole run
 };
 std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& rows,
                                const RunFacts& facts);
@@ -55,6 +56,8 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
 /// Reads a top-level string field (e.g. "config_hash", "git_commit") of a manifest.json
 /// ("" if absent or unreadable).
 std::string ReadManifestField(const std::filesystem::path& path, const std::string& key);
+/// Reads a top-level whole-number field (e.g. "episodes") of a manifest.json (-1 if absent).
+long ReadManifestInteger(const std::filesystem::path& path, const std::string& key);
 
 /// Writes text to `path` atomically (temporary file, then rename).
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);

@@ -24,6 +24,11 @@ struct RunOptions {
   int episodes = -1;              ///< overrides the suite's count when > 0
   bool fresh = false;             ///< discard stored episodes instead of resuming
   bool progress = true;           ///< progress line on stderr
+  /// Shard `shard_index` (1-based) of `shard_count`: only the (row, episode) pairs whose
+  /// position in row-major order is shard_index - 1 modulo shard_count; no table is written
+  /// (`merge` joins the shards). 1 of 1 is the whole suite.
+  int shard_index = 1;
+  int shard_count = 1;
 };
 
 struct RunSummary {
@@ -33,6 +38,14 @@ struct RunSummary {
   int episodes_resumed = 0;  ///< found on disk
   std::filesystem::path out_dir;
 };
+
+/// Joins the output folders of the shards of one suite run into `out_dir` and writes the tables
+/// as a single run would: the shards must hold the same configuration (config hash, episode
+/// count) and together every (row, episode) exactly once. `suite_file` empty: the manifests'.
+/// Throws RunError naming the folder and the episode at fault.
+RunSummary MergeShards(const std::vector<std::filesystem::path>& shard_dirs,
+                       const std::filesystem::path& out_dir, const std::filesystem::path& suite_file,
+                       PluginRegistry& registry);
 
 /// Runs the suite and writes DIR/{episodes.csv, table.md, table.csv, manifest.json}.
 /// Throws RunError for problems that stop the whole run (output folder, mismatched results).

@@ -1,0 +1,103 @@
+// `crowdsim-bench merge`: the shards of one suite run, checked and joined into the output a
+// single run writes (the tables are made by the runner's own resume of the joined episodes).
+#include <map>
+#include <set>
+
+#include "crowdsim/results.h"
+#include "crowdsim/runner.h"
+
+namespace crowdsim {
+namespace fs = std::filesystem;
+
+RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& out_dir,
+                       const fs::path& suite_file, PluginRegistry& registry) {
+  if (shard_dirs.empty()) throw RunError("merge needs the output folders of the shards");
+  std::string hash, episodes_text, manifest_suite;
+  std::map<std::pair<std::string, int>, std::pair<EpisodeLine, fs::path>> lines;
+  std::set<std::string> shards_seen;
+  for (const fs::path& dir : shard_dirs) {
+    const fs::path manifest = dir / "manifest.json";
+    if (!fs::exists(manifest) || !fs::exists(dir / "episodes.csv")) {
+      throw RunError("'" + dir.string() + "' is not the output folder of a run (no manifest.json "
+                     "and episodes.csv)");
+    }
+    const std::string h = ReadManifestField(manifest, "config_hash");
+    const std::string shard = ReadManifestField(manifest, "shard");
+    if (hash.empty()) {
+      hash = h;
+      manifest_suite = ReadManifestField(manifest, "suite_file");
+    } else if (h != hash) {
+      throw RunError("'" + dir.string() + "' holds another configuration (config hash " + h +
+                     ", the first folder " + hash + "): shards of one run only");
+    }
+    if (!shard.empty() && !shards_seen.insert(shard).second) {
+      throw RunError("shard " + shard + " is given twice ('" + dir.string() + "')");
+    }
+    for (auto& line : ReadEpisodesCsv(dir / "episodes.csv")) {
+      const auto key = std::make_pair(line.row, line.episode);
+      if (auto it = lines.find(key); it != lines.end()) {
+        throw RunError("episode " + std::to_string(line.episode) + " of row '" + line.row +
+                       "' is in both '" + it->second.second.string() + "' and '" + dir.string() +
+                       "'");
+      }
+      lines.emplace(key, std::make_pair(std::move(line), dir));
+    }
+  }
+  const fs::path file = suite_file.empty() ? fs::path(manifest_suite) : suite_file;
+  SuiteLoadResult loaded = LoadSuite(file, registry);
+  if (!loaded.suite) {
+    std::string msg = "cannot load the suite '" + file.string() + "' of the shards:";
+    for (const auto& e : loaded.errors) msg += "\n  " + e.Format();
+    throw RunError(msg);
+  }
+  const Suite& suite = *loaded.suite;
+  if (suite.ConfigHash() != hash) {
+    throw RunError("the suite '" + file.string() + "' is now another configuration (config hash " +
+                   suite.ConfigHash() + ") than the shards' (" + hash + "): restore it, or rerun");
+  }
+  const long episodes = ReadManifestInteger(shard_dirs.front() / "manifest.json", "episodes");
+  if (episodes < 1) {
+    throw RunError("'" + (shard_dirs.front() / "manifest.json").string() + "' names no episode count");
+  }
+  // Every (row, episode) exactly once, nothing else.
+  std::set<std::string> labels;
+  for (const RowSpec& row : suite.rows) {
+    labels.insert(row.label);
+    for (int k = 0; k < episodes; ++k) {
+      if (!lines.count({row.label, k})) {
+        throw RunError("episode " + std::to_string(k) + " of row '" + row.label + "' is in none of the " +
+                       std::to_string(shard_dirs.size()) + " folders: a shard is missing or unfinished "
+                       "(rerun it; finished episodes resume)");
+      }
+    }
+  }
+  for (const auto& [key, value] : lines) {
+    if (!labels.count(key.first) || key.second >= episodes) {
+      throw RunError("'" + value.second.string() + "' holds episode " + std::to_string(key.second) +
+                     " of row '" + key.first + "', which the suite's " + std::to_string(episodes) +
+                     " episodes do not have");
+    }
+  }
+  // The joined episodes under the shards' configuration: the runner resumes all of them and
+  // writes the tables and manifest exactly as after a single run.
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || !fs::is_directory(out_dir)) {
+    throw RunError("cannot create the output folder '" + out_dir.string() + "': " + ec.message());
+  }
+  std::string text = EpisodeCsvHeader() + "\n";
+  for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
+  WriteFileAtomically(out_dir / "episodes.csv", text);
+  WriteFileAtomically(out_dir / "manifest.json", "{\n  \"config_hash\": \"" + hash + "\"\n}\n");
+  RunOptions options;
+  options.out_dir = out_dir;
+  options.episodes = static_cast<int>(episodes);
+  options.progress = false;
+  RunSummary summary = RunSuite(suite, registry, options);
+  if (summary.episodes_run != 0) {
+    throw RunError("merge ran " + std::to_string(summary.episodes_run) + " episodes: a bug, please report");
+  }
+  return summary;
+}
+
+}  // namespace crowdsim
