@@ -46,7 +46,7 @@ class ValuePolicy final : public Policy, public Trainable {
 
   const ValueRlConfig& config() const;
   /// The model's values of `states`, one batch (no gradients).
-  std::vector<float> Values(std::span<const EncodedState* const> states);
+  std::vector<float> Values(std::span<const EncodedState* const> states) override;
   /// r + gamma^(dt v_pref) V(s') of every candidate at the last lookahead decision.
   const std::vector<float>& last_action_values() const;
   /// Trainable scalars of the model.

@@ -42,6 +42,8 @@ class Trainable {
                             std::span<const float> targets) = 0;
   /// Values of the target network for `states` (one batch), in order.
   virtual std::vector<float> TargetValues(std::span<const EncodedState* const> states) = 0;
+  /// Values of the model (the network being trained) for `states`, in order (diagnostics).
+  virtual std::vector<float> Values(std::span<const EncodedState* const> states) = 0;
   /// Target network = copy of the model.
   virtual void UpdateTargetNetwork() = 0;
 

@@ -100,6 +100,8 @@ struct Trajectory {
   EpisodeResult result;
 };
 
+constexpr std::size_t kProbeStates = 200;
+
 class Trainer {
  public:
   Trainer(const TrainSpec& spec, PluginRegistry& registry, const TrainOptions& options)
@@ -152,6 +154,7 @@ class Trainer {
   EpisodeAgents agents_;
 
   ReplayMemory memory_;
+  ReplayMemory probe_{kProbeStates};  ///< fixed states whose mean value each validation logs
   EpisodeLog episode_log_;
   CheckpointState state_;
   TrainingProgress progress_;
@@ -261,6 +264,11 @@ void Trainer::Demonstrations() {
     if (state_.counter % t_.checkpoint_interval == 0 && state_.counter < t_.il_episodes) SaveCheckpoint();
   }
   if (state_.counter >= t_.il_episodes) {
+    // Probe states: evenly spread over the demonstrations, fixed for the rest of the training.
+    const std::size_t stride = std::max<std::size_t>(1, memory_.size() / kProbeStates);
+    for (std::size_t i = 0; i < memory_.size() && probe_.size() < kProbeStates; i += stride) {
+      probe_.Push(memory_.state(i), memory_.value(i), MemorySource::kImitation);
+    }
     state_.phase = TrainPhase::kImitation;
     state_.counter = 0;
     learner_->SetLearningRate(t_.il_learning_rate, t_.momentum);
@@ -336,6 +344,14 @@ ValidationResult Trainer::Validate(int rl_episode) {
       default: ++timeout; break;
     }
   }
+  if (probe_.size() > 0) {
+    std::vector<const EncodedState*> probe;
+    for (std::size_t i = 0; i < probe_.size(); ++i) probe.push_back(&probe_.state(i));
+    const std::vector<float> values = learner_->Values(probe);
+    double sum = 0.0;
+    for (float x : values) sum += x;
+    v.probe_value = sum / static_cast<double>(values.size());
+  }
   const double n = std::max(1, t_.validation_episodes);
   v.success = success / n;
   v.collision = collision / n;
@@ -344,7 +360,8 @@ ValidationResult Trainer::Validate(int rl_episode) {
   summary_.times.validation += Since(t0);
   std::ostringstream os;
   os << "validation after " << rl_episode << " RL episodes: success " << v.success << ", collision "
-     << v.collision << ", timeout " << v.timeout << ", nav time " << v.nav_time;
+     << v.collision << ", timeout " << v.timeout << ", nav time " << v.nav_time
+     << ", probe value " << v.probe_value;
   if (v.success > state_.best_success) {
     state_.best_success = v.success;
     state_.best_episode = rl_episode;
@@ -426,6 +443,7 @@ void Trainer::SaveCheckpoint() {
   learner_->SaveWeights(tmp / "model.pt");
   learner_->SaveTrainingState(tmp);
   memory_.Save(tmp / "memory.bin");
+  probe_.Save(tmp / "probe.bin");
   state_.episode_log_bytes = episode_log_.Flush();
   WriteCheckpointState(tmp / "state.txt", state_);
   // The complete new checkpoint replaces the old one; LoadCheckpoint also accepts a
@@ -455,6 +473,7 @@ void Trainer::LoadCheckpoint() {
     learner_->LoadWeights(dir / "model.pt");
     learner_->LoadTrainingState(dir);
     memory_.Load(dir / "memory.bin");
+    if (fs::exists(dir / "probe.bin")) probe_.Load(dir / "probe.bin");
   } catch (const std::exception& e) {
     throw TrainError("--resume: " + std::string(e.what()));
   }

@@ -1,6 +1,9 @@
 #include "training_checkpoint.h"
 
+#include <cmath>
 #include <fstream>
+#include <limits>
+#include <string>
 #include <sstream>
 
 namespace crowdsim::training {
@@ -8,7 +11,7 @@ namespace crowdsim::training {
 void WriteCheckpointState(const std::filesystem::path& file, const CheckpointState& s) {
   std::ofstream out(file, std::ios::trunc);
   out.precision(17);
-  out << "crowdsim_training_checkpoint 2\n"
+  out << "crowdsim_training_checkpoint 3\n"
       << "config_hash " << s.config_hash << "\n"
       << "phase " << static_cast<int>(s.phase) << "\n"
       << "counter " << s.counter << "\n"
@@ -17,7 +20,7 @@ void WriteCheckpointState(const std::filesystem::path& file, const CheckpointSta
       << "validations " << s.validations.size() << "\n";
   for (const auto& v : s.validations) {
     out << v.episode << " " << v.success << " " << v.collision << " " << v.timeout << " "
-        << v.nav_time << "\n";
+        << v.nav_time << " " << v.probe_value << "\n";
   }
   if (!out) throw TrainError("cannot write the checkpoint state " + file.string());
 }
@@ -29,7 +32,7 @@ CheckpointState ReadCheckpointState(const std::filesystem::path& file) {
   std::size_t count = 0;
   CheckpointState s;
   in >> word >> version;
-  if (word != "crowdsim_training_checkpoint" || version < 1 || version > 2) {
+  if (word != "crowdsim_training_checkpoint" || version < 1 || version > 3) {
     throw TrainError("'" + file.string() + "' is not a training checkpoint of this version");
   }
   in >> word >> s.config_hash >> word >> phase >> word >> s.counter >> word >> s.best_success >>
@@ -40,6 +43,11 @@ CheckpointState ReadCheckpointState(const std::filesystem::path& file) {
   for (std::size_t i = 0; i < count && in; ++i) {
     ValidationResult v;
     in >> v.episode >> v.success >> v.collision >> v.timeout >> v.nav_time;
+    if (version >= 3) {
+      std::string probe;  // "nan" does not read as a double
+      in >> probe;
+      v.probe_value = probe == "nan" || probe == "-nan" ? std::numeric_limits<double>::quiet_NaN() : std::stod(probe);
+    }
     s.validations.push_back(v);
   }
   if (!in || phase < 0 || phase > static_cast<int>(TrainPhase::kDone)) {
@@ -50,10 +58,12 @@ CheckpointState ReadCheckpointState(const std::filesystem::path& file) {
 
 std::string ValidationCsv(const std::vector<ValidationResult>& validations) {
   std::ostringstream os;
-  os << "rl_episode,success_rate,collision_rate,timeout_rate,nav_time\n";
+  os << "rl_episode,success_rate,collision_rate,timeout_rate,nav_time,probe_value\n";
   for (const auto& v : validations) {
     os << v.episode << "," << v.success << "," << v.collision << "," << v.timeout << ","
-       << v.nav_time << "\n";
+       << v.nav_time << ",";
+    if (!std::isnan(v.probe_value)) os << v.probe_value;
+    os << "\n";
   }
   return os.str();
 }

@@ -101,6 +101,11 @@ TEST(TrainingTest, ResumeContinuesExactly) {
   EXPECT_NE(log.find("\ndemonstration,9,"), std::string::npos);
   EXPECT_NE(log.find("\nimitation,1,"), std::string::npos);
   EXPECT_NE(log.find("\nrl,11,"), std::string::npos);
+  // Validations with the mean value of the fixed probe states, identical after resuming.
+  const std::string validations = ReadText(dir.path() / "whole" / "training_log.csv");
+  EXPECT_EQ(ReadText(dir.path() / "parts" / "training_log.csv"), validations);
+  EXPECT_EQ(validations.rfind("rl_episode,success_rate,collision_rate,timeout_rate,nav_time,probe_value\n", 0), 0u);
+  EXPECT_EQ(validations.find(",\n"), std::string::npos) << validations;  // every probe value present
   // Restarting over a finished training without --resume is refused.
   EXPECT_THROW(Train(file, dir.path() / "parts"), training::TrainError);
 }

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -45,6 +46,9 @@ struct ValidationResult {
   int episode = 0;  ///< RL episodes done when it ran
   double success = 0, collision = 0, timeout = 0;
   double nav_time = 0;  ///< s, mean over successes (time_limit if none)
+  /// Mean value the model gives a fixed set of probe states (taken from the demonstrations
+  /// once they end): drifts show the values collapsing or inflating; NaN before there is one.
+  double probe_value = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Wall time by activity (profiling).
