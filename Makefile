@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 SUITE ?= suites/quick.yaml
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build run test bench clean
+.PHONY: all deps configure build run test bench train-all clean
 
 all: build
 
@@ -32,6 +32,12 @@ test: build
 # Runs every Google Benchmark (one core each, one after another).
 bench: build
 	@for b in $(BUILD)/bench/*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
+
+# Trains every file under suites/train/ that has no finished training yet, TRAIN_JOBS at a time
+# (nice'd, one core each), resuming interrupted ones: hours of work, see docs/training.md.
+TRAIN_JOBS ?= 2
+train-all: build
+	scripts/train_all.sh -j $(TRAIN_JOBS)
 
 clean:
 	rm -rf $(BUILD)
