@@ -278,7 +278,7 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   }
   const auto [h4, missing] = Shell(exe + " help frob");
   EXPECT_EQ(h4, 2);
-  EXPECT_NE(missing.find("no command 'frob' (valid: run, validate, train"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("no command 'frob' (valid: run, merge, validate, train"), std::string::npos) << missing;
   // A usage error shows that command's usage.
   const auto [u, usage_error] = Shell(exe + " run");
   EXPECT_EQ(u, 2);
@@ -287,7 +287,7 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   // The completion script knows every command and each command's options, and is valid bash.
   const auto [c, completion] = Shell(exe + " completion bash");
   EXPECT_EQ(c, 0);
-  EXPECT_NE(completion.find("run validate train floorplan render report list-plugins"), std::string::npos);
+  EXPECT_NE(completion.find("run merge validate train floorplan render report list-plugins"), std::string::npos);
   EXPECT_NE(completion.find("train) COMPREPLY=($(compgen -W \"--resume --out --seed --quiet --help\""),
             std::string::npos) << completion;
   const auto script = dir_.Write("completion.bash", completion);
