@@ -125,6 +125,11 @@ int Preview(const std::vector<std::string>& args) {
   const Parsed p = Parse(args, 1, {"--out", "--image", "--pairs"});
   if (p.positional.size() != 1) throw UsageError("preview needs exactly one WORLD.yaml");
   const std::filesystem::path out = Required(p, "--out");
+  if (out.extension() != ".svg") {
+    // It wrote SVG bytes into a .png before: the format follows the extension or is an error.
+    throw UsageError("floorplan preview writes SVG: --out must end in .svg, got '" + out.string() +
+                     "' (for PNG or PDF figures of episodes in a floor plan, see `crowdsim-bench render`)");
+  }
   const WorldFile world = ReadWorldFile(p.positional[0]);
   const int pairs = p.options.count("--pairs") ? static_cast<int>(ToInt("--pairs", p.options.at("--pairs"))) : 40;
   ImportResult source;

@@ -220,6 +220,10 @@ TEST(ImportTest, CliWritesNothingOnError) {
   EXPECT_NE(ReadText(svg).find("<svg"), std::string::npos);
   // The preview draws the world's own mask; no source image needed.
   EXPECT_NE(ReadText(svg).find("<image "), std::string::npos);
+  // It writes SVG only: another extension is a usage error, and nothing is written.
+  const auto png = dir.path() / "w.png";
+  EXPECT_EQ(RunFloorplanCli({"preview", out.string(), "--out", png.string()}), 2);
+  EXPECT_FALSE(std::filesystem::exists(png));
 }
 
 // The committed easy/medium/hard worlds are exactly what the importer makes from the source.
