@@ -146,6 +146,15 @@ int ValidateCommand(const std::vector<std::string>& args) {
       status = 2;
       continue;
     }
+    // The plugins as `run` builds them: weights, world files, sensors the policies need.
+    const std::vector<std::string> errors = PreflightSuite(*suite, registry);
+    for (const auto& e : errors) std::cerr << "error: " << file << ": " << e << "\n";
+    if (!errors.empty()) {
+      std::cerr << errors.size() << " row" << (errors.size() == 1 ? "" : "s") << " of " << file
+                << " cannot run\n";
+      status = 2;
+      continue;
+    }
     std::cout << file << ": ok (" << suite->rows.size() << " rows x " << suite->episodes
               << " episodes, config hash " << suite->ConfigHash() << ")\n";
   }

@@ -66,7 +66,44 @@ class Progress {
   int last_decile_ = -1;
 };
 
+/// Builds row `r`'s world, sensors and policies once and checks that the robot has the sensors
+/// it needs; returns the world. Throws RunError naming the row.
+std::shared_ptr<WorldSource> PreflightRow(const Suite& suite, size_t r, PluginRegistry& registry) {
+  const RowSpec& row = suite.rows[r];
+  const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
+  try {
+    auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
+    RowInstance probe(row, registry);
+    probe.Agents(1);
+    const PolicyNeeds needs = probe.robot().Needs();
+    for (const auto& needed : needs.sensors) {
+      const bool have = std::any_of(row.sensors.begin(), row.sensors.end(), [&](const PluginUse& s) {
+        return s.loaded->descriptor->name == needed;
+      });
+      if (!have) {
+        throw RunError(where + ": policy '" + row.policy.plugin + "' needs the sensor '" + needed +
+                       "'; add it to the row's sensors list");
+      }
+    }
+    return world;
+  } catch (const PluginError& e) {
+    throw RunError(where + ": " + e.what());
+  }
+}
+
 }  // namespace
+
+std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& registry) {
+  std::vector<std::string> errors;
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    try {
+      PreflightRow(suite, r, registry);
+    } catch (const RunError& e) {
+      errors.push_back(e.what());
+    }
+  }
+  return errors;
+}
 
 RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
@@ -101,26 +138,8 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   // episode, with the plugin's own message.
   std::vector<std::shared_ptr<WorldSource>> worlds;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
-    const RowSpec& row = suite.rows[r];
-    const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
-    try {
-      worlds.push_back(registry.MakeWorld(*row.world.loaded, row.world.params));
-      RowInstance probe(row, registry);
-      probe.Agents(1);
-      const PolicyNeeds needs = probe.robot().Needs();
-      for (const auto& needed : needs.sensors) {
-        const bool have = std::any_of(row.sensors.begin(), row.sensors.end(), [&](const PluginUse& s) {
-          return s.loaded->descriptor->name == needed;
-        });
-        if (!have) {
-          throw RunError(where + ": policy '" + row.policy.plugin + "' needs the sensor '" + needed +
-                         "'; add it to the row's sensors list");
-        }
-      }
-    } catch (const PluginError& e) {
-      throw RunError(where + ": " + e.what());
-    }
-    facts.world_identities[row.label] = worlds.back()->Identity();
+    worlds.push_back(PreflightRow(suite, r, registry));
+    facts.world_identities[suite.rows[r].label] = worlds.back()->Identity();
   }
 
   // Resume: keep the finished episodes of the same configuration.

@@ -248,6 +248,19 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_EQ(brc, 2) << btext;
   EXPECT_NE(btext.find("bad.yaml:4:14: rows[0].policy: unknown policy plugin 'orcaa'"), std::string::npos) << btext;
 
+  // validate builds the rows' plugins as run does: a missing frozen world set (obstacles: 2)
+  // and a row whose policy lacks its sensor are found without running, each row named.
+  const auto unrunnable = dir_.Write("unrunnable.yaml",
+      "name: u\nworld: {source: random_rect, obstacles: 2, split: test}\nrows:\n"
+      "  - {label: two, policy: linear}\n"
+      "  - {label: fine, policy: linear, world: {source: random_rect, obstacles: 1, split: test}}\n");
+  auto [prc, ptext] = Shell(exe + " validate " + unrunnable.string());
+  EXPECT_EQ(prc, 2) << ptext;
+  EXPECT_NE(ptext.find("row 'two' (rows[0])"), std::string::npos) << ptext;
+  EXPECT_NE(ptext.find("obstacles_2_test.yaml does not exist"), std::string::npos) << ptext;
+  EXPECT_EQ(ptext.find("row 'fine'"), std::string::npos) << ptext;
+  EXPECT_NE(ptext.find("1 row of"), std::string::npos) << ptext;
+
   auto [urc, utext] = Shell(exe + " run " + suite.string() + " --jobz 2");
   EXPECT_EQ(urc, 2) << utext;
   EXPECT_NE(utext.find("unknown option '--jobz'"), std::string::npos) << utext;

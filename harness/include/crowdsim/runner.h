@@ -47,6 +47,12 @@ RunSummary MergeShards(const std::vector<std::filesystem::path>& shard_dirs,
                        const std::filesystem::path& out_dir, const std::filesystem::path& suite_file,
                        PluginRegistry& registry);
 
+/// What `run` does before any episode, and `validate` too: builds every row's plugins once
+/// (world and its files, sensors, robot and human policies, their weights) and checks that each
+/// robot has the sensors it needs. Returns one message per failing row (naming the row and
+/// with the plugin's own message); empty when every row can run.
+std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& registry);
+
 /// Runs the suite and writes DIR/{episodes.csv, table.md, table.csv, manifest.json}.
 /// Throws RunError for problems that stop the whole run (output folder, mismatched results).
 RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptions& options);
