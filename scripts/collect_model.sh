@@ -20,5 +20,9 @@ for src in "$@"; do
     [[ -f "$src/$f" ]] && cp "$src/$f" "$dst/"
   done
   gzip -9 -n -c "$src/training_episodes.csv" > "$dst/training_episodes.csv.gz"
+  # The learning curve redrawn from the full logs by this build (older builds drew SVG only).
+  if [[ -x build/bin/crowdsim-bench ]]; then
+    for ext in svg png; do build/bin/crowdsim-bench report "$src" --out "$dst/learning_curve.$ext" 2>/dev/null; done
+  fi
   echo "collect_model: $dst ($(du -sh "$dst" | cut -f1))"
 done
