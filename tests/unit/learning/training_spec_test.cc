@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "crowdsim/plugin_registry.h"
+#include "crowdsim/runner.h"
+#include "crowdsim/suite.h"
 #include "learning_test_util.h"
 #include "test_paths.h"
 #include "crowdsim/training/train_spec.h"
@@ -131,6 +133,22 @@ TEST(TrainSpecTest, ShippedTrainingFilesAreValid) {
     EXPECT_TRUE(r.spec) << (r.errors.empty() ? "" : r.errors[0].Format());
   }
   EXPECT_GE(files, 17);  // every line of Table 1
+}
+
+// Every committed suite can run as it is: its plugins, world files and trained weights load
+// (what `validate` checks). Run from the source folder, as the suites' weights paths expect.
+TEST(TrainSpecTest, ShippedSuitesCanRun) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SourceDir() / "suites")) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++files;
+    SCOPED_TRACE(entry.path().string());
+    PluginRegistry registry;
+    const SuiteLoadResult r = LoadSuite(entry.path(), registry);
+    ASSERT_TRUE(r.suite) << (r.errors.empty() ? "" : r.errors[0].Format());
+    for (const auto& e : PreflightSuite(*r.suite, registry)) ADD_FAILURE() << e;
+  }
+  EXPECT_GE(files, 5);
 }
 
 }  // namespace
