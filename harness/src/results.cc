@@ -195,17 +195,31 @@ std::vector<EpisodeLine> ReadEpisodesCsv(const fs::path& path) {
   return out;
 }
 
+namespace {
+
+/// A table cell's text for Markdown: '|' escaped (it would start a new cell), line breaks as spaces.
+std::string MarkdownCell(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') out += '\\';
+    out += c == '\n' || c == '\r' ? ' ' : c;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string FormatTableMarkdown(const Suite& suite, const std::vector<TableRow>& rows) {
   const auto cols = Columns(suite);
   std::ostringstream os;
   os << "| ";
-  for (const auto& c : cols) os << c.header << " | ";
+  for (const auto& c : cols) os << MarkdownCell(c.header) << " | ";
   os << "\n|";
   for (size_t i = 0; i < cols.size(); ++i) os << (i < 2 + suite.info_columns.size() + 1 ? "---|" : "---:|");
   os << "\n";
   for (size_t r = 0; r < rows.size(); ++r) {
     os << "| ";
-    for (const auto& c : cols) os << (c.value ? c.value(rows[r]) : std::to_string(r + 1)) << " | ";
+    for (const auto& c : cols) os << MarkdownCell(c.value ? c.value(rows[r]) : std::to_string(r + 1)) << " | ";
     os << "\n";
   }
   return os.str();
