@@ -1,5 +1,8 @@
 #include "crowdsim/metrics.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace crowdsim {
 
 EpisodeRecord ToRecord(const EpisodeResult& r) {
@@ -15,13 +18,14 @@ RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit)
   if (episodes.empty()) return m;
   int success = 0, coll_h = 0, coll_o = 0, timeout = 0, error = 0;
   long long steps = 0, danger = 0;
-  double nav_time = 0.0, path = 0.0, ret = 0.0, decision = 0.0, min_dist = 0.0;
+  double nav_time = 0.0, nav_time_sq = 0.0, path = 0.0, ret = 0.0, decision = 0.0, min_dist = 0.0;
   int with_humans = 0;
   for (const auto& e : episodes) {
     switch (e.status) {
       case EpisodeStatus::kSuccess:
         ++success;
         nav_time += e.time;
+        nav_time_sq += e.time * e.time;
         path += e.path_length;
         break;
       case EpisodeStatus::kCollisionHuman: ++coll_h; break;
@@ -51,6 +55,51 @@ RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit)
   m.discounted_return = ret / n;
   m.decision_time_us = decision / n;
   m.min_human_distance = with_humans > 0 ? min_dist / with_humans : 0.0;
+  m.successes = success;
+  m.collisions = coll_h + coll_o;
+  m.timeouts = timeout;
+  if (success >= 2) {
+    const double mean = nav_time / success;
+    const double variance = std::max(0.0, (nav_time_sq - success * mean * mean) / (success - 1));
+    m.nav_time_se = std::sqrt(variance / success);
+  }
+  return m;
+}
+
+Interval WilsonInterval95(int k, int n) {
+  if (n <= 0) return {0.0, 1.0};
+  constexpr double z = 1.959963984540054;
+  const double p = static_cast<double>(k) / n;
+  const double z2n = z * z / n;
+  const double center = (p + z2n / 2.0) / (1.0 + z2n);
+  const double half = z / (1.0 + z2n) * std::sqrt(p * (1.0 - p) / n + z2n / (4.0 * n));
+  // Exact ends where the formula's rounding would leave a hair off 0 or 1.
+  return {k == 0 ? 0.0 : std::max(0.0, center - half), k == n ? 1.0 : std::min(1.0, center + half)};
+}
+
+RowMetrics SummarizeRows(std::span<const RowMetrics> rows) {
+  RowMetrics m;
+  if (rows.empty()) return m;
+  const double k = static_cast<double>(rows.size());
+  double se_sq = 0.0;
+  bool se_known = true;
+  for (const RowMetrics& r : rows) {
+    m.episodes += r.episodes;
+    m.successes += r.successes;
+    m.collisions += r.collisions;
+    m.timeouts += r.timeouts;
+    for (auto field : {&RowMetrics::success_rate, &RowMetrics::collision_rate,
+                       &RowMetrics::collision_human_rate, &RowMetrics::collision_obstacle_rate,
+                       &RowMetrics::timeout_rate, &RowMetrics::policy_error_rate,
+                       &RowMetrics::nav_time, &RowMetrics::danger_frequency,
+                       &RowMetrics::path_length, &RowMetrics::min_human_distance,
+                       &RowMetrics::discounted_return, &RowMetrics::decision_time_us}) {
+      m.*field += r.*field / k;
+    }
+    se_known = se_known && std::isfinite(r.nav_time_se);
+    se_sq += r.nav_time_se * r.nav_time_se;
+  }
+  if (se_known) m.nav_time_se = std::sqrt(se_sq) / k;
   return m;
 }
 

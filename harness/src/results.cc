@@ -1,5 +1,7 @@
 #include "crowdsim/results.h"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -95,10 +97,49 @@ std::string JsonPlugin(const PluginUse& u) {
   return s + "}}";
 }
 
-std::string SensorsLabel(const RowSpec& row) {
+std::string SensorsLabel(const TableRow& row) {
+  if (!row.spec) return "";
   std::string s;
-  for (size_t i = 0; i < row.sensors.size(); ++i) s += (i ? "+" : "") + row.sensors[i].plugin;
+  for (size_t i = 0; i < row.spec->sensors.size(); ++i) s += (i ? "+" : "") + row.spec->sensors[i].plugin;
   return s.empty() ? "-" : s;
+}
+
+std::string Signed(double x, int digits) {
+  const std::string s = Fixed(x, digits);
+  return s.empty() || s[0] == '-' ? s : "+" + s;
+}
+
+/// The quantities a table compares with published values, in column order.
+constexpr std::array<const char*, 5> kCompared = {"success", "collision", "timeout", "nav. time", "danger freq."};
+
+/// One compared quantity: our value with its interval, and the published value if any.
+struct Compared {
+  const char* name;
+  double ours;
+  Interval interval;      ///< 95%: Wilson for rates, +-1.96 s.e. for nav. time
+  bool has_interval;
+  std::optional<double> paper;
+};
+
+std::vector<Compared> Comparisons(const TableRow& r) {
+  const RowMetrics& m = r.metrics;
+  const auto& ref = r.Reference();
+  auto paper = [&](std::optional<double> PublishedReference::*field) {
+    return ref ? (*ref).*field : std::nullopt;
+  };
+  const bool se = std::isfinite(m.nav_time_se);
+  return {
+      {kCompared[0], m.success_rate, WilsonInterval95(m.successes, m.episodes), true, paper(&PublishedReference::success)},
+      {kCompared[1], m.collision_rate, WilsonInterval95(m.collisions, m.episodes), true, paper(&PublishedReference::collision)},
+      {kCompared[2], m.timeout_rate, WilsonInterval95(m.timeouts, m.episodes), true, paper(&PublishedReference::timeout)},
+      {kCompared[3], m.nav_time, {m.nav_time - 1.96 * m.nav_time_se, m.nav_time + 1.96 * m.nav_time_se}, se,
+       paper(&PublishedReference::nav_time)},
+      {kCompared[4], m.danger_frequency, {}, false, paper(&PublishedReference::danger)},
+  };
+}
+
+bool AnyReference(const std::vector<TableRow>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const TableRow& r) { return r.Reference().has_value(); });
 }
 
 struct Column {
@@ -106,19 +147,22 @@ struct Column {
   std::function<std::string(const TableRow&)> value;
 };
 
-std::vector<Column> Columns(const Suite& suite) {
+/// The table's columns: the paper's and ours (both formats), then for the CSV each rate's 95%
+/// interval, nav. time's standard error and, when any line has published values, those values
+/// and our differences (table.md shows these in its second table).
+std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& rows, bool with_uncertainty) {
   std::vector<Column> cols;
   cols.push_back({"row", nullptr});
-  cols.push_back({"label", [](const TableRow& r) { return r.spec->label; }});
+  cols.push_back({"label", [](const TableRow& r) { return r.Label(); }});
   for (const auto& name : suite.info_columns) {
     cols.push_back({name, [name](const TableRow& r) {
-                      for (const auto& [k, v] : r.spec->info) {
+                      for (const auto& [k, v] : r.Info()) {
                         if (k == name) return v;
                       }
                       return std::string("");
                     }});
   }
-  cols.push_back({"sensors", [](const TableRow& r) { return SensorsLabel(*r.spec); }});
+  cols.push_back({"sensors", [](const TableRow& r) { return SensorsLabel(r); }});
   auto metric = [](const char* h, double RowMetrics::*field, int digits) {
     return Column{h, [field, digits](const TableRow& r) { return Fixed(r.metrics.*field, digits); }};
   };
@@ -135,6 +179,28 @@ std::vector<Column> Columns(const Suite& suite) {
   cols.push_back(metric("decision µs", &RowMetrics::decision_time_us, 1));
   cols.push_back({"errors", [](const TableRow& r) { return Fixed(r.metrics.policy_error_rate, 4); }});
   cols.push_back({"episodes", [](const TableRow& r) { return std::to_string(r.metrics.episodes); }});
+  if (!with_uncertainty) return cols;
+  for (size_t i = 0; i < kCompared.size(); ++i) {
+    const std::string name = kCompared[i];
+    if (i < 3) {
+      cols.push_back({name + " 95% low", [i](const TableRow& r) { return Fixed(Comparisons(r)[i].interval.low, 4); }});
+      cols.push_back({name + " 95% high", [i](const TableRow& r) { return Fixed(Comparisons(r)[i].interval.high, 4); }});
+    }
+  }
+  cols.push_back({"nav. time s.e.", [](const TableRow& r) { return Fixed(r.metrics.nav_time_se, 4); }});
+  if (!AnyReference(rows)) return cols;
+  for (size_t i = 0; i < kCompared.size(); ++i) {
+    const std::string name = kCompared[i];
+    cols.push_back({"paper " + name, [i](const TableRow& r) {
+                      const auto paper = Comparisons(r)[i].paper;
+                      return paper ? Fixed(*paper, 4) : std::string();
+                    }});
+    cols.push_back({"Δ " + name, [i](const TableRow& r) {
+                      const Compared c = Comparisons(r)[i];
+                      return c.paper ? Signed(c.ours - *c.paper, 4) : std::string();
+                    }});
+  }
+  cols.push_back({"paper source", [](const TableRow& r) { return r.Reference() ? r.Reference()->source : std::string(); }});
   return cols;
 }
 
@@ -209,35 +275,194 @@ std::string MarkdownCell(const std::string& text) {
 
 }  // namespace
 
-std::string FormatTableMarkdown(const Suite& suite, const std::vector<TableRow>& rows) {
-  const auto cols = Columns(suite);
-  std::ostringstream os;
+namespace {
+
+/// The "row" cell: the suite row's number (1..), empty for a summary line.
+std::string RowNumber(const std::vector<TableRow>& rows, size_t r) {
+  return rows[r].spec ? std::to_string(r + 1) : std::string();
+}
+
+void WriteMarkdownTable(const std::vector<std::string>& header, size_t text_columns,
+                        const std::vector<std::vector<std::string>>& body, std::ostream& os) {
   os << "| ";
-  for (const auto& c : cols) os << MarkdownCell(c.header) << " | ";
+  for (const auto& h : header) os << MarkdownCell(h) << " | ";
   os << "\n|";
-  for (size_t i = 0; i < cols.size(); ++i) os << (i < 2 + suite.info_columns.size() + 1 ? "---|" : "---:|");
+  for (size_t i = 0; i < header.size(); ++i) os << (i < text_columns ? "---|" : "---:|");
   os << "\n";
-  for (size_t r = 0; r < rows.size(); ++r) {
+  for (const auto& line : body) {
     os << "| ";
-    for (const auto& c : cols) os << MarkdownCell(c.value ? c.value(rows[r]) : std::to_string(r + 1)) << " | ";
+    for (const auto& cell : line) os << MarkdownCell(cell) << " | ";
     os << "\n";
   }
+}
+
+/// "min–max" of the success rates of a summary's rows: the spread the pooled interval leaves
+/// out (e.g. between training seeds).
+std::string SuccessRange(const std::vector<TableRow>& rows, const SummarySpec& summary) {
+  double lo = 1.0, hi = 0.0;
+  for (const TableRow& row : rows) {
+    if (!row.spec || std::find(summary.rows.begin(), summary.rows.end(), row.spec->label) == summary.rows.end()) continue;
+    lo = std::min(lo, row.metrics.success_rate);
+    hi = std::max(hi, row.metrics.success_rate);
+  }
+  return Fixed(lo, 4) + "–" + Fixed(hi, 4);
+}
+
+/// table.md's second table: each rate with its 95% Wilson interval, nav. time +- its standard
+/// error, and where published values exist, those values and our difference, marked '*' when
+/// the published value lies outside our 95% interval.
+void WriteUncertaintyMarkdown(const std::vector<TableRow>& rows, std::ostream& os) {
+  const bool papers = AnyReference(rows);
+  os << "\nOurs with 95% intervals (Wilson for the rates, nav. time ± its standard error)";
+  if (papers) {
+    os << "; paper: the published value, Δ: ours - paper, * where the published value lies "
+          "outside our 95% interval";
+  }
+  if (std::any_of(rows.begin(), rows.end(), [](const TableRow& r) { return r.summary != nullptr; })) {
+    os << ". Summary lines (no row number) are the mean of their rows; their intervals count the "
+          "pooled episodes, so they show evaluation noise only: \"rows\" gives the range of the "
+          "rows' success rates (e.g. between training seeds)";
+  }
+  os << ".\n\n";
+  std::vector<std::string> header = {"row", "label"};
+  for (size_t i = 0; i < kCompared.size(); ++i) {
+    if (i == 4 && !papers) break;
+    header.push_back(i < 3 ? std::string(kCompared[i]) + " [95% CI]"
+                           : i == 3 ? std::string("nav. time ± s.e.") : std::string(kCompared[i]));
+    if (papers) {
+      header.push_back("paper");
+      header.push_back("Δ");
+    }
+  }
+  if (papers) header.push_back("source");
+  std::vector<std::vector<std::string>> body;
+  for (size_t r = 0; r < rows.size(); ++r) {
+    std::vector<std::string> line = {RowNumber(rows, r), rows[r].Label()};
+    const std::vector<Compared> compared = Comparisons(rows[r]);
+    for (size_t i = 0; i < compared.size(); ++i) {
+      if (i == 4 && !papers) break;
+      const Compared& c = compared[i];
+      if (i < 3) {
+        std::string cell = Fixed(c.ours, 4) + " [" + Fixed(c.interval.low, 4) + ", " + Fixed(c.interval.high, 4) + "]";
+        if (i == 0 && rows[r].summary) cell += " rows " + SuccessRange(rows, *rows[r].summary);
+        line.push_back(cell);
+      } else if (i == 3) {
+        line.push_back(Fixed(c.ours, 2) + (c.has_interval ? " ± " + Fixed(rows[r].metrics.nav_time_se, 2) : ""));
+      } else {
+        line.push_back(Fixed(c.ours, 4));
+      }
+      if (!papers) continue;
+      const int digits = i == 3 ? 2 : 4;
+      line.push_back(c.paper ? Fixed(*c.paper, digits) : "");
+      std::string delta = c.paper ? Signed(c.ours - *c.paper, digits) : "";
+      if (c.paper && c.has_interval && !c.interval.Contains(*c.paper)) delta += " *";
+      line.push_back(delta);
+    }
+    if (papers) line.push_back(rows[r].Reference() ? rows[r].Reference()->source : "");
+    body.push_back(std::move(line));
+  }
+  WriteMarkdownTable(header, 2, body, os);
+}
+
+}  // namespace
+
+void AddSummaryLines(const Suite& suite, std::vector<TableRow>* rows) {
+  for (const SummarySpec& summary : suite.summaries) {
+    std::vector<RowMetrics> members;
+    for (const std::string& label : summary.rows) {
+      for (const TableRow& row : *rows) {
+        if (row.spec && row.spec->label == label) members.push_back(row.metrics);
+      }
+    }
+    rows->push_back(TableRow{nullptr, SummarizeRows(members), &summary});
+  }
+}
+
+std::string FormatTableMarkdown(const Suite& suite, const std::vector<TableRow>& rows) {
+  const auto cols = Columns(suite, rows, false);
+  std::vector<std::string> header;
+  for (const auto& c : cols) header.push_back(c.header);
+  std::vector<std::vector<std::string>> body;
+  for (size_t r = 0; r < rows.size(); ++r) {
+    std::vector<std::string> line;
+    for (const auto& c : cols) line.push_back(c.value ? c.value(rows[r]) : RowNumber(rows, r));
+    body.push_back(std::move(line));
+  }
+  std::ostringstream os;
+  WriteMarkdownTable(header, 2 + suite.info_columns.size() + 1, body, os);
+  WriteUncertaintyMarkdown(rows, os);
   return os.str();
 }
 
 std::string FormatTableCsv(const Suite& suite, const std::vector<TableRow>& rows) {
-  const auto cols = Columns(suite);
+  const auto cols = Columns(suite, rows, true);
   std::ostringstream os;
   for (size_t i = 0; i < cols.size(); ++i) os << (i ? "," : "") << CsvField(cols[i].header);
   os << "\n";
   for (size_t r = 0; r < rows.size(); ++r) {
     for (size_t i = 0; i < cols.size(); ++i) {
-      os << (i ? "," : "") << CsvField(cols[i].value ? cols[i].value(rows[r]) : std::to_string(r + 1));
+      os << (i ? "," : "") << CsvField(cols[i].value ? cols[i].value(rows[r]) : RowNumber(rows, r));
     }
     os << "\n";
   }
   return os.str();
 }
+
+namespace {
+
+std::string JsonInterval(const Interval& i) {
+  std::string text = "[";
+  text += JsonNumber(i.low);
+  text += ", ";
+  text += JsonNumber(i.high);
+  return text + "]";
+}
+
+/// A table line's info, metrics (with the rates' 95% intervals) and published reference, as the
+/// closing members of its manifest object.
+std::string JsonLineTail(const TableRow& line) {
+  const RowMetrics& m = line.metrics;
+  std::ostringstream os;
+  os << "     \"info\": {";
+  const auto& info = line.Info();
+  for (size_t k = 0; k < info.size(); ++k) {
+    os << (k ? ", " : "") << JsonString(info[k].first) << ": " << JsonString(info[k].second);
+  }
+  os << "},\n";
+  os << "     \"metrics\": {\"episodes\": " << m.episodes
+     << ", \"success_rate\": " << JsonNumber(m.success_rate)
+     << ", \"collision_rate\": " << JsonNumber(m.collision_rate)
+     << ", \"collision_human_rate\": " << JsonNumber(m.collision_human_rate)
+     << ", \"collision_obstacle_rate\": " << JsonNumber(m.collision_obstacle_rate)
+     << ", \"timeout_rate\": " << JsonNumber(m.timeout_rate)
+     << ", \"policy_error_rate\": " << JsonNumber(m.policy_error_rate)
+     << ", \"nav_time\": " << JsonNumber(m.nav_time)
+     << ", \"danger_frequency\": " << JsonNumber(m.danger_frequency)
+     << ", \"path_length\": " << JsonNumber(m.path_length)
+     << ", \"min_human_distance\": " << JsonNumber(m.min_human_distance)
+     << ", \"discounted_return\": " << JsonNumber(m.discounted_return)
+     << ", \"decision_time_us\": " << JsonNumber(m.decision_time_us)
+     << ", \"success_rate_95\": " << JsonInterval(WilsonInterval95(m.successes, m.episodes))
+     << ", \"collision_rate_95\": " << JsonInterval(WilsonInterval95(m.collisions, m.episodes))
+     << ", \"timeout_rate_95\": " << JsonInterval(WilsonInterval95(m.timeouts, m.episodes))
+     << ", \"nav_time_se\": " << JsonNumber(m.nav_time_se) << "}";
+  if (const auto& ref = line.Reference()) {
+    os << ",\n     \"reference\": {";
+    bool first = true;
+    for (const auto& [key, value] : {std::pair{"success", ref->success}, std::pair{"collision", ref->collision},
+                                     std::pair{"timeout", ref->timeout}, std::pair{"nav_time", ref->nav_time},
+                                     std::pair{"danger", ref->danger}}) {
+      if (!value) continue;
+      os << (first ? "" : ", ") << "\"" << key << "\": " << JsonNumber(*value);
+      first = false;
+    }
+    os << ", \"source\": " << JsonString(ref->source) << "}";
+  }
+  os << "}";
+  return os.str();
+}
+
+}  // namespace
 
 std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& rows,
                                const RunFacts& facts) {
@@ -272,10 +497,11 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
      << ", \"collision_penalty\": " << JsonNumber(s.collision_penalty)
      << ", \"discomfort_penalty_factor\": " << JsonNumber(s.discomfort_penalty_factor)
      << ", \"gamma\": " << JsonNumber(s.gamma) << "},\n";
+  std::vector<const TableRow*> row_lines, summary_lines;
+  for (const TableRow& row : rows) (row.spec ? row_lines : summary_lines).push_back(&row);
   os << "  \"rows\": [\n";
-  for (size_t i = 0; i < rows.size(); ++i) {
-    const RowSpec& r = *rows[i].spec;
-    const RowMetrics& m = rows[i].metrics;
+  for (size_t i = 0; i < row_lines.size(); ++i) {
+    const RowSpec& r = *row_lines[i]->spec;
     os << "    {\"label\": " << JsonString(r.label) << ",\n";
     os << "     \"policy\": " << JsonPlugin(r.policy) << ",\n";
     os << "     \"sensors\": [";
@@ -288,29 +514,23 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
     os << "     \"humans\": {\"count\": " << r.humans.count << ", \"goal_mode\": \""
        << (r.humans.goal_mode == HumanGoalMode::kStay ? "stay" : "new_goal")
        << "\", \"policy\": " << JsonPlugin(r.humans.policy) << "},\n";
-    os << "     \"info\": {";
-    for (size_t k = 0; k < r.info.size(); ++k) {
-      os << (k ? ", " : "") << JsonString(r.info[k].first) << ": " << JsonString(r.info[k].second);
-    }
-    os << "},\n";
-    os << "     \"metrics\": {\"episodes\": " << m.episodes
-       << ", \"success_rate\": " << JsonNumber(m.success_rate)
-       << ", \"collision_rate\": " << JsonNumber(m.collision_rate)
-       << ", \"collision_human_rate\": " << JsonNumber(m.collision_human_rate)
-       << ", \"collision_obstacle_rate\": " << JsonNumber(m.collision_obstacle_rate)
-       << ", \"timeout_rate\": " << JsonNumber(m.timeout_rate)
-       << ", \"policy_error_rate\": " << JsonNumber(m.policy_error_rate)
-       << ", \"nav_time\": " << JsonNumber(m.nav_time)
-       << ", \"danger_frequency\": " << JsonNumber(m.danger_frequency)
-       << ", \"path_length\": " << JsonNumber(m.path_length)
-       << ", \"min_human_distance\": " << JsonNumber(m.min_human_distance)
-       << ", \"discounted_return\": " << JsonNumber(m.discounted_return)
-       << ", \"decision_time_us\": " << JsonNumber(m.decision_time_us) << "}}"
-       << (i + 1 < rows.size() ? "," : "") << "\n";
+    os << JsonLineTail(*row_lines[i]) << (i + 1 < row_lines.size() ? "," : "") << "\n";
   }
-  os << "  ]\n}\n";
+  os << "  ]";
+  if (!summary_lines.empty()) {
+    os << ",\n  \"summaries\": [\n";
+    for (size_t i = 0; i < summary_lines.size(); ++i) {
+      const SummarySpec& s = *summary_lines[i]->summary;
+      os << "    {\"label\": " << JsonString(s.label) << ",\n     \"rows\": [";
+      for (size_t k = 0; k < s.rows.size(); ++k) os << (k ? ", " : "") << JsonString(s.rows[k]);
+      os << "],\n" << JsonLineTail(*summary_lines[i]) << (i + 1 < summary_lines.size() ? "," : "") << "\n";
+    }
+    os << "  ]";
+  }
+  os << "\n}\n";
   return os.str();
 }
+
 
 std::string ReadManifestField(const fs::path& path, const std::string& field) {
   std::ifstream f(path);

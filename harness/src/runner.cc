@@ -282,6 +282,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
     if (labels.count(key.first) && key.second >= episodes) text += FormatEpisodeLine(line) + "\n";
   }
   WriteFileAtomically(episodes_csv, text);
+  AddSummaryLines(suite, &summary.rows);
   summary.table_markdown = FormatTableMarkdown(suite, summary.rows);
   WriteFileAtomically(summary.out_dir / "table.md", summary.table_markdown);
   WriteFileAtomically(summary.out_dir / "table.csv", FormatTableCsv(suite, summary.rows));

@@ -177,6 +177,41 @@ struct Defaults {
   YAML::Node sensors{YAML::NodeType::Undefined};
 };
 
+void ReadInfo(Reader& r, const YAML::Node& info, const std::string& path,
+              std::vector<std::pair<std::string, std::string>>* out) {
+  if (!r.IsMap(info, path, "extra table columns")) return;
+  for (const auto& kv : info) {
+    if (!kv.second.IsScalar()) {
+      r.Error(kv.second, Reader::Child(path, kv.first.Scalar()), "must be a single value");
+      continue;
+    }
+    out->emplace_back(kv.first.Scalar(), kv.second.Scalar());
+  }
+}
+
+/// `reference: {success: 0.67, collision: 0.20, timeout: 0.13, nav_time: 12.9, danger: 0.09,
+/// source: "..."}`: published values, any subset of them (at least one).
+std::optional<PublishedReference> ReadReference(Reader& r, const YAML::Node& n, const std::string& path) {
+  if (!r.IsMap(n, path, "published values: success, collision, timeout, nav_time, danger, source")) return std::nullopt;
+  r.CheckKeys(n, path, {"success", "collision", "timeout", "nav_time", "danger", "source"});
+  PublishedReference ref;
+  const size_t errors_before = r.errors.size();
+  for (auto [key, target] : {std::pair{"success", &ref.success}, std::pair{"collision", &ref.collision},
+                             std::pair{"timeout", &ref.timeout}, std::pair{"danger", &ref.danger}}) {
+    if (n[key]) *target = r.Number(n[key], Reader::Child(path, key), 0.0, 1.0);
+  }
+  if (n["nav_time"]) ref.nav_time = r.Number(n["nav_time"], Reader::Child(path, "nav_time"), 0.0, 1e6, true);
+  if (n["source"]) {
+    if (auto src = r.String(n["source"], Reader::Child(path, "source"))) ref.source = *src;
+  }
+  if (r.errors.size() != errors_before) return std::nullopt;
+  if (!ref.success && !ref.collision && !ref.timeout && !ref.nav_time && !ref.danger) {
+    r.Error(n, path, "gives no value: name at least one of success, collision, timeout, nav_time, danger");
+    return std::nullopt;
+  }
+  return ref;
+}
+
 void ReadHumans(Reader& r, const YAML::Node& suite_level, const YAML::Node& row_level,
                 const std::string& path, const fs::path& base, HumansSpec* out) {
   // Row keys override suite keys one by one.
@@ -213,7 +248,7 @@ void ReadRow(Reader& r, const YAML::Node& n, size_t index, const Defaults& d, co
              RowSpec* row) {
   const std::string path = Reader::Index("rows", index);
   if (!r.IsMap(n, path, "policy, sensors, ...")) return;
-  r.CheckKeys(n, path, {"label", "policy", "params", "weights", "sensors", "world", "humans", "info"});
+  r.CheckKeys(n, path, {"label", "policy", "params", "weights", "sensors", "world", "humans", "info", "reference"});
   if (!n["policy"]) {
     r.Error(n, path, "missing key 'policy' (a policy plugin name such as linear or orca, or a .so path)");
   } else {
@@ -245,16 +280,57 @@ void ReadRow(Reader& r, const YAML::Node& n, size_t index, const Defaults& d, co
     r.Error(n, path, "no world: give 'world' at the top of the suite or in this row");
   }
   ReadHumans(r, d.humans, n["humans"], Reader::Child(path, "humans"), base, &row->humans);
-  if (const auto info = n["info"]) {
-    if (r.IsMap(info, Reader::Child(path, "info"), "extra table columns")) {
-      for (const auto& kv : info) {
-        if (!kv.second.IsScalar()) {
-          r.Error(kv.second, Reader::Child(Reader::Child(path, "info"), kv.first.Scalar()), "must be a single value");
-          continue;
+  if (const auto info = n["info"]) ReadInfo(r, info, Reader::Child(path, "info"), &row->info);
+  if (const auto ref = n["reference"]) row->reference = ReadReference(r, ref, Reader::Child(path, "reference"));
+}
+
+/// `summaries:` entries: label, rows (labels of earlier rows), optional info and reference.
+void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& rows,
+                   std::vector<SummarySpec>* out) {
+  if (!n.IsSequence()) {
+    r.Error(n, "summaries", "must be a list, e.g. [{label: avg, rows: [easy, medium, hard]}]");
+    return;
+  }
+  std::string valid;
+  for (const RowSpec& row : rows) valid += (valid.empty() ? "" : ", ") + row.label;
+  std::set<std::string> labels;
+  for (const RowSpec& row : rows) labels.insert(row.label);
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string path = Reader::Index("summaries", i);
+    const YAML::Node item = n[i];
+    if (!r.IsMap(item, path, "label, rows, info, reference")) continue;
+    r.CheckKeys(item, path, {"label", "rows", "info", "reference"});
+    SummarySpec summary;
+    if (auto label = item["label"] ? r.String(item["label"], Reader::Child(path, "label")) : std::nullopt) {
+      summary.label = *label;
+      if (!labels.insert(summary.label).second) {
+        r.Error(item["label"], Reader::Child(path, "label"),
+                "label '" + summary.label + "' is already a row's or summary's; labels must be unique");
+      }
+    } else if (!item["label"]) {
+      r.Error(item, path, "missing key 'label' (the summary line's name, e.g. avg)");
+    }
+    const YAML::Node members = item["rows"];
+    if (!members || !members.IsSequence() || members.size() == 0) {
+      r.Error(members ? members : item, Reader::Child(path, "rows"),
+              "must be a non-empty list of row labels to average (valid: " + valid + ")");
+    } else {
+      for (size_t k = 0; k < members.size(); ++k) {
+        const std::string label = members[k].Scalar();
+        const bool found = std::any_of(rows.begin(), rows.end(), [&](const RowSpec& row) { return row.label == label; });
+        if (!found) {
+          r.Error(members[k], Reader::Index(Reader::Child(path, "rows"), k),
+                  "no row is labelled '" + label + "' (valid: " + valid + ")");
+        } else if (std::find(summary.rows.begin(), summary.rows.end(), label) != summary.rows.end()) {
+          r.Error(members[k], Reader::Index(Reader::Child(path, "rows"), k), "row '" + label + "' is named twice");
+        } else {
+          summary.rows.push_back(label);
         }
-        row->info.emplace_back(kv.first.Scalar(), kv.second.Scalar());
       }
     }
+    if (const auto info = item["info"]) ReadInfo(r, info, Reader::Child(path, "info"), &summary.info);
+    if (const auto ref = item["reference"]) summary.reference = ReadReference(r, ref, Reader::Child(path, "reference"));
+    out->push_back(std::move(summary));
   }
 }
 
@@ -282,7 +358,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
   Suite s;
   s.file = file;
   const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  r.CheckKeys(root, "", {"name", "description", "episodes", "seed", "sim", "world", "humans", "robot", "columns", "rows"});
+  r.CheckKeys(root, "", {"name", "description", "episodes", "seed", "sim", "world", "humans", "robot", "columns", "rows", "summaries"});
   s.name = r.Name(root, "results/<name>/");
   if (root["description"]) s.description = root["description"].Scalar();
   if (root["episodes"]) {
@@ -328,6 +404,16 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
         }
       }
       s.rows.push_back(std::move(row));
+    }
+  }
+  if (const auto summaries = root["summaries"]) {
+    ReadSummaries(r, summaries, s.rows, &s.summaries);
+    for (const SummarySpec& summary : s.summaries) {
+      for (const auto& [k, v] : summary.info) {
+        if (std::find(s.info_columns.begin(), s.info_columns.end(), k) == s.info_columns.end()) {
+          s.info_columns.push_back(k);
+        }
+      }
     }
   }
   if (!r.errors.empty()) {

@@ -153,5 +153,51 @@ TEST_F(SuiteValidation, DuplicateLabels) {
   EXPECT_NE(Find(r, "label 'linear' is used by an earlier row"), "") << All(r);
 }
 
+/// kGood with its last row in block style, so keys can be added to it.
+std::string GoodWithOpenLastRow() {
+  std::string yaml = kGood;
+  const std::string flow = "  - {label: b, policy: linear, params: {speed_factor: 0.5}}\n";
+  yaml.replace(yaml.find(flow), flow.size(), "  - label: b\n    policy: linear\n    params: {speed_factor: 0.5}\n");
+  return yaml;
+}
+
+TEST_F(SuiteValidation, ReferencesAndSummariesLoadWithoutChangingTheConfigHash) {
+  auto plain = Load(kGood);
+  ASSERT_TRUE(plain.suite) << All(plain);
+  auto r = Load(GoodWithOpenLastRow() +
+                "    reference: {success: 0.67, nav_time: 12.9, source: \"Table 1\"}\n"
+                "summaries:\n  - {label: avg, rows: [a, b], info: {model: both}, reference: {success: 0.7}}\n");
+  ASSERT_TRUE(r.suite) << All(r);
+  ASSERT_TRUE(r.suite->rows[1].reference.has_value());
+  EXPECT_DOUBLE_EQ(*r.suite->rows[1].reference->success, 0.67);
+  EXPECT_DOUBLE_EQ(*r.suite->rows[1].reference->nav_time, 12.9);
+  EXPECT_FALSE(r.suite->rows[1].reference->collision.has_value());
+  EXPECT_EQ(r.suite->rows[1].reference->source, "Table 1");
+  EXPECT_FALSE(r.suite->rows[0].reference.has_value());
+  ASSERT_EQ(r.suite->summaries.size(), 1u);
+  EXPECT_EQ(r.suite->summaries[0].rows, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(r.suite->info_columns, std::vector<std::string>{"model"});
+  // Published values are presentation: stored results stay valid when they are added.
+  EXPECT_EQ(r.suite->ConfigHash(), plain.suite->ConfigHash());
+}
+
+TEST_F(SuiteValidation, BadReferencesAndSummariesAreNamed) {
+  auto r = Load(GoodWithOpenLastRow() + "    reference: {success: 67, colision: 0.1}\n" +
+                "summaries:\n"
+                "  - {label: avg, rows: [a, c]}\n"
+                "  - {label: a, rows: []}\n"
+                "  - {rows: [b, b]}\n"
+                "  - {label: x, rows: [a], reference: {source: only}}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "rows[1].reference.success"), "") << All(r);
+  EXPECT_NE(Find(r, "unknown key 'colision'"), "") << All(r);
+  EXPECT_NE(Find(r, "summaries[0].rows[1]: no row is labelled 'c' (valid: a, b)"), "") << All(r);
+  EXPECT_NE(Find(r, "summaries[1].label: label 'a' is already"), "") << All(r);
+  EXPECT_NE(Find(r, "summaries[1].rows: must be a non-empty list"), "") << All(r);
+  EXPECT_NE(Find(r, "summaries[2]: missing key 'label'"), "") << All(r);
+  EXPECT_NE(Find(r, "summaries[2].rows[1]: row 'b' is named twice"), "") << All(r);
+  EXPECT_NE(Find(r, "summaries[3].reference: gives no value"), "") << All(r);
+}
+
 }  // namespace
 }  // namespace crowdsim

@@ -2,6 +2,8 @@
 // would open a new Markdown cell, a carriage return would split a CSV record.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "crowdsim/csv.h"
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/results.h"
@@ -32,17 +34,94 @@ TEST(TableText, MarkdownCellsEscapeThePipe) {
   const std::vector<TableRow> rows = {TableRow{&loaded.suite->rows[0], RowMetrics{}}};
   const std::string md = FormatTableMarkdown(*loaded.suite, rows);
   EXPECT_NE(md.find("| x \\| y |"), std::string::npos) << md;
-  // Every line has as many unescaped cell separators as the header.
-  std::vector<int> separators;
+  // In each of table.md's tables, every line has as many unescaped cell separators as its header.
+  std::vector<std::vector<int>> tables(1);
   std::size_t start = 0;
   for (std::size_t end = md.find('\n'); end != std::string::npos; start = end + 1, end = md.find('\n', start)) {
+    if (md[start] != '|') {
+      if (!tables.back().empty()) tables.emplace_back();
+      continue;
+    }
     int n = 0;
     for (std::size_t i = start; i < end; ++i) n += md[i] == '|' && (i == 0 || md[i - 1] != '\\');
-    separators.push_back(n);
+    tables.back().push_back(n);
   }
-  ASSERT_EQ(separators.size(), 3u);
-  EXPECT_EQ(separators[0], separators[1]);
-  EXPECT_EQ(separators[0], separators[2]);
+  ASSERT_EQ(tables.size(), 2u);  // the paper's columns; ours with intervals
+  for (const auto& separators : tables) {
+    ASSERT_EQ(separators.size(), 3u);
+    EXPECT_EQ(separators[0], separators[1]);
+    EXPECT_EQ(separators[0], separators[2]);
+  }
+}
+
+RowMetrics Made(int episodes, int successes, int collisions, double nav_time, double se) {
+  RowMetrics m;
+  m.episodes = episodes;
+  m.successes = successes;
+  m.collisions = collisions;
+  m.timeouts = episodes - successes - collisions;
+  m.success_rate = static_cast<double>(successes) / episodes;
+  m.collision_rate = static_cast<double>(collisions) / episodes;
+  m.timeout_rate = static_cast<double>(m.timeouts) / episodes;
+  m.nav_time = nav_time;
+  m.nav_time_se = se;
+  return m;
+}
+
+TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
+  testing::TempDir dir;
+  const auto file = dir.Write("s.yaml",
+      "name: t\nepisodes: 1\nworld: {source: random_rect, obstacles: 1, split: test}\nrows:\n"
+      "  - {label: a, policy: linear, reference: {success: 0.70, collision: 0.30, nav_time: 12.0, source: \"Paper, line 1\"}}\n"
+      "  - {label: b, policy: linear}\n"
+      "summaries:\n  - {label: avg, rows: [a, b], reference: {success: 0.6}}\n");
+  PluginRegistry registry{{testing::PluginDir()}};
+  const SuiteLoadResult loaded = LoadSuite(file, registry);
+  ASSERT_TRUE(loaded.suite) << loaded.errors[0].Format();
+  // a: 348/500 successes, interval [0.6543, 0.7347] holds 0.70; 10/500 collisions does not
+  // hold 0.30; nav. time 14 +- 0.2 does not hold 12.
+  std::vector<TableRow> rows = {TableRow{&loaded.suite->rows[0], Made(500, 348, 10, 14.0, 0.2)},
+                                TableRow{&loaded.suite->rows[1], Made(500, 300, 100, 13.0, 0.3)}};
+  AddSummaryLines(*loaded.suite, &rows);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[2].Label(), "avg");
+  EXPECT_NEAR(rows[2].metrics.success_rate, 0.648, 1e-12);
+  EXPECT_EQ(rows[2].metrics.successes, 648);
+
+  const std::string md = FormatTableMarkdown(*loaded.suite, rows);
+  EXPECT_NE(md.find("| 1 | a | 0.6960 [0.6543, 0.7347] | 0.7000 | -0.0040 | 0.0200 [0.0109, 0.0364] | 0.3000 | -0.2800 * |"),
+            std::string::npos) << md;
+  EXPECT_NE(md.find("| 14.00 ± 0.20 | 12.00 | +2.00 * |"), std::string::npos) << md;
+  EXPECT_NE(md.find("Paper, line 1"), std::string::npos) << md;
+  // The summary line has no row number, its rows' range, and its own reference.
+  EXPECT_NE(md.find("|  | avg | 0.6480 ["), std::string::npos) << md;
+  EXPECT_NE(md.find("rows 0.6000–0.6960 | 0.6000 | +0.0480 * |"), std::string::npos) << md;
+
+  const std::string csv = FormatTableCsv(*loaded.suite, rows);
+  std::vector<std::vector<std::string>> lines;
+  std::size_t start = 0;
+  for (std::size_t end = csv.find('\n'); end != std::string::npos; start = end + 1, end = csv.find('\n', start)) {
+    lines.push_back(SplitCsvLine(csv.substr(start, end - start)));
+  }
+  ASSERT_EQ(lines.size(), 4u);
+  for (const auto& line : lines) EXPECT_EQ(line.size(), lines[0].size());
+  auto column = [&](const std::string& name) {
+    const auto it = std::find(lines[0].begin(), lines[0].end(), name);
+    EXPECT_NE(it, lines[0].end()) << name;
+    return static_cast<std::size_t>(it - lines[0].begin());
+  };
+  EXPECT_EQ(lines[1][column("success 95% low")], "0.6543");
+  EXPECT_EQ(lines[1][column("paper collision")], "0.3000");
+  EXPECT_EQ(lines[1][column("Δ nav. time")], "+2.0000");
+  EXPECT_EQ(lines[2][column("paper success")], "");
+  EXPECT_EQ(lines[3][column("row")], "");
+  EXPECT_EQ(lines[3][column("label")], "avg");
+
+  const std::string manifest = FormatManifestJson(*loaded.suite, rows, RunFacts{});
+  EXPECT_NE(manifest.find("\"summaries\": [\n    {\"label\": \"avg\",\n     \"rows\": [\"a\", \"b\"]"),
+            std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\"reference\": {\"success\": 0.7, \"collision\": 0.3, \"nav_time\": 12, "
+                          "\"source\": \"Paper, line 1\"}"), std::string::npos) << manifest;
 }
 
 }  // namespace

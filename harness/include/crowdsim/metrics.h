@@ -1,6 +1,7 @@
 // Per-row aggregation of episode results into the paper's columns.
 #pragma once
 
+#include <limits>
 #include <span>
 
 #include "crowdsim/episode.h"
@@ -22,7 +23,23 @@ struct RowMetrics {
   double min_human_distance = 0.0;  ///< mean over episodes with humans of the episode minimum
   double discounted_return = 0.0;   ///< mean
   double decision_time_us = 0.0;    ///< mean of per-episode means
+  int successes = 0;                ///< counts behind the rates (for their intervals)
+  int collisions = 0;
+  int timeouts = 0;
+  double nav_time_se = std::numeric_limits<double>::quiet_NaN();  ///< standard error of nav_time (NaN with fewer than 2 successes)
 };
+
+/// A two-sided interval [low, high].
+struct Interval {
+  double low = 0.0;
+  double high = 0.0;
+  bool Contains(double x) const { return low <= x && x <= high; }
+};
+
+/// Wilson score interval of a binomial proportion k / n at the two-sided 95% level (z = 1.96):
+/// well-behaved at rates near 0 and 1 and for small n, unlike the normal approximation.
+/// n = 0 gives [0, 1].
+Interval WilsonInterval95(int k, int n);
 
 /// Compact record of an episode as stored in episodes.csv (what the table needs).
 struct EpisodeRecord {
@@ -39,5 +56,11 @@ struct EpisodeRecord {
 EpisodeRecord ToRecord(const EpisodeResult& r);
 
 RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit);
+
+/// A summary row over several rows (e.g. Table 2's average of easy, medium and hard): every
+/// metric is the unweighted mean of the rows' values, as the paper averages; the counts and
+/// episodes are summed (so the rates' intervals use the pooled episodes), and nav_time_se is
+/// the standard error of the mean of the rows' independent nav times.
+RowMetrics SummarizeRows(std::span<const RowMetrics> rows);
 
 }  // namespace crowdsim

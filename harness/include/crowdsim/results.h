@@ -31,11 +31,23 @@ std::string FormatEpisodeLine(const EpisodeLine& e);
 /// Reads an episodes.csv; lines that are cut short (a crash mid-write) are skipped.
 std::vector<EpisodeLine> ReadEpisodesCsv(const std::filesystem::path& path);
 
-/// One finished row of the table.
+/// One finished line of the table: a suite row, or a summary line (spec null, summary set).
 struct TableRow {
   const RowSpec* spec = nullptr;
   RowMetrics metrics;
+  const SummarySpec* summary = nullptr;
+
+  const std::string& Label() const { return spec ? spec->label : summary->label; }
+  const std::vector<std::pair<std::string, std::string>>& Info() const {
+    return spec ? spec->info : summary->info;
+  }
+  const std::optional<PublishedReference>& Reference() const {
+    return spec ? spec->reference : summary->reference;
+  }
 };
+
+/// Appends the suite's summary lines (the mean of their rows) to the finished rows.
+void AddSummaryLines(const Suite& suite, std::vector<TableRow>* rows);
 
 std::string FormatTableMarkdown(const Suite& suite, const std::vector<TableRow>& rows);
 std::string FormatTableCsv(const Suite& suite, const std::vector<TableRow>& rows);

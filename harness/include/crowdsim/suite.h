@@ -39,6 +39,17 @@ struct HumansSpec {
   HumanGoalMode goal_mode = HumanGoalMode::kStay;
 };
 
+/// Published values of a row (e.g. the paper's), shown beside ours with our difference. Only
+/// presentation: a reference never changes the results or the config hash.
+struct PublishedReference {
+  std::optional<double> success;
+  std::optional<double> collision;
+  std::optional<double> timeout;
+  std::optional<double> nav_time;
+  std::optional<double> danger;
+  std::string source;  ///< e.g. "CrowdSim++ Table 1, line 10"
+};
+
 /// One table row: a robot policy with its sensors in a world with humans.
 struct RowSpec {
   std::string label;
@@ -47,6 +58,15 @@ struct RowSpec {
   PluginUse world;
   HumansSpec humans;
   std::vector<std::pair<std::string, std::string>> info;  ///< extra table columns (model, ...)
+  std::optional<PublishedReference> reference;
+};
+
+/// A summary line under the rows (e.g. Table 2's average): the mean of the named rows.
+struct SummarySpec {
+  std::string label;
+  std::vector<std::string> rows;  ///< labels of the rows it averages, in suite order
+  std::vector<std::pair<std::string, std::string>> info;
+  std::optional<PublishedReference> reference;
 };
 
 struct Suite {
@@ -58,6 +78,7 @@ struct Suite {
   SimConfig sim;
   std::vector<std::string> info_columns;  ///< order of the extra columns
   std::vector<RowSpec> rows;
+  std::vector<SummarySpec> summaries;  ///< shown after the rows; not part of the config hash
   /// Canonical text of everything that decides the results (not the episode count); its
   /// hash tells whether stored results can be resumed.
   std::string canonical;
