@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Trains every training file (or those given) that has no finished training yet, N at a time,
 # each at low priority (nice) on one core; an interrupted training is resumed from its
-# checkpoint. Safe to rerun at any time: finished trainings are skipped.
+# checkpoint. Safe to rerun at any time: finished trainings are skipped (one whose file now
+# asks for more RL episodes resumes from its last checkpoint and goes on to the new length).
 #
 #   scripts/train_all.sh [-j N] [--seeds "1010 2020 3030"] [--bin PATH] [FILE.yaml[@SEED] ...]
 #
@@ -42,8 +43,14 @@ for entry in "${files[@]}"; do
     out="results/train/$name"
     [[ "$s" == "-" ]] || out="${out}_seed$s"
     if [[ -f "$out/weights.pt" ]] && grep -q '"finished": true' "$out/summary.json" 2>/dev/null; then
-      echo "train_all: $out is finished, skipped"
-      continue
+      # Finished, unless the file now asks for a longer RL phase: then it resumes and goes on.
+      want=$(grep -o 'rl_episodes: *[0-9]*' "$f" | head -n1 | grep -o '[0-9]*$' || true)
+      done_rl=$(grep -o '"rl_episodes": *[0-9]*' "$out/summary.json" | head -n1 | grep -o '[0-9]*$' || true)
+      if [[ -z "$want" || "$want" == "$done_rl" ]]; then
+        echo "train_all: $out is finished, skipped"
+        continue
+      fi
+      echo "train_all: $out finished $done_rl RL episodes; the file asks for $want: lengthening it"
     fi
     plan+=("$f $s $out")
   done

@@ -181,6 +181,13 @@ const char* ToString(StoreTimeouts s) {
   return "off";
 }
 
+std::string TrainSpec::ConfigHashWithRlEpisodes(int rl_episodes) const {
+  TrainSpec other = *this;
+  other.training.rl_episodes = rl_episodes;
+  other.canonical = Canonical(other);
+  return other.ConfigHash();
+}
+
 void OverrideSeed(TrainSpec& spec, std::uint64_t seed) {
   spec.seed = seed;
   spec.canonical = Canonical(spec);

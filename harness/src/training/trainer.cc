@@ -130,6 +130,8 @@ class Trainer {
   double TrainOn(std::span<const std::size_t> indices);
   void SaveCheckpoint();
   void LoadCheckpoint();
+  /// Accepts a checkpoint whose configuration differs only in training.rl_episodes (throws otherwise).
+  void AcceptNewRlLength(const fs::path& dir);
   void WriteSummaryJson() const;
   void OpenEpisodeLog(std::int64_t keep_bytes);
   void WriteLearningCurve();
@@ -445,6 +447,7 @@ void Trainer::SaveCheckpoint() {
   memory_.Save(tmp / "memory.bin");
   probe_.Save(tmp / "probe.bin");
   state_.episode_log_bytes = episode_log_.Flush();
+  state_.rl_episodes = t_.rl_episodes;
   WriteCheckpointState(tmp / "state.txt", state_);
   // The complete new checkpoint replaces the old one; LoadCheckpoint also accepts a
   // checkpoint.tmp left complete by a crash between these two lines.
@@ -452,6 +455,28 @@ void Trainer::SaveCheckpoint() {
   fs::rename(tmp, dir);
   WriteLearningCurve();
   summary_.times.checkpoints += Since(t0);
+}
+
+void Trainer::AcceptNewRlLength(const fs::path& dir) {
+  // The RL length the checkpoint ran toward: recorded in it (v4), else in the folder's
+  // summary.json (written when the run stopped).
+  int before = state_.rl_episodes;
+  if (before < 0) before = static_cast<int>(ReadManifestInteger(Out("summary.json"), "rl_episodes"));
+  if (before < 0 || spec_.ConfigHashWithRlEpisodes(before) != state_.config_hash) {
+    throw TrainError("--resume: the checkpoint in '" + dir.string() + "' belongs to another "
+                     "configuration (config hash " + state_.config_hash + ", the training file now " +
+                     spec_.ConfigHash() + "); restore the file or train into another --out (only "
+                     "training.rl_episodes may change between runs)");
+  }
+  if (state_.phase == TrainPhase::kReinforcement && t_.rl_episodes < state_.counter) {
+    throw TrainError("--resume: training.rl_episodes is now " + std::to_string(t_.rl_episodes) +
+                     ", fewer than the " + std::to_string(state_.counter) +
+                     " RL episodes this checkpoint has done; give at least that many");
+  }
+  progress_.Note("the RL phase is now " + std::to_string(t_.rl_episodes) + " episodes (was " +
+                 std::to_string(before) + "): continuing from the checkpoint at RL episode " +
+                 std::to_string(state_.phase == TrainPhase::kReinforcement ? state_.counter : 0));
+  state_.config_hash = spec_.ConfigHash();
 }
 
 void Trainer::LoadCheckpoint() {
@@ -464,11 +489,7 @@ void Trainer::LoadCheckpoint() {
                      "' (start without --resume, or give the --out of the interrupted training)");
   }
   state_ = ReadCheckpointState(dir / "state.txt");
-  if (state_.config_hash != spec_.ConfigHash()) {
-    throw TrainError("--resume: the checkpoint in '" + dir.string() + "' belongs to another "
-                     "configuration (config hash " + state_.config_hash + ", the training file now " +
-                     spec_.ConfigHash() + "); restore the file or train into another --out");
-  }
+  if (state_.config_hash != spec_.ConfigHash()) AcceptNewRlLength(dir);
   try {
     learner_->LoadWeights(dir / "model.pt");
     learner_->LoadTrainingState(dir);

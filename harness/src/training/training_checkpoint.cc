@@ -11,12 +11,13 @@ namespace crowdsim::training {
 void WriteCheckpointState(const std::filesystem::path& file, const CheckpointState& s) {
   std::ofstream out(file, std::ios::trunc);
   out.precision(17);
-  out << "crowdsim_training_checkpoint 3\n"
+  out << "crowdsim_training_checkpoint 4\n"
       << "config_hash " << s.config_hash << "\n"
       << "phase " << static_cast<int>(s.phase) << "\n"
       << "counter " << s.counter << "\n"
       << "best " << s.best_success << " " << s.best_episode << "\n"
       << "episode_log_bytes " << s.episode_log_bytes << "\n"
+      << "rl_episodes " << s.rl_episodes << "\n"
       << "validations " << s.validations.size() << "\n";
   for (const auto& v : s.validations) {
     out << v.episode << " " << v.success << " " << v.collision << " " << v.timeout << " "
@@ -32,12 +33,13 @@ CheckpointState ReadCheckpointState(const std::filesystem::path& file) {
   std::size_t count = 0;
   CheckpointState s;
   in >> word >> version;
-  if (word != "crowdsim_training_checkpoint" || version < 1 || version > 3) {
+  if (word != "crowdsim_training_checkpoint" || version < 1 || version > 4) {
     throw TrainError("'" + file.string() + "' is not a training checkpoint of this version");
   }
   in >> word >> s.config_hash >> word >> phase >> word >> s.counter >> word >> s.best_success >>
       s.best_episode;
   if (version >= 2) in >> word >> s.episode_log_bytes;
+  if (version >= 4) in >> word >> s.rl_episodes;
   in >> word >> count;
   s.phase = static_cast<TrainPhase>(phase);
   for (std::size_t i = 0; i < count && in; ++i) {

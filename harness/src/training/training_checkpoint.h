@@ -20,6 +20,7 @@ struct CheckpointState {
   double best_success = -1.0;  ///< best validation success so far (-1: none)
   int best_episode = -1;
   std::int64_t episode_log_bytes = -1;  ///< flushed size of training_episodes.csv (-1: none)
+  int rl_episodes = -1;  ///< the RL length the training ran toward (-1: not recorded, before v4)
   std::vector<ValidationResult> validations;
 };
 

@@ -126,6 +126,34 @@ TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
                training::TrainError);
 }
 
+TEST(TrainingTest, LengtheningTheRlPhaseContinuesLikeALongerTraining) {
+  TempDir dir;
+  TrainFile f;
+  f.training = kTiny;  // 12 RL episodes, checkpoints every 5
+  ASSERT_TRUE(Train(WriteTrainFile(dir, f), dir.path() / "grown").finished);
+  std::string longer = kTiny;
+  longer.replace(longer.find("rl_episodes: 12"), 15, "rl_episodes: 18");
+  f.training = longer;
+  const auto long_file = WriteTrainFile(dir, f, "longer.yaml");
+  // The finished 12-episode training, resumed with 18: it goes on from its last checkpoint.
+  const auto grown = Train(long_file, dir.path() / "grown", true);
+  ASSERT_TRUE(grown.finished);
+  const auto whole = Train(long_file, dir.path() / "whole");
+  EXPECT_EQ(ValuesOfWeights(f, grown.weights), ValuesOfWeights(f, whole.weights));
+  EXPECT_EQ(ReadText(dir.path() / "grown" / "training_episodes.csv"),
+            ReadText(dir.path() / "whole" / "training_episodes.csv"));
+  EXPECT_EQ(ReadText(dir.path() / "grown" / "training_log.csv"),
+            ReadText(dir.path() / "whole" / "training_log.csv"));
+  // Shortening below the episodes already done is refused, with the count.
+  f.training = kTiny;
+  try {
+    Train(WriteTrainFile(dir, f, "shorter.yaml"), dir.path() / "grown", true);
+    ADD_FAILURE() << "shortened the RL phase below the episodes done";
+  } catch (const training::TrainError& e) {
+    EXPECT_NE(std::string(e.what()).find("fewer than the 15 RL episodes"), std::string::npos) << e.what();
+  }
+}
+
 /// The last line's replay-memory counts (imitation, success, collision, timeout).
 std::vector<long> LastMemoryComposition(const fs::path& log_file) {
   const std::string log = ReadText(log_file);

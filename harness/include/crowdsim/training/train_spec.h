@@ -63,6 +63,10 @@ struct TrainSpec {
   /// Everything that decides the trained weights; its hash guards --resume.
   std::string canonical;
   std::string ConfigHash() const;
+  /// The hash this training would have with another RL length: --resume accepts a checkpoint
+  /// that differs only there, so a finished or running training can be lengthened (or
+  /// shortened, down to the episodes already done).
+  std::string ConfigHashWithRlEpisodes(int rl_episodes) const;
 };
 
 struct TrainSpecLoadResult {
