@@ -4,6 +4,7 @@
 
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/runner.h"
+#include "crowdsim/results.h"
 #include "crowdsim/suite.h"
 #include "learning_test_util.h"
 #include "test_paths.h"
@@ -149,6 +150,27 @@ TEST(TrainSpecTest, ShippedSuitesCanRun) {
     for (const auto& e : PreflightSuite(*r.suite, registry)) ADD_FAILURE() << e;
   }
   EXPECT_GE(files, 5);
+}
+
+// The committed reference output of every suite belongs to the suite as it is now: a change to
+// a suite, a world file or weights that alters the configuration must come with new results
+// (else `run` refuses the committed ones as another configuration).
+TEST(TrainSpecTest, CommittedResultsMatchTheirSuites) {
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SourceDir() / "suites")) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().string());
+    PluginRegistry registry;
+    const SuiteLoadResult r = LoadSuite(entry.path(), registry);
+    ASSERT_TRUE(r.suite) << (r.errors.empty() ? "" : r.errors[0].Format());
+    const auto manifest = SourceDir() / "results" / r.suite->name / "manifest.json";
+    if (!std::filesystem::exists(manifest)) continue;
+    ++checked;
+    EXPECT_EQ(ReadManifestField(manifest, "config_hash"), r.suite->ConfigHash())
+        << manifest << ": rerun `crowdsim-bench run " << entry.path().filename().string()
+        << "` and commit its results";
+  }
+  EXPECT_GE(checked, 5);
 }
 
 }  // namespace
