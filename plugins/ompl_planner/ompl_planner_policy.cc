@@ -49,6 +49,8 @@ void OmplPlannerPolicy::Reset(const EpisodeContext& ctx) {
   time_step_ = ctx.sim.time_step;
   robot_radius_ = ctx.sim.robot_radius;
   follower_.Clear();
+  path_margin_ = 0.0;
+  planned_goal_ = Vec2::Zero();
   plan_failed_ = false;
   steps_since_failed_plan_ = 0;
   stats_ = PlannerStats{};
@@ -95,9 +97,11 @@ Action OmplPlannerPolicy::Decide(const Observation& obs) {
   if (world_ == nullptr || (obs.map != nullptr && obs.map != map_)) UseMap(obs.map);
   const AgentState& self = obs.self;
   const double time_step = obs.time_step > 0.0 ? obs.time_step : time_step_;
-  // Half the margin the path was planned with: every path segment stays in sight from the
-  // one before it, with room for small deviations.
-  const double sight_radius = self.radius + 0.5 * path_margin_;
+  // Half the margin the current path was planned with: every path segment stays in sight from
+  // the one before it, with room for small deviations. Read after any replanning below: a
+  // value taken before it would be the previous path's (at an episode's first step, the
+  // previous episode's, which made results depend on which episodes a worker ran before).
+  const auto sight_radius = [&] { return self.radius + 0.5 * path_margin_; };
 
   // Plan when there is no path, the goal moved, the path is out of sight, or no progress.
   // After a failed plan, retry only every replan_stall_steps decisions (planning is costly).
@@ -107,7 +111,7 @@ Action OmplPlannerPolicy::Decide(const Observation& obs) {
   } else if (!follower_.has_path() || self.goal != planned_goal_) {
     Replan(self);
   } else {
-    target = follower_.FarthestVisible(*world_, self.position, sight_radius);
+    target = follower_.FarthestVisible(*world_, self.position, sight_radius());
     if (target < 0 ||
         follower_.Stalled(follower_.Remaining(self.position, target), config_.replan_stall_steps)) {
       Replan(self);
@@ -115,7 +119,7 @@ Action OmplPlannerPolicy::Decide(const Observation& obs) {
     }
   }
   if (target < 0 && follower_.has_path()) {
-    target = follower_.FarthestVisible(*world_, self.position, sight_radius);
+    target = follower_.FarthestVisible(*world_, self.position, sight_radius());
     if (target >= 0)
       follower_.Stalled(follower_.Remaining(self.position, target), config_.replan_stall_steps);
   }
