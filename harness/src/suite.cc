@@ -11,6 +11,7 @@
 
 #include "crowdsim/rng.h"
 #include "suite_reader.h"
+#include "yaml_file.h"
 
 namespace crowdsim {
 namespace fs = std::filesystem;
@@ -177,6 +178,17 @@ struct Defaults {
   YAML::Node sensors{YAML::NodeType::Undefined};
 };
 
+/// A label names a row in episodes.csv and the tables: control characters (a line break, a tab)
+/// would be turned into spaces there and could make two rows one.
+void CheckLabel(Reader& r, const YAML::Node& n, const std::string& path) {
+  const std::string& label = n.Scalar();
+  if (label.empty()) r.Error(n, path, "must not be empty");
+  if (std::any_of(label.begin(), label.end(), [](char c) { return std::iscntrl(static_cast<unsigned char>(c)); })) {
+    r.Error(n, path, "must not contain control characters (line breaks, tabs): they would become "
+                     "spaces in episodes.csv and the tables");
+  }
+}
+
 void ReadInfo(Reader& r, const YAML::Node& info, const std::string& path,
               std::vector<std::pair<std::string, std::string>>* out) {
   if (!r.IsMap(info, path, "extra table columns")) return;
@@ -256,6 +268,7 @@ void ReadRow(Reader& r, const YAML::Node& n, size_t index, const Defaults& d, co
     row->policy.loaded = r.Plugin(n["policy"], Reader::Child(path, "policy"), PluginKind::kPolicy);
   }
   row->label = n["label"] ? n["label"].Scalar() : row->policy.plugin;
+  if (n["label"]) CheckLabel(r, n["label"], Reader::Child(path, "label"));
   if (n["params"] && !r.IsMap(n["params"], Reader::Child(path, "params"), "policy parameters")) return;
   if (row->policy.loaded) {
     row->policy.params = r.ParamsFor(*row->policy.loaded, n["params"], {}, Reader::Child(path, "params"), base);
@@ -303,6 +316,7 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
     SummarySpec summary;
     if (auto label = item["label"] ? r.String(item["label"], Reader::Child(path, "label")) : std::nullopt) {
       summary.label = *label;
+      CheckLabel(r, item["label"], Reader::Child(path, "label"));
       if (!labels.insert(summary.label).second) {
         r.Error(item["label"], Reader::Child(path, "label"),
                 "label '" + summary.label + "' is already a row's or summary's; labels must be unique");
@@ -339,18 +353,8 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
 SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
   SuiteLoadResult result;
   Reader r(file.string(), registry);
-  YAML::Node root;
-  if (!fs::exists(file)) {
-    result.errors.push_back({file.string(), 0, 0, "", "suite file does not exist"});
-    return result;
-  }
-  try {
-    root = YAML::LoadFile(file.string());
-  } catch (const YAML::Exception& e) {
-    result.errors.push_back({file.string(), e.mark.line + 1, e.mark.column + 1, "",
-                             "not valid YAML: " + e.msg});
-    return result;
-  }
+  YAML::Node root = LoadYamlFile(file, "suite file", &result.errors);
+  if (!result.errors.empty()) return result;
   if (!root.IsMap()) {
     result.errors.push_back({file.string(), 0, 0, "", "a suite is a YAML map with name, episodes, world and rows"});
     return result;

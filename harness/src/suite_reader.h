@@ -154,7 +154,12 @@ class Reader {
     const bool ok = !name->empty() && std::all_of(name->begin(), name->end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
     });
-    if (!ok) Error(n, "name", "'" + *name + "' must use only letters, digits, '_', '-', '.'");
+    if (!ok) {
+      Error(n, "name", "'" + *name + "' must use only letters, digits, '_', '-', '.'");
+    } else if ((*name)[0] == '.') {
+      // "." and ".." would write into the results folder itself or its parent.
+      Error(n, "name", "'" + *name + "' must not start with '.' (it names the folder " + folder + ")");
+    }
     return *name;
   }
 

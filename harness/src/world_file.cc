@@ -1,5 +1,7 @@
 #include "crowdsim/world_file.h"
 
+#include "yaml_file.h"
+
 #include <cmath>
 
 #include <yaml-cpp/yaml.h>
@@ -202,15 +204,10 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
 }
 
 YAML::Node LoadYaml(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) {
-    throw WorldFileError(path.string() + ": world file does not exist");
-  }
-  try {
-    return YAML::LoadFile(path.string());
-  } catch (const YAML::Exception& e) {
-    throw WorldFileError(path.string() + ":" + std::to_string(e.mark.line + 1) + ":" +
-                         std::to_string(e.mark.column + 1) + ": not valid YAML: " + e.msg);
-  }
+  std::vector<SuiteError> errors;
+  YAML::Node root = suite_internal::LoadYamlFile(path, "world file", &errors);
+  if (!errors.empty()) throw WorldFileError(errors.front().Format());
+  return root;
 }
 
 std::string Num(double x) {

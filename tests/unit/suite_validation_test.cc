@@ -199,5 +199,27 @@ TEST_F(SuiteValidation, BadReferencesAndSummariesAreNamed) {
   EXPECT_NE(Find(r, "summaries[3].reference: gives no value"), "") << All(r);
 }
 
+TEST_F(SuiteValidation, DuplicateKeysAreErrorsNotSilentChoices) {
+  auto r = Load("name: t\nepisodes: 3\nepisodes: 4\n"
+                "world: {source: random_rect, obstacles: 1, split: test}\n"
+                "rows:\n  - label: a\n    policy: linear\n    policy: orca\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "suite.yaml:3:1: key 'episodes' is given twice in this map (first at line 2)"), "") << All(r);
+  EXPECT_NE(Find(r, "suite.yaml:8:5: key 'policy' is given twice in this map (first at line 7)"), "") << All(r);
+}
+
+TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
+  auto dotdot = Load("name: ..\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+                     "rows:\n  - {label: \"a\\nb\", policy: linear}\n  - {label: \"a\\tb\", policy: linear}\n");
+  ASSERT_FALSE(dotdot.suite);
+  EXPECT_NE(Find(dotdot, "name: '..' must not start with '.'"), "") << All(dotdot);
+  EXPECT_NE(Find(dotdot, "rows[0].label: must not contain control characters"), "") << All(dotdot);
+  EXPECT_NE(Find(dotdot, "rows[1].label: must not contain control characters"), "") << All(dotdot);
+  // A folder given as the suite file.
+  const SuiteLoadResult folder = LoadSuite(dir_.path(), registry_);
+  ASSERT_FALSE(folder.suite);
+  EXPECT_NE(Find(folder, "is a folder; give the suite file (a .yaml file) in it"), "") << All(folder);
+}
+
 }  // namespace
 }  // namespace crowdsim

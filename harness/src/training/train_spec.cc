@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "../suite_reader.h"
+#include "../yaml_file.h"
 #include "crowdsim/rng.h"
 
 namespace crowdsim::training {
@@ -211,17 +212,8 @@ std::vector<std::string> TrainSpecWarnings(const TrainSpec& spec) {
 
 TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry) {
   TrainSpecLoadResult result;
-  if (!fs::exists(file)) {
-    result.errors.push_back({file.string(), 0, 0, "", "training file does not exist"});
-    return result;
-  }
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file.string());
-  } catch (const YAML::Exception& e) {
-    result.errors.push_back({file.string(), e.mark.line + 1, e.mark.column + 1, "", "not valid YAML: " + e.msg});
-    return result;
-  }
+  YAML::Node root = suite_internal::LoadYamlFile(file, "training file", &result.errors);
+  if (!result.errors.empty()) return result;
   if (!root.IsMap()) {
     result.errors.push_back({file.string(), 0, 0, "", "a training file is a YAML map with name, policy, sensors, world, humans and training"});
     return result;
