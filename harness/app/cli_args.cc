@@ -29,6 +29,7 @@ Args Args::Parse(const std::vector<std::string>& args, const std::vector<std::st
         value = args[++i];
       }
       a.options[name] = value;
+      a.repeated[name].push_back(value);
     } else {
       std::string valid;
       for (const auto& o : with_value) valid += " " + o;
@@ -43,6 +44,11 @@ std::optional<std::string> Args::Get(const std::string& name) const {
   auto it = options.find(name);
   if (it == options.end()) return std::nullopt;
   return it->second;
+}
+
+std::vector<std::string> Args::All(const std::string& name) const {
+  auto it = repeated.find(name);
+  return it == repeated.end() ? std::vector<std::string>{} : it->second;
 }
 
 int Args::GetInt(const std::string& name, int fallback, int lo, int hi) const {

@@ -21,24 +21,28 @@ struct Command {
 const std::vector<Command>& Commands() {
   static const std::vector<Command> commands = {
     {"run", crowdsim::cli::RunCommand, R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet] [--shard K/N]
+                 [--set KEY.PATH=VALUE]...
       runs a suite; writes DIR/table.md, table.csv, episodes.csv, manifest.json
       (DIR defaults to results/<suite name>/); rerunning resumes finished episodes;
-      --shard K/N runs only the K-th of N disjoint slices of the episodes (a cluster job array)
+      --shard K/N runs only the K-th of N disjoint slices of the episodes (a cluster job array);
+      --set changes one key of the suite (humans.count=10, rows[orca].params.safety_space=0.1,
+      robot.sensors[lidar2d].beams=90; recorded in manifest.json), as validate, render, train
 )"},
     {"merge", crowdsim::cli::MergeCommand, R"(  crowdsim-bench merge SHARD_DIR... --out DIR [--suite SUITE.yaml]
       joins the output folders of `run --shard K/N` into the tables of a single run, after
       checking that they are one configuration and hold every episode exactly once
 )"},
-    {"validate", crowdsim::cli::ValidateCommand, R"(  crowdsim-bench validate FILE.yaml...
+    {"validate", crowdsim::cli::ValidateCommand, R"(  crowdsim-bench validate FILE.yaml... [--set KEY.PATH=VALUE]...
       checks suites (and training files) without running them; reports every error with
       file:line:col
 )"},
-    {"train", crowdsim::cli::TrainCommand, R"(  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet]
+    {"train", crowdsim::cli::TrainCommand, R"(  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet] [--set KEY.PATH=VALUE]...
       trains a learned policy (cadrl, sarl): imitation of ORCA, then RL; writes
       DIR/weights.pt, best.pt, il.pt, training_log.csv (validation), training_episodes.csv
       (every episode), learning_curve.svg/.png, summary.json (DIR defaults to
       results/train/<name>/, with --seed N to results/train/<name>_seed<N>/); checkpoints
-      every 500 episodes and on Ctrl-C; --resume continues exactly
+      every 500 episodes and on Ctrl-C; --resume continues exactly, and goes on to a larger
+      training.rl_episodes (e.g. --set training.rl_episodes=10000)
 )"},
     {"floorplan", crowdsim::floorplan::RunFloorplanCli, R"(  crowdsim-bench floorplan import IMAGE [--resolution M] [--kind navmesh|outline] [--max-rectangles 30] --out WORLD.yaml
   crowdsim-bench floorplan preview WORLD.yaml [--image IMAGE] --out FILE.svg
@@ -46,7 +50,7 @@ const std::vector<Command>& Commands() {
       imports real floor plans into rectangle worlds (see worlds/floorplan/README.md)
 )"},
     {"render", crowdsim::cli::RenderCommand, R"(  crowdsim-bench render SUITE.yaml --row R --episode K [--compare R2] [--sensors-at STEP]
-                 [--animate] [--speed X] [--scale S] --out FILE.{svg,png,pdf,gif,mp4}
+                 [--animate] [--speed X] [--scale S] [--set KEY.PATH=VALUE]... --out FILE.{svg,png,pdf,gif,mp4}
       draws one episode (rows 1.. as in the table or by label, episodes 0..): trajectories,
       time marks, outcome; --compare adds a second row's robot; --sensors-at draws the lidar
       and person readings at a step; --animate writes a .gif (or .mp4) at --speed x real time

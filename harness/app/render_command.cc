@@ -15,7 +15,7 @@ namespace crowdsim::cli {
 
 int RenderCommand(const std::vector<std::string>& args) {
   const Args a = Args::Parse(
-      args, {"--row", "--episode", "--compare", "--sensors-at", "--speed", "--scale", "--out"},
+      args, {"--row", "--episode", "--compare", "--sensors-at", "--speed", "--scale", "--out", "--set"},
       {"--animate"});
   if (a.positional.size() != 1) throw UsageError("render needs exactly one suite file");
   const auto out = a.Get("--out");
@@ -80,7 +80,7 @@ int RenderCommand(const std::vector<std::string>& args) {
   if (a.Has("--sensors-at")) sensors_at = a.GetInt("--sensors-at", 0, 0, 1'000'000);
 
   PluginRegistry registry;
-  SuiteLoadResult loaded = LoadSuite(a.positional[0], registry);
+  SuiteLoadResult loaded = LoadSuite(a.positional[0], registry, a.All("--set"));
   if (!loaded.suite) {
     for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
     return 2;

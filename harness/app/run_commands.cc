@@ -20,8 +20,9 @@ namespace crowdsim::cli {
 namespace {
 
 /// Loads a suite or prints every error; nullopt on errors.
-std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry) {
-  SuiteLoadResult r = LoadSuite(file, registry);
+std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,
+                                  const std::vector<std::string>& overrides) {
+  SuiteLoadResult r = LoadSuite(file, registry, overrides);
   if (!r.suite) {
     for (const auto& e : r.errors) std::cerr << "error: " << e.Format() << "\n";
     std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file << "\n";
@@ -63,7 +64,7 @@ void ExplainInterruption(const std::filesystem::path& out_dir) {
 }  // namespace
 
 int RunCommand(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args, {"--out", "--jobs", "--episodes", "--shard"}, {"--fresh", "--quiet"});
+  const Args a = Args::Parse(args, {"--out", "--jobs", "--episodes", "--shard", "--set"}, {"--fresh", "--quiet"});
   if (a.positional.size() != 1) throw UsageError("run needs exactly one suite file");
   int shard_index = 1, shard_count = 1;
   if (auto shard = a.Get("--shard")) {
@@ -77,7 +78,7 @@ int RunCommand(const std::vector<std::string>& args) {
     }
   }
   PluginRegistry registry;
-  auto suite = LoadOrReport(a.positional[0], registry);
+  auto suite = LoadOrReport(a.positional[0], registry, a.All("--set"));
   if (!suite) return 2;
   RunOptions opt;
   if (auto out = a.Get("--out")) opt.out_dir = *out;
@@ -124,13 +125,13 @@ int MergeCommand(const std::vector<std::string>& args) {
 }
 
 int ValidateCommand(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args, {}, {});
+  const Args a = Args::Parse(args, {"--set"}, {});
   if (a.positional.empty()) throw UsageError("validate needs at least one suite or training file");
   int status = 0;
   for (const auto& file : a.positional) {
     PluginRegistry registry;
     if (LooksLikeTrainingFile(file)) {
-      training::TrainSpecLoadResult loaded = training::LoadTrainSpec(file, registry);
+      training::TrainSpecLoadResult loaded = training::LoadTrainSpec(file, registry, a.All("--set"));
       if (!loaded.spec) {
         for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
         std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
@@ -141,7 +142,7 @@ int ValidateCommand(const std::vector<std::string>& args) {
       }
       continue;
     }
-    auto suite = LoadOrReport(file, registry);
+    auto suite = LoadOrReport(file, registry, a.All("--set"));
     if (!suite) {
       status = 2;
       continue;

@@ -13,10 +13,10 @@
 namespace crowdsim::cli {
 
 int TrainCommand(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args, {"--out", "--seed"}, {"--resume", "--quiet"});
+  const Args a = Args::Parse(args, {"--out", "--seed", "--set"}, {"--resume", "--quiet"});
   if (a.positional.size() != 1) throw UsageError("train needs exactly one training file");
   PluginRegistry registry;
-  training::TrainSpecLoadResult loaded = training::LoadTrainSpec(a.positional[0], registry);
+  training::TrainSpecLoadResult loaded = training::LoadTrainSpec(a.positional[0], registry, a.All("--set"));
   if (!loaded.spec) {
     for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
     std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")

@@ -44,7 +44,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     }
   }
   const fs::path file = suite_file.empty() ? fs::path(manifest_suite) : suite_file;
-  SuiteLoadResult loaded = LoadSuite(file, registry);
+  SuiteLoadResult loaded = LoadSuite(file, registry, ReadManifestStrings(shard_dirs.front() / "manifest.json", "overrides"));
   if (!loaded.suite) {
     std::string msg = "cannot load the suite '" + file.string() + "' of the shards:";
     for (const auto& e : loaded.errors) msg += "\n  " + e.Format();

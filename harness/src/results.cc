@@ -471,6 +471,11 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   os << "  \"format\": \"crowdsim-results/1\",\n";
   os << "  \"suite\": " << JsonString(suite.name) << ",\n";
   os << "  \"suite_file\": " << JsonString(suite.file.string()) << ",\n";
+  if (!suite.overrides.empty()) {
+    os << "  \"overrides\": [";
+    for (size_t i = 0; i < suite.overrides.size(); ++i) os << (i ? ", " : "") << JsonString(suite.overrides[i]);
+    os << "],\n";
+  }
   os << "  \"description\": " << JsonString(suite.description) << ",\n";
   os << "  \"crowdsim_version\": " << JsonString(Version()) << ",\n";
   os << "  \"git_commit\": " << JsonString(GitCommit()) << ",\n";
@@ -544,6 +549,38 @@ std::string ReadManifestField(const fs::path& path, const std::string& field) {
     }
   }
   return "";
+}
+
+std::vector<std::string> ReadManifestStrings(const fs::path& path, const std::string& field) {
+  std::ifstream f(path);
+  std::string line;
+  const std::string key = "\"" + field + "\": [";
+  std::vector<std::string> out;
+  while (std::getline(f, line)) {
+    const auto p = line.find(key);
+    if (p == std::string::npos) continue;
+    // The strings as JsonString wrote them: "..." with \" \\ \n \t and \u00XX escapes.
+    for (std::size_t i = p + key.size(); i < line.size() && line[i] != ']'; ++i) {
+      if (line[i] != '"') continue;
+      std::string s;
+      for (++i; i < line.size() && line[i] != '"'; ++i) {
+        if (line[i] != '\\' || i + 1 >= line.size()) {
+          s += line[i];
+          continue;
+        }
+        const char e = line[++i];
+        if (e == 'n') s += '\n';
+        else if (e == 't') s += '\t';
+        else if (e == 'u' && i + 4 < line.size()) {
+          s += static_cast<char>(std::stoi(line.substr(i + 1, 4), nullptr, 16));
+          i += 4;
+        } else s += e;
+      }
+      out.push_back(std::move(s));
+    }
+    break;
+  }
+  return out;
 }
 
 long ReadManifestInteger(const fs::path& path, const std::string& field) {

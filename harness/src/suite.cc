@@ -11,6 +11,7 @@
 
 #include "crowdsim/rng.h"
 #include "suite_reader.h"
+#include "yaml_edit.h"
 #include "yaml_file.h"
 
 namespace crowdsim {
@@ -350,17 +351,25 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
 
 }  // namespace
 
-SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
+SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
+                          const std::vector<std::string>& overrides) {
   SuiteLoadResult result;
   Reader r(file.string(), registry);
   YAML::Node root = LoadYamlFile(file, "suite file", &result.errors);
   if (!result.errors.empty()) return result;
+  if (root.IsMap()) {
+    ApplyOverrides(root, overrides, &result.errors);
+    ExpandSweeps(root, file.string(), &result.errors);
+    LocateOverrideErrors(overrides, &result.errors);
+    if (!result.errors.empty()) return result;
+  }
   if (!root.IsMap()) {
     result.errors.push_back({file.string(), 0, 0, "", "a suite is a YAML map with name, episodes, world and rows"});
     return result;
   }
   Suite s;
   s.file = file;
+  s.overrides = overrides;
   const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
   r.CheckKeys(root, "", {"name", "description", "episodes", "seed", "sim", "world", "humans", "robot", "columns", "rows", "summaries"});
   s.name = r.Name(root, "results/<name>/");
@@ -423,6 +432,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry) {
   if (!r.errors.empty()) {
     // Suite-level sections (world, humans, robot sensors) are read once per row: report each
     // problem once.
+    LocateOverrideErrors(overrides, &r.errors);
     std::set<std::string> seen;
     for (auto& e : r.errors) {
       if (seen.insert(e.Format()).second) result.errors.push_back(std::move(e));

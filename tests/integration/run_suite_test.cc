@@ -342,7 +342,7 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   const auto [c, completion] = Shell(exe + " completion bash");
   EXPECT_EQ(c, 0);
   EXPECT_NE(completion.find("run merge validate train floorplan render report list-plugins"), std::string::npos);
-  EXPECT_NE(completion.find("train) COMPREPLY=($(compgen -W \"--resume --out --seed --quiet --help\""),
+  EXPECT_NE(completion.find("train) COMPREPLY=($(compgen -W \"--resume --out --seed --quiet --set --help\""),
             std::string::npos) << completion;
   const auto script = dir_.Write("completion.bash", completion);
   const auto [b, bash_text] = Shell("bash -n " + script.string());

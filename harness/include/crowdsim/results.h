@@ -68,6 +68,8 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
 /// Reads a top-level string field (e.g. "config_hash", "git_commit") of a manifest.json
 /// ("" if absent or unreadable).
 std::string ReadManifestField(const std::filesystem::path& path, const std::string& key);
+/// Reads a top-level list of strings (e.g. "overrides") of a manifest.json (empty if absent).
+std::vector<std::string> ReadManifestStrings(const std::filesystem::path& path, const std::string& key);
 /// Reads a top-level whole-number field (e.g. "episodes") of a manifest.json (-1 if absent).
 long ReadManifestInteger(const std::filesystem::path& path, const std::string& key);
 

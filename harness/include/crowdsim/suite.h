@@ -79,6 +79,7 @@ struct Suite {
   std::vector<std::string> info_columns;  ///< order of the extra columns
   std::vector<RowSpec> rows;
   std::vector<SummarySpec> summaries;  ///< shown after the rows; not part of the config hash
+  std::vector<std::string> overrides;  ///< `--set key.path=value` applied to the file, in order
   /// Canonical text of everything that decides the results (not the episode count); its
   /// hash tells whether stored results can be resumed.
   std::string canonical;
@@ -91,6 +92,9 @@ struct SuiteLoadResult {
 };
 
 /// Reads and validates a suite; loads the plugins it names to check their parameters.
-SuiteLoadResult LoadSuite(const std::filesystem::path& file, PluginRegistry& registry);
+/// `overrides` (`key.path=value`, as `--set` takes them) edit the file's document first; rows
+/// with a `sweep:` block are then expanded (one row per combination of values).
+SuiteLoadResult LoadSuite(const std::filesystem::path& file, PluginRegistry& registry,
+                          const std::vector<std::string>& overrides = {});
 
 }  // namespace crowdsim

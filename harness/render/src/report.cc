@@ -110,7 +110,7 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
   }
   const std::string manifest = ReadTextFile(dir / "manifest.json");
   const fs::path suite_file = FindSuiteFile(dir, manifest, options);
-  SuiteLoadResult loaded = LoadSuite(suite_file, registry);
+  SuiteLoadResult loaded = LoadSuite(suite_file, registry, ReadManifestStrings(dir / "manifest.json", "overrides"));
   if (!loaded.suite) {
     std::string msg = "cannot load the suite " + suite_file.string() + ":";
     for (const SuiteError& e : loaded.errors) msg += "\n  " + e.Format();

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "../suite_reader.h"
+#include "../yaml_edit.h"
 #include "../yaml_file.h"
 #include "crowdsim/rng.h"
 
@@ -210,10 +211,15 @@ std::vector<std::string> TrainSpecWarnings(const TrainSpec& spec) {
   return w;
 }
 
-TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry) {
+TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry,
+                                  const std::vector<std::string>& overrides) {
   TrainSpecLoadResult result;
   YAML::Node root = suite_internal::LoadYamlFile(file, "training file", &result.errors);
   if (!result.errors.empty()) return result;
+  if (root.IsMap()) {
+    suite_internal::ApplyOverrides(root, overrides, &result.errors);
+    if (!result.errors.empty()) return result;
+  }
   if (!root.IsMap()) {
     result.errors.push_back({file.string(), 0, 0, "", "a training file is a YAML map with name, policy, sensors, world, humans and training"});
     return result;
@@ -260,6 +266,7 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
   ReadHumans(r, root["humans"], base, &s);
   ReadTraining(r, root["training"], base, &s);
   if (!r.errors.empty()) {
+    suite_internal::LocateOverrideErrors(overrides, &r.errors);
     result.errors = std::move(r.errors);
     return result;
   }

@@ -75,7 +75,9 @@ struct TrainSpecLoadResult {
 };
 
 /// Reads and validates a training file; loads the plugins it names to check parameters.
-TrainSpecLoadResult LoadTrainSpec(const std::filesystem::path& file, PluginRegistry& registry);
+/// `overrides` (`key.path=value`, as `train --set` takes them) edit the file's document first.
+TrainSpecLoadResult LoadTrainSpec(const std::filesystem::path& file, PluginRegistry& registry,
+                                  const std::vector<std::string>& overrides = {});
 
 /// `train --seed N`: the same training with another seed (weights, scenarios, exploration,
 /// batches); the canonical text and so the config hash follow.

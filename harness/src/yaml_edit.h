@@ -1,0 +1,35 @@
+// Internal to the core: edits of a suite or training document before it is read, so that one
+// file serves many experiments: `--set key.path=value` from the command line, and a row's
+// `sweep:` block expanded into one row per combination of values.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+#include <vector>
+
+#include "crowdsim/suite.h"
+
+namespace crowdsim::suite_internal {
+
+/// Applies `key.path=value` assignments in order. A path is keys joined by '.', where a list is
+/// entered with [N] (0-based) or [name] (the item whose label, or else policy, type or own
+/// text, is name): `humans.count=10`, `rows[orca].params.safety_space=0.1`,
+/// `robot.sensors[lidar2d].beams=90`. The value is YAML (`10`, `[person, lidar2d]`, `{a: 1}`).
+/// Missing maps on the way are created; a list item that does not exist is an error. Each
+/// problem becomes an error whose file is "--set EXPR".
+void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
+                    std::vector<SuiteError>* errors);
+
+/// Points the reader's errors about a value set with --set at that option (they would name
+/// line 1 of the file): an error whose key path is an override's, or lies under it.
+void LocateOverrideErrors(const std::vector<std::string>& overrides, std::vector<SuiteError>* errors);
+
+/// Replaces every row with a `sweep:` map of row-relative key paths to value lists, e.g.
+/// `sweep: {humans.count: [5, 10, 20], world.obstacles: [1, 3]}`, by one row per combination
+/// (the first key varies slowest), labelled `label/key=value/...` and with one info column per
+/// swept key. A row that inherits `world`, `humans` or the robot's sensors gets its own copy
+/// before the swept key is set. `file` locates errors.
+void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteError>* errors);
+
+}  // namespace crowdsim::suite_internal

@@ -1,0 +1,137 @@
+// One suite file, many experiments: `--set key.path=value` overrides and `sweep:` rows.
+#include <gtest/gtest.h>
+
+#include "crowdsim/suite.h"
+#include "crowdsim/training/train_spec.h"
+#include "temp_dir.h"
+#include "test_paths.h"
+
+namespace crowdsim {
+namespace {
+
+class SuiteEdits : public ::testing::Test {
+ protected:
+  SuiteLoadResult Load(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
+    file_ = dir_.Write("suite.yaml", yaml);
+    return LoadSuite(file_, registry_, overrides);
+  }
+  static std::string All(const SuiteLoadResult& r) {
+    std::string s;
+    for (const auto& e : r.errors) s += e.Format() + "\n";
+    return s;
+  }
+
+  testing::TempDir dir_;
+  std::filesystem::path file_;
+  PluginRegistry registry_{{testing::PluginDir()}};
+};
+
+constexpr const char* kSuite = R"(name: t
+episodes: 3
+world: {source: random_rect, obstacles: 1, split: test}
+humans: {count: 5, policy: orca}
+robot:
+  sensors: [person, {type: lidar2d, beams: 45}]
+columns: [model]
+rows:
+  - label: orca
+    policy: orca
+    info: {model: ORCA}
+    sweep: {humans.count: [2, 8], world.obstacles: [1, 3], params.safety_space: [0.0, 0.1, 0.2]}
+  - {label: linear, policy: linear}
+)";
+
+TEST_F(SuiteEdits, SweepExpandsARowIntoEveryCombination) {
+  const auto r = Load(kSuite);
+  ASSERT_TRUE(r.suite) << All(r);
+  const auto& rows = r.suite->rows;
+  ASSERT_EQ(rows.size(), 2u * 2u * 3u + 1u);
+  // The first key varies slowest; labels and info columns name the values.
+  EXPECT_EQ(rows[0].label, "orca/humans.count=2/world.obstacles=1/params.safety_space=0.0");
+  EXPECT_EQ(rows[1].label, "orca/humans.count=2/world.obstacles=1/params.safety_space=0.1");
+  EXPECT_EQ(rows[3].label, "orca/humans.count=2/world.obstacles=3/params.safety_space=0.0");
+  EXPECT_EQ(rows[11].label, "orca/humans.count=8/world.obstacles=3/params.safety_space=0.2");
+  EXPECT_EQ(rows[12].label, "linear");
+  EXPECT_EQ(rows[11].humans.count, 8);
+  EXPECT_EQ(rows[11].world.params.GetInt("obstacles"), 3);
+  EXPECT_DOUBLE_EQ(rows[11].policy.params.GetDouble("safety_space"), 0.2);
+  EXPECT_EQ(rows[0].world.params.GetInt("obstacles"), 1);
+  // Each row still has the suite's sensors and its own info besides the swept values.
+  EXPECT_EQ(rows[11].sensors.size(), 2u);
+  EXPECT_EQ(r.suite->info_columns,
+            (std::vector<std::string>{"model", "humans.count", "world.obstacles", "params.safety_space"}));
+  EXPECT_EQ(rows[4].info.front(), (std::pair<std::string, std::string>{"model", "ORCA"}));
+  // Other rows keep the suite's settings: nothing was changed in place.
+  EXPECT_EQ(rows[12].humans.count, 5);
+  EXPECT_EQ(rows[12].world.params.GetInt("obstacles"), 1);
+}
+
+TEST_F(SuiteEdits, ErrorsInASweptValuePointAtThatValue) {
+  std::string yaml = kSuite;
+  yaml.replace(yaml.find("[0.0, 0.1, 0.2]"), 15, "[0.0, 7.5]");
+  const auto r = Load(yaml);
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("suite.yaml:12:87: rows[1].params.safety_space: value 7.5 is out of range"),
+            std::string::npos) << All(r);
+  const auto bad = Load(std::string(kSuite).replace(std::string(kSuite).find("[2, 8]"), 6, "[]"));
+  ASSERT_FALSE(bad.suite);
+  EXPECT_NE(All(bad).find("rows[0].sweep.humans.count: must be a non-empty list"), std::string::npos) << All(bad);
+}
+
+TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
+  const auto base = Load(kSuite);
+  ASSERT_TRUE(base.suite) << All(base);
+  const auto r = Load(kSuite, {"humans.count=7", "rows[linear].params.speed_factor=0.5",
+                               "robot.sensors[lidar2d].beams=9", "sim.time_limit=30", "episodes=2"});
+  ASSERT_TRUE(r.suite) << All(r);
+  const Suite& s = *r.suite;
+  EXPECT_EQ(s.episodes, 2);
+  EXPECT_DOUBLE_EQ(s.sim.time_limit, 30.0);
+  EXPECT_EQ(s.rows[12].humans.count, 7);
+  EXPECT_EQ(s.rows[0].humans.count, 2);  // the sweep's own value wins in its rows
+  EXPECT_DOUBLE_EQ(s.rows[12].policy.params.GetDouble("speed_factor"), 0.5);
+  EXPECT_EQ(s.rows[12].sensors[1].params.GetInt("beams"), 9);
+  EXPECT_EQ(s.overrides.size(), 5u);
+  EXPECT_NE(s.ConfigHash(), base.suite->ConfigHash());
+  // The same change written into the file is the same configuration.
+  std::string edited = kSuite;
+  edited.replace(edited.find("beams: 45"), 9, "beams: 9");
+  edited.replace(edited.find("count: 5"), 8, "count: 7");
+  edited.replace(edited.find("episodes: 3"), 11, "episodes: 2\nsim: {time_limit: 30}");
+  edited.replace(edited.find("{label: linear, policy: linear}"), 31,
+                 "{label: linear, policy: linear, params: {speed_factor: 0.5}}");
+  const auto same = Load(edited);
+  ASSERT_TRUE(same.suite) << All(same);
+  EXPECT_EQ(same.suite->ConfigHash(), s.ConfigHash());
+}
+
+TEST_F(SuiteEdits, BadOverridesAreNamedByTheOption) {
+  auto r = Load(kSuite, {"rows[ocra].policy=orca"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_EQ(All(r), "--set rows[ocra].policy=orca: 'rows' has no item [ocra] (items: 0 orca, 1 linear)\n");
+  r = Load(kSuite, {"humans.count=abc"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_EQ(All(r), "--set humans.count=abc: humans.count: must be a whole number, found 'abc'\n");
+  r = Load(kSuite, {"humans.count"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("give key.path=value"), std::string::npos) << All(r);
+  r = Load(kSuite, {"rows[1.policy=orca"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("unclosed"), std::string::npos) << All(r);
+  r = Load(kSuite, {"name.x=1"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("'name' is not a map"), std::string::npos) << All(r);
+}
+
+TEST_F(SuiteEdits, TrainingFilesTakeOverridesToo) {
+  const auto file = dir_.Write("train.yaml",
+      "name: tr\nseed: 1\npolicy: cadrl\nparams: {sensors: person}\nsensors: [person]\n"
+      "world: {source: random_rect, obstacles: 0}\nhumans: {count: 1}\ntraining: {rl_episodes: 100}\n");
+  const auto r = training::LoadTrainSpec(file, registry_, {"training.rl_episodes=250", "seed=9"});
+  ASSERT_TRUE(r.spec) << (r.errors.empty() ? "" : r.errors[0].Format());
+  EXPECT_EQ(r.spec->training.rl_episodes, 250);
+  EXPECT_EQ(r.spec->seed, 9u);
+}
+
+}  // namespace
+}  // namespace crowdsim
