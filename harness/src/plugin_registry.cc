@@ -1,7 +1,9 @@
 #include "crowdsim/plugin_registry.h"
 
+#include <boost/dll/runtime_symbol_info.hpp>
 #include <boost/dll/shared_library.hpp>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 
 namespace crowdsim {
@@ -12,8 +14,18 @@ namespace {
 constexpr const char* kPrefix = "crowdsim_";
 constexpr const char* kSuffix = ".so";
 
+/// The folder of the installed core library (PREFIX/lib) when this is an installed copy:
+/// the plugins and data are found relative to it, never through paths of the build machine.
+std::optional<fs::path> InstalledLibDir() {
+  std::error_code ec;
+  const fs::path lib = fs::path(boost::dll::this_line_location().string()).parent_path();
+  if (fs::is_directory(lib / "crowdsim-bench" / "plugins", ec)) return lib;
+  return std::nullopt;
+}
+
 /// CROWDSIM_PLUGIN_PATH's folders first (like PATH, a user's folder overrides a built-in
-/// plugin of the same name, e.g. a frozen copy for a long campaign), then the build folder.
+/// plugin of the same name, e.g. a frozen copy for a long campaign), then the installed
+/// plugins (PREFIX/lib/crowdsim-bench/plugins) or, in a build tree, the build folder.
 std::vector<fs::path> DefaultSearchDirs() {
   std::vector<fs::path> dirs;
   if (const char* env = std::getenv("CROWDSIM_PLUGIN_PATH")) {
@@ -23,7 +35,11 @@ std::vector<fs::path> DefaultSearchDirs() {
       if (!item.empty()) dirs.emplace_back(item);
     }
   }
-  dirs.push_back(PluginRegistry::BuildPluginDir());
+  if (const auto lib = InstalledLibDir()) {
+    dirs.push_back(*lib / "crowdsim-bench" / "plugins");
+  } else {
+    dirs.push_back(PluginRegistry::BuildPluginDir());
+  }
   return dirs;
 }
 
@@ -82,6 +98,7 @@ fs::path PluginRegistry::BuildPluginDir() { return CROWDSIM_BUILD_PLUGIN_DIR; }
 
 fs::path DataRoot() {
   if (const char* env = std::getenv("CROWDSIM_DATA_DIR"); env && *env) return env;
+  if (const auto lib = InstalledLibDir()) return lib->parent_path() / "share" / "crowdsim-bench";
   return CROWDSIM_SOURCE_DIR;
 }
 

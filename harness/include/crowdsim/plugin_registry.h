@@ -34,7 +34,8 @@ struct LoadedPlugin {
 /// once each; objects it makes keep their library loaded while they live.
 class PluginRegistry {
  public:
-  /// Search folders: the build's plugin folder, then each folder of CROWDSIM_PLUGIN_PATH.
+  /// Search folders: each folder of CROWDSIM_PLUGIN_PATH, then the installed plugins
+  /// (PREFIX/lib/crowdsim-bench/plugins, found next to the core library) or the build's.
   PluginRegistry();
   explicit PluginRegistry(std::vector<std::filesystem::path> search_dirs);
 
@@ -70,8 +71,8 @@ class PluginRegistry {
   std::map<std::string, std::unique_ptr<LoadedPlugin>> loaded_;  // by canonical path
 };
 
-/// Root of the project's data (worlds/, results/): $CROWDSIM_DATA_DIR, else the source tree
-/// this harness was built from.
+/// Root of the project's data (worlds/, results/): $CROWDSIM_DATA_DIR, else PREFIX/share/
+/// crowdsim-bench for an installed copy, else the source tree this harness was built from.
 std::filesystem::path DataRoot();
 
 }  // namespace crowdsim

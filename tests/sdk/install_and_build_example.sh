@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The SDK end to end: install the build into a temporary prefix, build the out-of-tree example
+# plugin (examples/my_policy) against it with find_package(crowdsim), and run its suite with the
+# installed CLI, which must find its plugins and data relative to itself.
+#   tests/sdk/install_and_build_example.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build="$1"
+source="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log" || { cat "$work/install.log"; fail "install"; }
+for f in bin/crowdsim-bench lib/libcrowdsim_core.so lib/crowdsim-bench/plugins/crowdsim_orca.so \
+         include/crowdsim/plugin_abi.h lib/cmake/crowdsim/crowdsimConfig.cmake \
+         share/crowdsim-bench/worlds/random_rect share/crowdsim-bench/suites/quick.yaml; do
+  [[ -e "$work/prefix/$f" ]] || fail "the install lacks $f"
+done
+# Only the plugin-facing headers are installed.
+[[ ! -e "$work/prefix/include/crowdsim/runner.h" ]] || fail "internal header runner.h installed"
+
+cmake -S "$source/examples/my_policy" -B "$work/example" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  > "$work/configure.log" 2>&1 || { cat "$work/configure.log"; fail "configure the example"; }
+cmake --build "$work/example" > "$work/build.log" 2>&1 || { cat "$work/build.log"; fail "build the example"; }
+[[ -f "$work/example/crowdsim_yielding_straight.so" ]] || fail "the example plugin was not built"
+
+# The installed CLI searches its own plugin folder, not the build tree's.
+plugins=$(cd "$work" && "$work/prefix/bin/crowdsim-bench" list-plugins)
+grep -q "plugin folders: $work/prefix/bin/../lib/crowdsim-bench/plugins" <<< "$plugins" ||
+  fail "the installed CLI does not search its own plugins: $(head -1 <<< "$plugins")"
+
+cd "$work"
+CROWDSIM_PLUGIN_PATH="$work/example" "$work/prefix/bin/crowdsim-bench" run \
+  "$source/examples/my_policy/suite.yaml" --episodes 5 --out "$work/run" --quiet > "$work/run.log" 2>&1 ||
+  { cat "$work/run.log"; fail "run the example suite"; }
+grep -q "^1,yielding_straight,person," "$work/run/table.csv" || fail "no yielding_straight row: $(cat "$work/run/table.csv")"
+grep -q ",0.0000,5," "$work/run/table.csv" || fail "policy errors in $(cat "$work/run/table.csv")"
+echo "SDK install, example build and run: ok"
