@@ -141,6 +141,34 @@ rows:
   EXPECT_EQ(WithoutWallTime(ReadText(dir_.path() / "gaps" / "episodes.csv")), reference);
 }
 
+// Golden check: the first episodes of every row of the committed baselines (linear, ORCA,
+// OMPL planner; no learned policy, whose floats may differ between CPUs' BLAS kernels) come out
+// exactly as committed. A change that alters results fails here and is then updated on purpose
+// (rerun the suite, commit its results, say why).
+TEST_F(RunSuiteTest, CommittedBaselinesAreReproducedExactly) {
+  PluginRegistry registry;
+  const SuiteLoadResult loaded = LoadSuite(testing::SourceDir() / "suites" / "baselines.yaml", registry);
+  ASSERT_TRUE(loaded.suite);
+  constexpr int kEpisodes = 40;
+  RunOptions o;
+  o.out_dir = dir_.path() / "golden";
+  o.jobs = 2;
+  o.episodes = kEpisodes;
+  o.progress = false;
+  RunSuite(*loaded.suite, registry, o);
+  // The committed file's lines of episodes 0..39 of each row, in the file's order.
+  std::istringstream committed(ReadText(testing::SourceDir() / "results" / "baselines" / "episodes.csv"));
+  std::string expected, line;
+  for (int i = 0; std::getline(committed, line); ++i) {
+    const auto first = line.find(',');
+    const auto second = line.find(',', first + 1);
+    if (i == 0 || std::stoi(line.substr(first + 1, second - first - 1)) < kEpisodes) expected += line + "\n";
+  }
+  const std::string ours = ReadText(dir_.path() / "golden" / "episodes.csv");
+  EXPECT_EQ(std::count(ours.begin(), ours.end(), '\n'), 1 + 6 * kEpisodes);
+  EXPECT_EQ(WithoutWallTime(ours), WithoutWallTime(expected));
+}
+
 TEST_F(RunSuiteTest, RefusesToMixConfigurations) {
   const Suite s = LoadOrDie(kSuite);
   Run(s, "out", 1, 2);
