@@ -1,6 +1,7 @@
 #include "crowdsim/episode.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <stdexcept>
 
@@ -60,6 +61,50 @@ class Episode::StepLookahead final : public Lookahead {
   std::vector<AgentState> next_humans_;
 };
 
+namespace {
+
+void CheckSpeed(const Vec2& velocity, double v_pref, const std::string& who) {
+  const double speed = velocity.norm();
+  if (speed > kMaxSpeedFactor * v_pref) {
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), " returned %.4g m/s, more than %.0f x v_pref (%.4g m/s): an action is "
+                  "the velocity for the next step, in m/s", speed, kMaxSpeedFactor, kMaxSpeedFactor * v_pref);
+    throw std::runtime_error(who + buf);
+  }
+}
+
+}  // namespace
+
+void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
+  const std::string where = "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) + ": ";
+  auto text = [](const Vec2& p) {
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "(%.3f, %.3f)", p.x(), p.y());
+    return std::string(buf);
+  };
+  if (!scenario.robot_start.allFinite() || !scenario.robot_goal.allFinite()) {
+    throw std::invalid_argument(where + "the robot's start or goal is not a finite point");
+  }
+  if ((scenario.robot_goal - scenario.robot_start).norm() <= sim.goal_radius) {
+    throw std::invalid_argument(where + "the robot starts at its goal " + text(scenario.robot_goal) +
+                                " (within goal_radius): the episode would be a success without a move");
+  }
+  if (!scenario.map) return;
+  const StaticMap& map = *scenario.map;
+  for (const auto& [name, p] : {std::pair{"start", scenario.robot_start}, std::pair{"goal", scenario.robot_goal}}) {
+    if (map.bounds.Area() > 0.0 && !map.bounds.Contains(p)) {
+      throw std::invalid_argument(where + "the robot's " + name + " " + text(p) + " lies outside the map");
+    }
+    for (std::size_t k = 0; k < map.rectangles.size(); ++k) {
+      const Rect& r = map.rectangles[k];
+      if (p.x() > r.min.x() && p.x() < r.max.x() && p.y() > r.min.y() && p.y() < r.max.y()) {
+        throw std::invalid_argument(where + "the robot's " + name + " " + text(p) +
+                                    " lies inside obstacle " + std::to_string(k));
+      }
+    }
+  }
+}
+
 Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAgents& agents,
                  bool record_trajectory)
     : scenario_(scenario),
@@ -71,6 +116,7 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
   if (agents_.humans.size() < scenario_.humans.size()) {
     throw std::invalid_argument("episode needs one human policy per human");
   }
+  CheckScenario(scenario_, sim_);
   robot_.position = scenario_.robot_start;
   robot_.goal = scenario_.robot_goal;
   robot_.radius = sim_.robot_radius;
@@ -147,6 +193,7 @@ void Episode::DecideHumans() {
     if (!human_actions_[i].velocity.allFinite()) {
       throw std::runtime_error("human " + std::to_string(i) + "'s policy returned a non-finite velocity");
     }
+    CheckSpeed(human_actions_[i].velocity, h.v_pref, "human " + std::to_string(i) + "'s policy");
   }
 }
 
@@ -186,6 +233,7 @@ StepInfo Episode::Step() {
     if (!info.robot_action.velocity.allFinite()) {
       throw std::runtime_error("the robot's policy returned a non-finite velocity");
     }
+    CheckSpeed(info.robot_action.velocity, robot_.v_pref, "the robot's policy");
   } catch (const std::exception& e) {
     result_.error = e.what();
     Finish(EpisodeStatus::kPolicyError);

@@ -39,7 +39,12 @@ TEST(OrcaCrowd, HumansReachGoalsInThreeObstacleTestLayoutsAndStayOutOfObstacles)
     req.num_humans = 5;
     req.sim = sim;
     Scenario sc = world->Make(req);
-    sc.robot_start = Vec2(100, 100);  // out of everybody's way
+    // The robot out of everybody's way: far off the room, on a map whose bounds reach it (a
+    // start outside the map is refused).
+    auto map = std::make_shared<StaticMap>(*sc.map);
+    map->bounds = Rect::FromCorners(-300, -300, 300, 300);
+    sc.map = map;
+    sc.robot_start = Vec2(100, 100);
     sc.robot_goal = Vec2(200, 200);
     Episode ep(sc, sim, agents);
     while (!ep.done()) {

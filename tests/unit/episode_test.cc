@@ -149,6 +149,42 @@ TEST(Episode, NonFiniteActionIsAPolicyError) {
   EXPECT_NE(ep.result().error.find("non-finite"), std::string::npos);
 }
 
+TEST(Episode, AVelocityFarAboveVPrefIsAPolicyError) {
+  // 1e300 m/s: a unit bug, not a move (it used to cross the map in one step unjudged).
+  const Scenario sc = MakeScenario(MakeRoom(), Vec2(0, -4), Vec2(0, 4));
+  ConstantVelocityPolicy robot(Vec2(0, 1e300));
+  EpisodeAgents agents{&robot, {}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
+  EXPECT_NE(ep.result().error.find("more than 10 x v_pref"), std::string::npos) << ep.result().error;
+  // 10 x v_pref itself is allowed (the thin-wall test moves at it).
+  ConstantVelocityPolicy fast(Vec2(0, 10.0));
+  EpisodeAgents fast_agents{&fast, {}, {}};
+  Episode ok(sc, SimConfig{}, fast_agents);
+  EXPECT_NE(ok.Run().status, EpisodeStatus::kPolicyError);
+}
+
+TEST(Episode, MeaninglessScenariosAreRefusedWithTheReason) {
+  GoStraightPolicy robot;
+  EpisodeAgents agents{&robot, {}, {}};
+  auto refused = [&](const Scenario& sc) -> std::string {
+    try {
+      Episode ep(sc, SimConfig{}, agents);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const auto room = MakeRoom({Rect::FromCorners(-1, -1, 1, 1)});
+  EXPECT_NE(refused(MakeScenario(room, Vec2(0, 0), Vec2(0, 4))).find("start (0.000, 0.000) lies inside obstacle 4"),
+            std::string::npos) << refused(MakeScenario(room, Vec2(0, 0), Vec2(0, 4)));
+  EXPECT_NE(refused(MakeScenario(room, Vec2(0, -4), Vec2(0.5, 0.5))).find("goal (0.500, 0.500) lies inside obstacle"),
+            std::string::npos);
+  EXPECT_NE(refused(MakeScenario(room, Vec2(3, -4), Vec2(3, -3.9))).find("starts at its goal"), std::string::npos);
+  EXPECT_NE(refused(MakeScenario(room, Vec2(0, -40), Vec2(0, 4))).find("outside the map"), std::string::npos);
+  EXPECT_EQ(refused(MakeScenario(room, Vec2(3, -4), Vec2(3, 4))), "");
+}
+
 /// Records what the lookahead predicts for its own action and the others.
 class LookaheadProbe final : public Policy {
  public:

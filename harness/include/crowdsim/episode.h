@@ -20,6 +20,16 @@ enum class EpisodeStatus { kRunning, kSuccess, kCollisionHuman, kCollisionObstac
 
 const char* EpisodeStatusName(EpisodeStatus s);
 
+/// A policy's velocity above this multiple of the agent's v_pref is an error (policy_error):
+/// no built-in policy comes near it (the linear baseline allows 2x), and a larger value is a
+/// unit or sign bug that would otherwise move the agent across the map in one step.
+inline constexpr double kMaxSpeedFactor = 10.0;
+
+/// Throws std::invalid_argument when a scenario cannot make a meaningful episode: the robot's
+/// start or goal outside the map or inside an obstacle, or the start within goal_radius of
+/// the goal (the world plugin or its file is at fault; the run stops and names the episode).
+void CheckScenario(const Scenario& scenario, const SimConfig& sim);
+
 /// A sensor configured on the robot.
 struct MountedSensor {
   std::string name;       ///< plugin name, copied into SensorReading::sensor
