@@ -20,10 +20,10 @@ configure: deps $(BUILD)/CMakeCache.txt
 build: configure
 	cmake --build $(BUILD) -j$(JOBS)
 
-# Runs the default suite and prints its table (results in $(BUILD)/results/, so the committed
-# reference outputs under results/ stay untouched).
+# Runs the default suite and prints its table (results in runs/<suite name>/; the committed
+# reference outputs under results/ are written only with an explicit --out).
 run: build
-	$(BUILD)/bin/crowdsim-bench run $(SUITE) --out $(BUILD)/results/$(basename $(notdir $(SUITE)))
+	$(BUILD)/bin/crowdsim-bench run $(SUITE)
 
 # Builds and runs every unit and integration test (ctest prints its summary).
 test: build

@@ -23,7 +23,8 @@ const std::vector<Command>& Commands() {
     {"run", crowdsim::cli::RunCommand, R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet] [--shard K/N]
                  [--set KEY.PATH=VALUE]...
       runs a suite; writes DIR/table.md, table.csv, episodes.csv, manifest.json
-      (DIR defaults to results/<suite name>/); rerunning resumes finished episodes;
+      (DIR defaults to runs/<suite name>/; the committed reference outputs under results/ are
+      written only with an explicit --out); rerunning resumes finished episodes;
       --shard K/N runs only the K-th of N disjoint slices of the episodes (a cluster job array);
       --set changes one key of the suite (humans.count=10, rows[orca].params.safety_space=0.1,
       robot.sensors[lidar2d].beams=90; recorded in manifest.json), as validate, render, train

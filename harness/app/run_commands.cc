@@ -89,7 +89,7 @@ int RunCommand(const std::vector<std::string>& args) {
   opt.progress = !a.Has("--quiet");
   opt.shard_index = shard_index;
   opt.shard_count = shard_count;
-  ExplainInterruption(opt.out_dir.empty() ? std::filesystem::path("results") / suite->name : opt.out_dir);
+  ExplainInterruption(opt.out_dir.empty() ? DefaultRunDir(*suite) : opt.out_dir);
   try {
     RunSummary s = RunSuite(*suite, registry, opt);
     std::cout << "## " << suite->name;

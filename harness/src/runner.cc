@@ -105,6 +105,8 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
   return errors;
 }
 
+fs::path DefaultRunDir(const Suite& suite) { return fs::path("runs") / suite.name; }
+
 RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   RunFacts facts;
@@ -124,7 +126,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   };
 
   RunSummary summary;
-  summary.out_dir = options.out_dir.empty() ? fs::path("results") / suite.name : options.out_dir;
+  summary.out_dir = options.out_dir.empty() ? DefaultRunDir(suite) : options.out_dir;
   std::error_code ec;
   fs::create_directories(summary.out_dir, ec);
   if (ec || !fs::is_directory(summary.out_dir)) {

@@ -19,7 +19,7 @@ class RunError : public std::runtime_error {
 };
 
 struct RunOptions {
-  std::filesystem::path out_dir;  ///< default: results/<suite name>/ under the working dir
+  std::filesystem::path out_dir;  ///< default: DefaultRunDir(suite)
   int jobs = 1;                   ///< worker threads
   int episodes = -1;              ///< overrides the suite's count when > 0
   bool fresh = false;             ///< discard stored episodes instead of resuming
@@ -46,6 +46,11 @@ struct RunSummary {
 RunSummary MergeShards(const std::vector<std::filesystem::path>& shard_dirs,
                        const std::filesystem::path& out_dir, const std::filesystem::path& suite_file,
                        PluginRegistry& registry);
+
+/// Where a run writes without an explicit folder: runs/<suite name>/ under the working folder
+/// (ignored by git). The committed reference outputs under results/ are only ever written
+/// through an explicit --out, so trying a suite in the checkout never changes them.
+std::filesystem::path DefaultRunDir(const Suite& suite);
 
 /// What `run` does before any episode, and `validate` too: builds every row's plugins once
 /// (world and its files, sensors, robot and human policies, their weights) and checks that each

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Reruns a suite from scratch and compares every episode with its committed reference output
+# (results/<name>/episodes.csv), the decision-time column aside: the check that a build on this
+# machine reproduces the committed tables exactly.
+#
+#   scripts/check_reference.sh suites/baselines.yaml [--jobs N] [--bin PATH]
+set -euo pipefail
+suite="${1:?usage: scripts/check_reference.sh SUITE.yaml [--jobs N] [--bin PATH]}"
+shift
+jobs=$(nproc)
+bin="build/bin/crowdsim-bench"
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --jobs) jobs="$2"; shift 2 ;;
+    --bin) bin="$2"; shift 2 ;;
+    *) echo "check_reference: unknown option '$1'" >&2; exit 2 ;;
+  esac
+done
+name=$(sed -n 's/^name: *\([A-Za-z0-9_.-]*\).*/\1/p' "$suite" | head -n1)
+reference="results/$name/episodes.csv"
+[[ -f "$reference" ]] || { echo "check_reference: no committed reference $reference" >&2; exit 2; }
+out="runs/${name}_check"
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+"$bin" run "$suite" --out "$out" --fresh --jobs "$jobs" --quiet > /dev/null 2> "$log" || { cat "$log" >&2; exit 1; }
+# decision_time_us is column 12 of episodes.csv: a wall-time measurement, never reproduced.
+strip() { cut -d, -f1-11,13- "$1"; }
+if diff <(strip "$reference") <(strip "$out/episodes.csv") > "$out/differences.txt"; then
+  echo "$suite: all $(($(wc -l < "$reference") - 1)) episodes identical to $reference"
+else
+  echo "$suite: differs from $reference ($(grep -c '^<' "$out/differences.txt") lines); see $out/differences.txt" >&2
+  head -n 6 "$out/differences.txt" >&2
+  exit 1
+fi
