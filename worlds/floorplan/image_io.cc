@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <cctype>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -15,6 +16,17 @@ namespace {
 
 [[noreturn]] void Fail(const std::filesystem::path& path, const std::string& what) {
   throw FloorplanError(path.string() + ": " + what);
+}
+
+/// The largest image read: 100 million pixels (10,000 x 10,000, a 500 m building at 5 cm per
+/// pixel). Checked from the header, before any pixel memory is allocated.
+constexpr std::uint64_t kMaxPixels = 100'000'000;
+
+void CheckSize(const std::filesystem::path& path, std::uint64_t width, std::uint64_t height) {
+  if (width * height > kMaxPixels) {
+    Fail(path, "the header claims " + std::to_string(width) + " x " + std::to_string(height) +
+                   " pixels, more than the 100 million this importer reads; downscale the image");
+  }
 }
 
 std::vector<unsigned char> ReadBytes(const std::filesystem::path& path) {
@@ -41,6 +53,16 @@ Grid DecodePng(const std::filesystem::path& path, const std::vector<unsigned cha
   if (image.width == 0 || image.height == 0) {
     png_image_free(&image);
     Fail(path, "the image has no pixels");
+  }
+  // Deflate compresses at most ~1032:1, and a stored row holds at least one byte per pixel
+  // plus a filter byte: a header that claims more than the data can hold is a broken file.
+  const std::uint64_t width = image.width, height = image.height;
+  if (width * height > kMaxPixels || height * (width + 1) > 1100 * static_cast<std::uint64_t>(bytes.size())) {
+    png_image_free(&image);
+    if (width * height > kMaxPixels) CheckSize(path, width, height);
+    Fail(path, "the header claims " + std::to_string(width) + " x " + std::to_string(height) +
+                   " pixels, more than its " + std::to_string(bytes.size()) +
+                   " bytes of compressed data can hold (truncated or corrupt PNG)");
   }
   std::vector<unsigned char> rgba(PNG_IMAGE_SIZE(image));
   if (!png_image_finish_read(&image, nullptr, rgba.data(), 0, nullptr)) {
@@ -89,12 +111,18 @@ Grid DecodePgm(const std::filesystem::path& path, const std::vector<unsigned cha
   const int maxval = HeaderNumber(path, bytes, &pos, "maxval");
   if (w <= 0 || h <= 0) Fail(path, "the image has no pixels");
   if (maxval <= 0 || maxval > 65535) Fail(path, "bad PGM maxval (must be 1..65535)");
+  CheckSize(path, static_cast<std::uint64_t>(w), static_cast<std::uint64_t>(h));
+  const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+  const size_t bpp = maxval > 255 ? 2 : 1;
+  // The pixel data must be there before the grid is allocated (binary: bpp bytes a pixel;
+  // ASCII: at least a digit and a separator a pixel).
+  if (binary ? bytes.size() < pos + 1 + n * bpp : bytes.size() - pos < 2 * n - 1) {
+    Fail(path, "truncated PGM pixel data: the header claims " + std::to_string(w) + " x " +
+                   std::to_string(h) + " pixels, the file holds " + std::to_string(bytes.size()) + " bytes");
+  }
   Grid g(w, h);
-  const size_t n = g.cells.size();
   if (binary) {
     ++pos;  // exactly one whitespace byte ends the header
-    const size_t bpp = maxval > 255 ? 2 : 1;
-    if (bytes.size() < pos + n * bpp) Fail(path, "truncated PGM pixel data");
     for (size_t i = 0; i < n; ++i) {
       const unsigned char* p = &bytes[pos + i * bpp];
       const int v = bpp == 2 ? (p[0] << 8 | p[1]) : p[0];

@@ -56,6 +56,52 @@ TEST(ImageIoTest, RgbaTransparentIsFreeAndDarkOpaqueIsBlocked) {
   EXPECT_EQ(g.cells, (std::vector<std::uint8_t>{1, 0, 1, 0}));
 }
 
+/// CRC-32 (PNG's chunk checksum), bit by bit.
+std::uint32_t Crc32(const std::string& bytes) {
+  std::uint32_t c = 0xFFFFFFFFu;
+  for (unsigned char b : bytes) {
+    c ^= b;
+    for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+  }
+  return ~c;
+}
+
+std::string BigEndian(std::uint32_t x) {
+  return {static_cast<char>(x >> 24), static_cast<char>(x >> 16), static_cast<char>(x >> 8), static_cast<char>(x)};
+}
+
+/// A PNG whose header claims width x height (8-bit gray) and whose data is a few bytes.
+std::string LyingPng(std::uint32_t width, std::uint32_t height) {
+  auto chunk = [](const std::string& type, const std::string& data) {
+    return BigEndian(static_cast<std::uint32_t>(data.size())) + type + data + BigEndian(Crc32(type + data));
+  };
+  const std::string ihdr = BigEndian(width) + BigEndian(height) + std::string("\x08\x00\x00\x00\x00", 5);
+  const std::string idat("\x78\x9c\x63\x00\x00\x00\x01\x00\x01", 9);  // zlib of one zero byte
+  return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", idat) + chunk("IEND", "");
+}
+
+TEST(ImageIoTest, HeadersClaimingMorePixelsThanAllowedOrStoredAreRefusedBeforeAllocating) {
+  TempDir dir;
+  auto error = [](const std::filesystem::path& p) -> std::string {
+    try {
+      ReadBinaryImage(p);
+    } catch (const FloorplanError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // 23 bytes claiming 10^10 pixels (once ~10 GB and 44 s before failing).
+  EXPECT_NE(error(dir.Write("huge.pgm", "P5\n100000 100000\n255\nab")).find("more than the 100 million"),
+            std::string::npos);
+  EXPECT_NE(error(dir.Write("lie.pgm", "P5\n9000 9000\n255\nab")).find("truncated PGM pixel data"),
+            std::string::npos);
+  EXPECT_NE(error(dir.Write("lie_ascii.pgm", "P2\n9000 9000\n255\n0 1 0\n")).find("truncated PGM pixel data"),
+            std::string::npos);
+  EXPECT_NE(error(dir.Write("huge.png", LyingPng(30000, 30000))).find("more than the 100 million"), std::string::npos);
+  EXPECT_NE(error(dir.Write("lie.png", LyingPng(9000, 9000))).find("more than its"), std::string::npos)
+      << error(dir.path() / "lie.png");
+}
+
 TEST(ResampleTest, MajorityAndThinStrokes) {
   // 0.05 m/px -> 0.1 m: each cell is 2x2 pixels.
   Grid src(4, 2, 1);
