@@ -68,10 +68,12 @@ double ToDouble(const std::string& key, const std::string& v) {
   throw UsageError(key + " needs a number, got '" + v + "'");
 }
 
-long ToInt(const std::string& key, const std::string& v) {
+long ToInt(const std::string& key, const std::string& v, double max = 9e15) {
   const double x = ToDouble(key, v);
-  if (x != static_cast<double>(static_cast<long>(x)) || x < 0) {
-    throw UsageError(key + " needs a non-negative whole number, got '" + v + "'");
+  if (x < 0 || x > max || x != static_cast<double>(static_cast<long>(x))) {
+    char bound[32];
+    std::snprintf(bound, sizeof(bound), "%.0f", max);
+    throw UsageError(key + " needs a whole number in [0, " + bound + "], got '" + v + "'");
   }
   return static_cast<long>(x);
 }
@@ -98,11 +100,12 @@ int Import(const std::vector<std::string>& args) {
   ImportOptions o;
   for (const auto& [k, v] : p.options) {
     if (k == "--resolution") o.source_resolution = ToDouble(k, v);
-    if (k == "--max-rectangles") o.max_rectangles = static_cast<int>(ToInt(k, v));
+    // Counts are bounded: each one sizes work and memory (a typo of 10^8 pairs ran for hours).
+    if (k == "--max-rectangles") o.max_rectangles = static_cast<int>(ToInt(k, v, 10'000));
     if (k == "--seed") o.seed = static_cast<std::uint64_t>(ToInt(k, v));
-    if (k == "--test-pairs") o.test_pairs = static_cast<int>(ToInt(k, v));
-    if (k == "--train-pairs") o.train_pairs = static_cast<int>(ToInt(k, v));
-    if (k == "--free-points") o.free_points = static_cast<int>(ToInt(k, v));
+    if (k == "--test-pairs") o.test_pairs = static_cast<int>(ToInt(k, v, 100'000));
+    if (k == "--train-pairs") o.train_pairs = static_cast<int>(ToInt(k, v, 100'000));
+    if (k == "--free-points") o.free_points = static_cast<int>(ToInt(k, v, 1'000'000));
     if (k == "--min-distance") o.min_pair_distance = ToDouble(k, v);
     if (k == "--agent-radius") o.agent_radius = ToDouble(k, v);
     if (k == "--kind") {
