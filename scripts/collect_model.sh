@@ -4,16 +4,19 @@
 # training_log.csv (validation), training_episodes.csv.gz (every episode), the learning
 # curve (SVG and PNG), summary.json and the trainer's log. Refuses an unfinished training.
 #
-#   scripts/collect_model.sh results/train/<name>[_seed<N>] [...]
+#   scripts/collect_model.sh [--into SUBFOLDER] results/train/<name>[_seed<N>] [...]
+# (--into experiments: results/models/experiments/<name>/, for models of procedure experiments)
 set -euo pipefail
-[[ $# -gt 0 ]] || { sed -n '2,7p' "$0"; exit 2; }
+into=""
+if [[ "${1:-}" == "--into" ]]; then into="${2:?--into needs a folder name}/"; shift 2; fi
+[[ $# -gt 0 ]] || { sed -n '2,9p' "$0"; exit 2; }
 for src in "$@"; do
   src="${src%/}"
   if ! grep -q '"finished": true' "$src/summary.json" 2>/dev/null; then
     echo "collect_model: '$src' is not a finished training (summary.json says so)" >&2
     exit 1
   fi
-  dst="results/models/$(basename "$src")"
+  dst="results/models/$into$(basename "$src")"
   rm -rf "$dst"
   mkdir -p "$dst"
   for f in weights.pt best.pt il.pt training.yaml training_log.csv summary.json learning_curve.svg learning_curve.png train.log; do
