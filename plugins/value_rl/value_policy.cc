@@ -256,9 +256,20 @@ void ValuePolicy::SaveTrainingState(const fs::path& dir) const {
 
 void ValuePolicy::LoadTrainingState(const fs::path& dir) {
   Impl& m = *impl_;
+  for (const char* file : {"target.pt", "optimizer.pt"}) {
+    if (!fs::is_regular_file(dir / file)) {
+      throw std::runtime_error("the checkpoint " + dir.string() + " lacks " + file +
+                               " (incomplete or damaged): restart the training without --resume");
+    }
+  }
   LoadWeightsFile(MetaOf(m.config), dir / "target.pt", m.target.get());
   torch::serialize::InputArchive archive;
-  archive.load_from((dir / "optimizer.pt").string());
+  try {
+    archive.load_from((dir / "optimizer.pt").string());
+  } catch (const c10::Error& e) {
+    throw std::runtime_error("cannot read " + (dir / "optimizer.pt").string() + " (" +
+                             e.what_without_backtrace() + "): restart the training without --resume");
+  }
   c10::IValue lr, momentum, has;
   archive.read("learning_rate", lr);
   archive.read("momentum", momentum);

@@ -496,7 +496,10 @@ void Trainer::LoadCheckpoint() {
     memory_.Load(dir / "memory.bin");
     if (fs::exists(dir / "probe.bin")) probe_.Load(dir / "probe.bin");
   } catch (const std::exception& e) {
-    throw TrainError("--resume: " + std::string(e.what()));
+    // A library's message may carry a stack trace after its first line (libtorch's do).
+    std::string what = e.what();
+    what = what.substr(0, what.find("\nException raised from"));
+    throw TrainError("--resume: " + what);
   }
 }
 

@@ -2,6 +2,7 @@
 // deterministic and resumes exactly, and every model / sensor combination trains.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -152,6 +153,30 @@ TEST(TrainingTest, LengtheningTheRlPhaseContinuesLikeALongerTraining) {
   } catch (const training::TrainError& e) {
     EXPECT_NE(std::string(e.what()).find("fewer than the 15 RL episodes"), std::string::npos) << e.what();
   }
+}
+
+TEST(TrainingTest, AnIncompleteOrDamagedCheckpointIsNamedNotAStackTrace) {
+  TempDir dir;
+  TrainFile f;
+  f.training = kTiny;
+  const auto file = WriteTrainFile(dir, f);
+  Train(file, dir.path() / "out", false, 15);  // stops in RL, after a checkpoint
+  const auto optimizer = dir.path() / "out" / "checkpoint" / "optimizer.pt";
+  ASSERT_TRUE(fs::exists(optimizer));
+  fs::remove(optimizer);
+  auto message = [&]() -> std::string {
+    try {
+      Train(file, dir.path() / "out", true);
+    } catch (const training::TrainError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(message().find("lacks optimizer.pt (incomplete or damaged)"), std::string::npos) << message();
+  std::ofstream(optimizer) << "not a torch archive";
+  const std::string damaged = message();
+  EXPECT_NE(damaged.find("cannot read"), std::string::npos) << damaged;
+  EXPECT_EQ(damaged.find("frame #"), std::string::npos) << damaged;
 }
 
 /// The last line's replay-memory counts (imitation, success, collision, timeout).
