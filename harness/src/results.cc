@@ -4,7 +4,9 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <functional>
@@ -596,12 +598,23 @@ long ReadManifestInteger(const fs::path& path, const std::string& field) {
 
 void WriteFileAtomically(const fs::path& path, const std::string& text) {
   const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
+  std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+  if (!f) throw std::runtime_error("cannot create " + tmp.string() + ": " + std::strerror(errno));
+  f << text;
+  f.close();  // a full disk shows here, when the buffer is written
+  std::error_code ec;
+  if (!f) {
+    const int error = errno;
+    fs::remove(tmp, ec);
+    throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(error) +
+                             " (the previous file, if any, is unchanged)");
   }
-  fs::rename(tmp, path);
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw std::runtime_error("cannot replace " + path.string() + ": " + ec.message());
+  }
 }
 
 std::string NowUtc() {

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -231,6 +233,13 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
       std::lock_guard<std::mutex> lock(mutex);
       out << FormatEpisodeLine(line) << "\n";
       out.flush();
+      if (!out) {
+        // A full disk or a lost mount: stop at once, naming the cause (the lines written so
+        // far stay; a cut last line is skipped when the run resumes).
+        if (!failed) failure = "cannot append to " + episodes_csv.string() + ": " + std::strerror(errno);
+        failed = true;
+        break;
+      }
       progress.Episode(line.record.status == EpisodeStatus::kSuccess);
       done[{line.row, line.episode}] = std::move(line);
     }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 
 #include "crowdsim/csv.h"
 #include "crowdsim/plugin_registry.h"
@@ -122,6 +123,23 @@ TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
             std::string::npos) << manifest;
   EXPECT_NE(manifest.find("\"reference\": {\"success\": 0.7, \"collision\": 0.3, \"nav_time\": 12, "
                           "\"source\": \"Paper, line 1\"}"), std::string::npos) << manifest;
+}
+
+TEST(ResultFiles, AFullDiskIsNamedAndLeavesNoTemporaryFile) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full here";
+  testing::TempDir dir;
+  const auto target = dir.path() / "table.md";
+  std::ofstream(target) << "the previous table\n";
+  // The temporary file the writer uses is a link to /dev/full: every write fails with ENOSPC.
+  std::filesystem::create_symlink("/dev/full", dir.path() / "table.md.tmp");
+  try {
+    WriteFileAtomically(target, std::string(1 << 16, 'x'));
+    ADD_FAILURE() << "a write to a full disk succeeded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(dir.path() / "table.md.tmp")));
+  EXPECT_EQ(testing::ReadText(target), "the previous table\n");
 }
 
 }  // namespace
