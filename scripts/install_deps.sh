@@ -12,6 +12,7 @@ packages=(
   libompl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libpng-dev libcairo2-dev libgif-dev
+  libopenmpi-dev openmpi-bin
 )
 if [[ "${1:-}" != "--no-torch" ]]; then
   packages+=(libtorch-dev libopenblas0-pthread)

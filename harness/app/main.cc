@@ -7,6 +7,7 @@
 #include "cli_args.h"
 #include "commands.h"
 #include "crowdsim/version.h"
+#include "process_group.h"
 #include "floorplan_cli.h"
 
 namespace {
@@ -74,7 +75,7 @@ constexpr const char* kHeader =
 constexpr const char* kFooter = R"(  crowdsim-bench help [COMMAND]   (or COMMAND --help)
       this text, or one command's
   crowdsim-bench --version
-      version and the git commit of the build
+      version, the git commit of the build, and whether it runs suites over MPI ranks
   crowdsim-bench completion bash
       a bash completion script: source <(crowdsim-bench completion bash)
 
@@ -137,7 +138,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (args[0] == "--version" || args[0] == "version") {
-    std::cout << "crowdsim-bench " << crowdsim::Version() << " (commit " << crowdsim::GitCommit() << ")\n";
+    std::cout << "crowdsim-bench " << crowdsim::Version() << " (commit " << crowdsim::GitCommit() << ")"
+              << (crowdsim::cli::BuiltWithMpi() ? ", with MPI" : "") << "\n";
     return 0;
   }
   if (args[0] == "help" || args[0] == "--help" || args[0] == "-h") {

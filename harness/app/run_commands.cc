@@ -11,6 +11,7 @@
 
 #include "cli_args.h"
 #include "commands.h"
+#include "process_group.h"
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/runner.h"
 #include "crowdsim/suite.h"
@@ -61,6 +62,55 @@ void ExplainInterruption(const std::filesystem::path& out_dir) {
   std::signal(SIGTERM, OnRunInterrupted);
 }
 
+/// The suite's title and table on stdout.
+void PrintTable(const Suite& suite, const RunSummary& s) {
+  std::cout << "## " << suite.name;
+  if (!suite.description.empty()) std::cout << ": " << suite.description;
+  std::cout << "\n\n" << s.table_markdown << "\n";
+}
+
+/// `mpirun -n R crowdsim-bench run`: rank K runs shard K+1 of R into OUT/ranks/<K+1>of<R>/ (its
+/// own resumable folder) with its own --jobs threads; once every rank has finished, rank 0
+/// merges the shards into OUT exactly as `merge` does, so the tables equal a single run's.
+int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt, const ProcessGroup& group) {
+  const std::filesystem::path out = opt.out_dir.empty() ? DefaultRunDir(suite) : opt.out_dir;
+  auto rank_dir = [&](int rank) {
+    return out / "ranks" / (std::to_string(rank + 1) + "of" + std::to_string(group.size()));
+  };
+  opt.out_dir = rank_dir(group.rank());
+  opt.shard_index = group.rank() + 1;
+  opt.shard_count = group.size();
+  opt.progress = opt.progress && group.rank() == 0;
+  if (group.rank() == 0) ExplainInterruption(out);
+  bool ok = true;
+  try {
+    RunSuite(suite, registry, opt);
+  } catch (const RunError& e) {
+    std::cerr << "error: rank " << group.rank() << ": " << e.what() << "\n";
+    ok = false;
+  }
+  if (!group.AllOk(ok)) {
+    if (group.rank() == 0) {
+      std::cerr << "error: not every rank finished; their episodes are kept in " << (out / "ranks").string()
+                << "; run the same command again to resume\n";
+    }
+    return 1;
+  }
+  if (group.rank() != 0) return 0;
+  std::vector<std::filesystem::path> dirs;
+  for (int r = 0; r < group.size(); ++r) dirs.push_back(rank_dir(r));
+  try {
+    const RunSummary s = MergeShards(dirs, out, suite.file, registry);
+    PrintTable(suite, s);
+    std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
+              << s.episodes_resumed << " episodes from " << group.size() << " MPI ranks)\n";
+  } catch (const RunError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int RunCommand(const std::vector<std::string>& args) {
@@ -89,12 +139,15 @@ int RunCommand(const std::vector<std::string>& args) {
   opt.progress = !a.Has("--quiet");
   opt.shard_index = shard_index;
   opt.shard_count = shard_count;
+  const ProcessGroup group;
+  if (group.size() > 1) {
+    if (a.Has("--shard")) throw UsageError("--shard and an MPI launch both split the suite: give one of them");
+    return RunOverRanks(*suite, registry, opt, group);
+  }
   ExplainInterruption(opt.out_dir.empty() ? DefaultRunDir(*suite) : opt.out_dir);
   try {
     RunSummary s = RunSuite(*suite, registry, opt);
-    std::cout << "## " << suite->name;
-    if (!suite->description.empty()) std::cout << ": " << suite->description;
-    std::cout << "\n\n" << s.table_markdown << "\n";
+    PrintTable(*suite, s);
     std::cerr << "wrote " << (s.out_dir / (shard_count > 1 ? "episodes.csv" : "table.md")).string()
               << (shard_count > 1 ? ", manifest.json (" : ", table.csv, episodes.csv, manifest.json (")
               << s.episodes_run << " episodes run, " << s.episodes_resumed << " resumed)\n";
