@@ -483,6 +483,12 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   os << "  \"git_commit\": " << JsonString(GitCommit()) << ",\n";
   os << "  \"compiler\": " << JsonString(std::string(__VERSION__)) << ",\n";
   os << "  \"config_hash\": " << JsonString(suite.ConfigHash()) << ",\n";
+  // Each row's own hash (HASH LABEL): a later run resumes the rows whose hash is unchanged.
+  os << "  \"row_hashes\": [";
+  for (size_t i = 0; i < suite.rows.size(); ++i) {
+    os << (i ? ", " : "") << JsonString(suite.rows[i].ConfigHash() + " " + suite.rows[i].label);
+  }
+  os << "],\n";
   os << "  \"seed\": " << suite.seed << ",\n";
   os << "  \"episodes\": " << facts.episodes << ",\n";
   if (!facts.shard.empty()) os << "  \"shard\": " << JsonString(facts.shard) << ",\n";

@@ -150,14 +150,35 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   std::map<std::pair<std::string, int>, EpisodeLine> done;
   if (fs::exists(episodes_csv) && !options.fresh) {
     const std::string stored = ReadManifestField(manifest, "config_hash");
-    if (stored != suite.ConfigHash()) {
-      throw RunError("'" + summary.out_dir.string() + "' holds results of a different configuration "
-                     "of this suite (config hash " + (stored.empty() ? "unknown" : stored) +
-                     ", now " + suite.ConfigHash() + "). Pass --fresh to replace them, or --out "
-                     "to write elsewhere.");
+    // Rows can be resumed one by one: those whose own hash is unchanged keep their episodes
+    // when others were added or changed (a table that grows row by row).
+    std::set<std::string> kept;
+    if (stored == suite.ConfigHash()) {
+      for (const RowSpec& row : suite.rows) kept.insert(row.label);
+    } else {
+      const std::vector<std::string> row_hashes = ReadManifestStrings(manifest, "row_hashes");
+      const std::set<std::string> stored_rows(row_hashes.begin(), row_hashes.end());
+      for (const RowSpec& row : suite.rows) {
+        if (stored_rows.count(row.ConfigHash() + " " + row.label)) kept.insert(row.label);
+      }
+      if (kept.empty()) {
+        throw RunError("'" + summary.out_dir.string() + "' holds results of a different configuration "
+                       "of this suite (config hash " + (stored.empty() ? "unknown" : stored) +
+                       ", now " + suite.ConfigHash() + ", and no row is unchanged). Pass --fresh to "
+                       "replace them, or --out to write elsewhere.");
+      }
+      if (options.progress) {
+        std::string rerun;
+        for (const RowSpec& row : suite.rows) {
+          if (!kept.count(row.label)) rerun += (rerun.empty() ? "" : ", ") + row.label;
+        }
+        std::fprintf(stderr, "note: the suite changed since '%s' was written: %zu unchanged row(s) "
+                     "resume, new or changed rows run from scratch: %s\n",
+                     summary.out_dir.string().c_str(), kept.size(), rerun.c_str());
+      }
     }
     for (auto& line : ReadEpisodesCsv(episodes_csv)) {
-      done[{line.row, line.episode}] = std::move(line);
+      if (kept.count(line.row)) done[{line.row, line.episode}] = std::move(line);
     }
     const std::string commit = ReadManifestField(manifest, "git_commit");
     if (!done.empty() && options.progress && commit != GitCommit()) {

@@ -27,9 +27,11 @@ std::string SuiteError::Format() const {
   return os.str();
 }
 
-std::string Suite::ConfigHash() const {
+namespace {
+
+std::string HashText(const std::string& text) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (unsigned char c : canonical) {
+  for (unsigned char c : text) {
     h ^= c;
     h *= 0x100000001b3ULL;
   }
@@ -37,6 +39,12 @@ std::string Suite::ConfigHash() const {
   std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(SplitMix64(h)));
   return buf;
 }
+
+}  // namespace
+
+std::string Suite::ConfigHash() const { return HashText(canonical); }
+
+std::string RowSpec::ConfigHash() const { return HashText(canonical); }
 
 namespace suite_internal {
 
@@ -439,10 +447,12 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     }
     return result;
   }
-  std::ostringstream os;
-  os << "seed=" << s.seed << "\n";
-  CanonicalSim(s.sim, os);
-  for (const auto& row : s.rows) {
+  std::ostringstream head;
+  head << "seed=" << s.seed << "\n";
+  CanonicalSim(s.sim, head);
+  s.canonical = head.str();
+  for (auto& row : s.rows) {
+    std::ostringstream os;
     os << "row " << row.label << ": ";
     Canonical(row.policy, os);
     os << " sensors:";
@@ -452,8 +462,9 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     os << " humans:" << row.humans.count << "," << static_cast<int>(row.humans.goal_mode) << ",";
     Canonical(row.humans.policy, os);
     os << "\n";
+    row.canonical = head.str() + os.str();
+    s.canonical += os.str();
   }
-  s.canonical = os.str();
   result.suite = std::move(s);
   return result;
 }

@@ -169,6 +169,24 @@ TEST_F(RunSuiteTest, CommittedBaselinesAreReproducedExactly) {
   EXPECT_EQ(WithoutWallTime(ours), WithoutWallTime(expected));
 }
 
+TEST_F(RunSuiteTest, AGrowingSuiteRerunsOnlyItsNewOrChangedRows) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "grow", 1);
+  // A row added, an unchanged row kept, the orca row changed.
+  std::string grown = kSuite;
+  const std::string orca_row = "  - {label: orca, policy: orca}";
+  grown.replace(grown.find(orca_row), orca_row.size(),
+                "  - {label: orca, policy: orca, params: {safety_space: 0.05}}\n"
+                "  - {label: slow, policy: linear, params: {speed_factor: 0.5}}");
+  const Suite t = LoadOrDie(grown);
+  const RunSummary r = Run(t, "grow", 2);
+  EXPECT_EQ(r.episodes_resumed, 12);  // linear
+  EXPECT_EQ(r.episodes_run, 24);      // orca (changed), slow (new)
+  Run(t, "fresh", 1);
+  EXPECT_EQ(WithoutWallTime(ReadText(dir_.path() / "grow" / "episodes.csv")),
+            WithoutWallTime(ReadText(dir_.path() / "fresh" / "episodes.csv")));
+}
+
 TEST_F(RunSuiteTest, RefusesToMixConfigurations) {
   const Suite s = LoadOrDie(kSuite);
   Run(s, "out", 1, 2);

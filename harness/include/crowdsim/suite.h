@@ -59,6 +59,11 @@ struct RowSpec {
   HumansSpec humans;
   std::vector<std::pair<std::string, std::string>> info;  ///< extra table columns (model, ...)
   std::optional<PublishedReference> reference;
+  /// Canonical text of what decides this row's episodes (the suite's seed and sim settings,
+  /// then this row): stored results of a row whose hash is unchanged are resumed even when
+  /// other rows of the suite were added or changed.
+  std::string canonical;
+  std::string ConfigHash() const;
 };
 
 /// A summary line under the rows (e.g. Table 2's average): the mean of the named rows.
