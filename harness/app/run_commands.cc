@@ -62,6 +62,22 @@ void ExplainInterruption(const std::filesystem::path& out_dir) {
   std::signal(SIGTERM, OnRunInterrupted);
 }
 
+/// Joins shard folders into `out` (MergeShards), prints the table and what was written; the
+/// exit code. `from` says where the episodes came from ("3 folders", "2 MPI ranks").
+int MergeAndReport(const std::vector<std::filesystem::path>& dirs, const std::filesystem::path& out,
+                   const std::filesystem::path& suite_file, PluginRegistry& registry, const std::string& from) {
+  try {
+    const RunSummary s = MergeShards(dirs, out, suite_file, registry);
+    std::cout << s.table_markdown << "\n";
+    std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
+              << s.episodes_resumed << " episodes from " << from << ")\n";
+  } catch (const RunError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 /// The suite's title and table on stdout.
 void PrintTable(const Suite& suite, const RunSummary& s) {
   std::cout << "## " << suite.name;
@@ -99,16 +115,8 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt, c
   if (group.rank() != 0) return 0;
   std::vector<std::filesystem::path> dirs;
   for (int r = 0; r < group.size(); ++r) dirs.push_back(rank_dir(r));
-  try {
-    const RunSummary s = MergeShards(dirs, out, suite.file, registry);
-    PrintTable(suite, s);
-    std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
-              << s.episodes_resumed << " episodes from " << group.size() << " MPI ranks)\n";
-  } catch (const RunError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  std::cout << "## " << suite.name << (suite.description.empty() ? "" : ": " + suite.description) << "\n\n";
+  return MergeAndReport(dirs, out, suite.file, registry, std::to_string(group.size()) + " MPI ranks");
 }
 
 }  // namespace
@@ -165,16 +173,8 @@ int MergeCommand(const std::vector<std::string>& args) {
   if (!out) throw UsageError("merge needs --out DIR (the folder of the joined results)");
   std::vector<std::filesystem::path> dirs(a.positional.begin(), a.positional.end());
   PluginRegistry registry;
-  try {
-    const RunSummary s = MergeShards(dirs, *out, a.Get("--suite").value_or(""), registry);
-    std::cout << s.table_markdown << "\n";
-    std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
-              << s.episodes_resumed << " episodes from " << dirs.size() << " folders)\n";
-  } catch (const RunError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return MergeAndReport(dirs, *out, a.Get("--suite").value_or(""), registry,
+                        std::to_string(dirs.size()) + " folders");
 }
 
 int ValidateCommand(const std::vector<std::string>& args) {
