@@ -247,6 +247,8 @@ StepInfo Episode::Step() {
   info.event = j.event;
   info.reward = j.reward;
   info.min_human_distance = j.min_human_distance;
+  result_.collided_human = j.human;
+  result_.collided_rect = j.rect;
 
   const Vec2& v = info.robot_action.velocity;
   robot_.position += v * dt;

@@ -13,18 +13,27 @@ StepJudgement JudgeRobotMove(const SimConfig& sim, const CollisionWorld& world,
   const double dt = sim.time_step;
   // CrowdNav's swept test: each human keeps its current velocity, the robot takes its new
   // action; the closest approach of the two centres over the step decides.
-  bool hit_human = false;
   const Vec2 origin = Vec2::Zero();
-  for (const auto& h : humans) {
+  int closest = -1;
+  for (size_t i = 0; i < humans.size(); ++i) {
+    const AgentState& h = humans[i];
     const Vec2 p = h.position - robot.position;
     const Vec2 e = p + (h.velocity - robot_velocity) * dt;
     const double d = PointToSegmentDistance(p, e, origin) - h.radius - robot.radius;
-    if (d < 0.0) hit_human = true;
-    j.min_human_distance = std::min(j.min_human_distance, d);
+    if (d < j.min_human_distance) {
+      j.min_human_distance = d;
+      closest = static_cast<int>(i);
+    }
   }
+  const bool hit_human = j.min_human_distance < 0.0;
+  if (hit_human) j.human = closest;
   const Vec2 end = robot.position + robot_velocity * dt;
-  const bool hit_obstacle =
-      !hit_human && world.SweepDisc(robot.position, end, robot.radius).fraction <= 1.0;
+  bool hit_obstacle = false;
+  if (!hit_human) {
+    const SweepHit hit = world.SweepDisc(robot.position, end, robot.radius);
+    hit_obstacle = hit.fraction <= 1.0;
+    if (hit_obstacle) j.rect = hit.rect;
+  }
   const bool reached = (end - robot.goal).norm() < sim.goal_radius;
 
   if (hit_human) {

@@ -94,6 +94,39 @@ TEST(Episode, SweptHumanCollisionCatchesAPassThrough) {
   EXPECT_EQ(ep.result().steps, 1);
 }
 
+TEST(Episode, ACollisionNamesWhatWasHit) {
+  ConstantVelocityPolicy robot(Vec2(0, 10.0));
+  ConstantVelocityPolicy still(Vec2(0, 0));
+  {  // The second of two still humans stands on the path.
+    const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4),
+                                     {{Vec2(3, 0), Vec2(3, 0)}, {Vec2(0, -2.75), Vec2(0, -2.75)}});
+    Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {&still, &still}, {}});
+    const EpisodeResult& r = ep.Run();
+    ASSERT_EQ(r.status, EpisodeStatus::kCollisionHuman);
+    EXPECT_EQ(r.collided_human, 1);
+    EXPECT_EQ(r.collided_rect, -1);
+  }
+  {  // The second rectangle is the thin wall across the path.
+    const Scenario sc = MakeScenario(
+        MakeMap({Rect::FromCorners(5, 5, 6, 6), Rect::FromCorners(-3, -0.01, 3, 0.01)}), Vec2(0, -1),
+        Vec2(0, 4));
+    Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {}, {}});
+    const EpisodeResult& r = ep.Run();
+    ASSERT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
+    EXPECT_EQ(r.collided_rect, 1);
+    EXPECT_EQ(r.collided_human, -1);
+  }
+  {  // Nothing hit: both stay -1.
+    ConstantVelocityPolicy slow(Vec2(0, 1.0));
+    const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -1), Vec2(0, 1));
+    Episode ep(sc, SimConfig{}, EpisodeAgents{&slow, {}, {}});
+    const EpisodeResult& r = ep.Run();
+    ASSERT_EQ(r.status, EpisodeStatus::kSuccess);
+    EXPECT_EQ(r.collided_human, -1);
+    EXPECT_EQ(r.collided_rect, -1);
+  }
+}
+
 TEST(Episode, DangerStepsAndDiscomfortReward) {
   // The robot passes a still human at 0.7 m centre distance: 0.1 m surface gap < 0.2.
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0.7, 0.0), Vec2(0.7, 0.0)}});

@@ -62,6 +62,8 @@ struct EpisodeResult {
   double decision_time_us = 0.0;   ///< mean wall time of the robot's Decide
   int humans_at_goal = 0;          ///< humans that reached their (first) goal
   std::string error;               ///< policy_error message
+  int collided_human = -1;         ///< collision_human: which human (index into the scenario's)
+  int collided_rect = -1;          ///< collision_obstacle: which rectangle of the map
   std::vector<EpisodeFrame> trajectory;  ///< when recording
 };
 
@@ -140,6 +142,8 @@ struct StepJudgement {
   StepEvent event = StepEvent::kNone;
   double reward = 0.0;
   double min_human_distance = kInfinity;
+  int human = -1;  ///< kCollisionHuman: index of the human hit (the closest approach)
+  int rect = -1;   ///< kCollisionObstacle: index of the rectangle hit (StaticMap::rectangles)
 };
 StepJudgement JudgeRobotMove(const SimConfig& sim, const CollisionWorld& world,
                              const AgentState& robot, const Vec2& robot_velocity,

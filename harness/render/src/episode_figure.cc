@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "crowdsim/render/figure_key.h"
+#include "crowdsim/render/marks.h"
 #include "crowdsim/render/palette.h"
 #include "crowdsim/render/view.h"
 
@@ -66,25 +68,6 @@ Rect WorldExtent(const EpisodeFigure& fig) {
     }
   }
   return r.Inflated(0.2);
-}
-
-std::vector<Vec2> Star(const Vec2& c, double outer) {
-  std::vector<Vec2> pts;
-  for (int i = 0; i < 10; ++i) {
-    const double a = -M_PI / 2 + i * M_PI / 5;
-    const double r = i % 2 == 0 ? outer : 0.45 * outer;
-    pts.emplace_back(c.x() + r * std::cos(a), c.y() + r * std::sin(a));
-  }
-  return pts;
-}
-
-std::vector<Vec2> Square(const Vec2& c, double half) {
-  return {c + Vec2(-half, -half), c + Vec2(half, -half), c + Vec2(half, half),
-          c + Vec2(-half, half)};
-}
-
-std::vector<Vec2> Diamond(const Vec2& c, double half) {
-  return {c + Vec2(0, -half), c + Vec2(half, 0), c + Vec2(0, half), c + Vec2(-half, 0)};
 }
 
 // A navigable mask as an overlay: blocked cells grey, navigable cells transparent.
@@ -167,6 +150,61 @@ void DrawSensors(Drawing* d, const View& v, const SensorSnapshot& s) {
   }
 }
 
+// A red ring around what the robot hit: the human's disc or the obstacle's outline.
+void DrawCollisionPartner(Drawing* d, const View& v, const Scenario& sc, const EpisodeResult& r,
+                          const EpisodeFrame& humans_at_end) {
+  if (r.collided_human >= 0 && static_cast<size_t>(r.collided_human) < humans_at_end.humans.size()) {
+    const AgentState& h = humans_at_end.humans[r.collided_human];
+    d->AddCircle("collision-partner", v.ToCanvas(h.position), v.Length(h.radius) + 3.0,
+                 Stroke(palette::kCollision, 2.6));
+  }
+  if (r.collided_rect >= 0 && sc.map &&
+      static_cast<size_t>(r.collided_rect) < sc.map->rectangles.size()) {
+    const Rect& o = sc.map->rectangles[r.collided_rect];
+    d->AddRect("collision-partner", v.ToCanvas(Vec2(o.min.x(), o.max.y())),
+               v.ToCanvas(Vec2(o.max.x(), o.min.y())), Stroke(palette::kCollision, 2.6));
+  }
+}
+
+// The key's entries: the marks this figure draws.
+std::vector<KeyEntry> KeyEntries(const EpisodeFigure& fig, std::optional<size_t> frame,
+                                 const FigureOptions& opt) {
+  const Scenario& sc = *fig.scenario;
+  std::vector<KeyEntry> e = {{KeyMark::kRobotStart, "robot start"},
+                             {KeyMark::kRobotGoal, "robot goal"}};
+  if (!sc.humans.empty()) {
+    e.push_back({KeyMark::kHumanStart, "human start"});
+    e.push_back({KeyMark::kHumanGoal, "human goal"});
+  }
+  if (opt.time_mark_interval > 0.0) {
+    char every[48];
+    std::snprintf(every, sizeof(every), "path, dot every %g s", opt.time_mark_interval);
+    e.push_back({KeyMark::kTimeDot, every});
+  }
+  e.push_back({KeyMark::kEndDisc, frame ? "agent now (radius to scale)" : "final position (radius to scale)"});
+  if (sc.map && !sc.map->rectangles.empty()) e.push_back({KeyMark::kObstacle, "obstacle"});
+  if (!frame && fig.sensors) {
+    bool lidar = false, people = false;
+    for (const SensorReading& r : fig.sensors->readings) {
+      lidar = lidar || !r.ranges.empty();
+      people = people || r.ranges.empty();
+    }
+    if (lidar) e.push_back({KeyMark::kLidar, "lidar beam, hit"});
+    if (people) e.push_back({KeyMark::kPersonReading, "person detection, velocity 1 s"});
+  }
+  bool collided = false, partner = false;
+  for (const RobotTrack& t : fig.robots) {
+    const bool at_end = !frame || *frame + 1 >= t.result->trajectory.size();
+    const bool c = t.result->status == EpisodeStatus::kCollisionHuman ||
+                   t.result->status == EpisodeStatus::kCollisionObstacle;
+    collided = collided || (c && at_end);
+    partner = partner || (c && at_end && (t.result->collided_human >= 0 || t.result->collided_rect >= 0));
+  }
+  if (collided) e.push_back({KeyMark::kCollision, "collision"});
+  if (partner) e.push_back({KeyMark::kCollisionPartner, "what was hit"});
+  return e;
+}
+
 // Shared by the full figure (frame = none) and the animation frames.
 Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const FigureOptions& opt) {
   if (fig.scenario == nullptr || fig.robots.empty()) {
@@ -182,7 +220,12 @@ Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const Figur
   const bool with_sensors = !frame && fig.sensors.has_value();
   const int header_lines = static_cast<int>(fig.robots.size()) + (with_sensors || frame ? 1 : 0);
   const double header = kTitleLine + kLegendLine * header_lines + 6.0;
-  const View v = View::Fit(WorldExtent(fig), opt.max_side, kMargin, header);
+  const Rect extent = WorldExtent(fig);
+  // The key's height depends on the canvas width, which the footer does not change.
+  const View fitted = View::Fit(extent, opt.max_side, kMargin, header);
+  std::optional<FigureKey> key;
+  if (opt.key) key.emplace(KeyEntries(fig, frame, opt), fitted.scale(), fitted.width(), kMargin);
+  const View v = View::Fit(extent, opt.max_side, kMargin, header, key ? key->height() : 0.0);
 
   Drawing d;
   d.width = std::round(v.width());
@@ -266,6 +309,7 @@ Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const Figur
     if (collided && (!frame || *frame + 1 >= tr.size())) {
       d.AddCircle("collision-mark", v.ToCanvas(f.robot.position), v.Length(f.robot.radius) + 5.0,
                   Stroke(palette::kCollision, 2.2, true));
+      DrawCollisionPartner(&d, v, sc, *t.result, f);
     }
   }
 
@@ -313,6 +357,7 @@ Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const Figur
     d.AddText("clock", Vec2(kMargin, y), "t = " + Format("%.2f", clock) + " s", 12.0,
               palette::kMutedInk);
   }
+  if (key) key->Draw(&d, v.height() - kMargin - key->height() + 6.0);
   return d;
 }
 

@@ -75,6 +75,9 @@ std::string TrackLabel(const Suite& suite, const ReplayedEpisode& replay) {
                   row.policy.plugin + "): " + EpisodeStatusName(replay.result.status);
   s += replay.result.status == EpisodeStatus::kSuccess ? " in " : " at ";
   s += std::string(time) + " s";
+  if (replay.result.collided_human >= 0) {
+    s += " (human " + std::to_string(replay.result.collided_human + 1) + ")";
+  }
   if (!replay.result.error.empty()) s += " (" + replay.result.error + ")";
   return s;
 }

@@ -4,7 +4,8 @@
 
 namespace crowdsim::render {
 
-View View::Fit(const Rect& world, double max_side, double margin, double header) {
+View View::Fit(const Rect& world, double max_side, double margin, double header,
+               double footer) {
   View v;
   v.world_ = world;
   const Vec2 size = world.Size().cwiseMax(Vec2(1e-6, 1e-6));
@@ -13,7 +14,7 @@ View View::Fit(const Rect& world, double max_side, double margin, double header)
   v.offset_y_ = margin + header;
   // The header needs room for its text even when the world is tall and narrow.
   v.width_ = std::max(2.0 * margin + size.x() * v.scale_, 420.0);
-  v.height_ = v.offset_y_ + size.y() * v.scale_ + margin;
+  v.height_ = v.offset_y_ + size.y() * v.scale_ + margin + footer;
   // Centre a narrow world in the minimum width.
   v.offset_x_ = 0.5 * (v.width_ - size.x() * v.scale_);
   return v;

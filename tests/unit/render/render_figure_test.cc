@@ -2,7 +2,10 @@
 // snapshot and the floor-plan mask, on scripted episodes and on a replayed suite episode.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "crowdsim/episode.h"
 #include "crowdsim/plugin_registry.h"
@@ -207,6 +210,90 @@ TEST(EpisodeFigure, FloorPlanMaskIsDrawnUnderTheRectangles) {
   const std::string svg = ToSvg(d);
   EXPECT_NE(svg.find("<image class=\"mask\""), std::string::npos);
   EXPECT_NE(svg.find("href=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);
+}
+
+// The texts of the items of class `cls`, in paint order.
+std::vector<std::string> TextsOf(const Drawing& d, const std::string& cls) {
+  std::vector<std::string> out;
+  for (const DrawItem& it : d.items)
+    if (it.cls == cls) out.push_back(it.text);
+  return out;
+}
+
+bool Has(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+TEST(EpisodeFigure, KeyExplainsTheMarksDrawnAndTheScaleBarIsToScale) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  const Drawing d = DrawEpisode(Figure(sc, r));
+  const std::vector<std::string> key = TextsOf(d, "key-text");
+  for (const char* t : {"robot start", "robot goal", "human start", "human goal", "obstacle",
+                        "path, dot every 2 s", "final position (radius to scale)"}) {
+    EXPECT_TRUE(Has(key, t)) << t;
+  }
+  // A success explains no collision marks, a figure without sensors no beams.
+  EXPECT_FALSE(Has(key, "collision"));
+  EXPECT_FALSE(Has(key, "lidar beam, hit"));
+
+  // Scale bar: its label's metres at the figure's px per metre, measured on the scripted
+  // obstacle 2 m wide (obstacles are drawn in the map's order, walls first).
+  const std::vector<std::string> label = TextsOf(d, "scale-bar-label");
+  ASSERT_EQ(label.size(), 1u);
+  const double metres = std::stod(label[0]);
+  EXPECT_TRUE(label[0] == "1 m" || label[0] == "2 m" || label[0] == "5 m") << label[0];
+  size_t wide = 0;
+  while (wide < sc.map->rectangles.size() &&
+         !(sc.map->rectangles[wide].min == Vec2(-1, 1.5) && sc.map->rectangles[wide].max == Vec2(1, 2.5)))
+    ++wide;
+  ASSERT_LT(wide, sc.map->rectangles.size());
+  const DrawItem* obstacle = nullptr;
+  const DrawItem* bar = nullptr;
+  size_t obstacles_seen = 0;
+  for (const DrawItem& it : d.items) {
+    if (it.cls == "obstacle" && obstacles_seen++ == wide) obstacle = &it;
+    if (it.cls == "scale-bar" && bar == nullptr) bar = &it;
+  }
+  ASSERT_NE(obstacle, nullptr);
+  ASSERT_NE(bar, nullptr);
+  const double px_per_metre = std::abs(obstacle->points[1].x() - obstacle->points[0].x()) / 2.0;
+  EXPECT_NEAR(std::abs(bar->points[1].x() - bar->points[0].x()), metres * px_per_metre, 1e-6);
+  // The key sits below the map, inside the canvas.
+  for (const DrawItem& it : d.items) {
+    if (it.cls != "key-text") continue;
+    EXPECT_GT(it.points[0].y(), obstacle->points[1].y());
+    EXPECT_LT(it.points[0].y(), d.height);
+  }
+
+  FigureOptions no_key;
+  no_key.key = false;
+  const Drawing bare = DrawEpisode(Figure(sc, r), no_key);
+  EXPECT_EQ(bare.Count("key-text"), 0);
+  EXPECT_EQ(bare.Count("scale-bar"), 0);
+  EXPECT_LT(bare.height, d.height);
+}
+
+TEST(EpisodeFigure, ACollisionFigureMarksWhatWasHit) {
+  // The robot walks into the first scripted obstacle's east side.
+  const Scenario sc = ScriptedScenario();
+  ConstantVelocityPolicy robot(Vec2(0.0, 1.0));
+  ConstantVelocityPolicy h1(Vec2(0.5, 0.0)), h2(Vec2(-0.5, 0.0));
+  Scenario up = sc;
+  up.robot_start = Vec2(0.5, 0.0);
+  up.robot_goal = Vec2(0.5, 4.0);
+  Episode ep(up, SimConfig{}, EpisodeAgents{&robot, {&h1, &h2}, {}}, true);
+  const EpisodeResult r = ep.Run();
+  ASSERT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
+  ASSERT_GE(r.collided_rect, 0);
+  const Drawing d = DrawEpisode(Figure(up, r));
+  EXPECT_EQ(d.Count("collision-mark"), 1);
+  ASSERT_EQ(d.Count("collision-partner"), 1);
+  const Rect& hit = up.map->rectangles[r.collided_rect];
+  EXPECT_DOUBLE_EQ(hit.min.y(), 1.5);  // the obstacle above the robot, not a wall
+  const std::vector<std::string> key = TextsOf(d, "key-text");
+  EXPECT_TRUE(Has(key, "collision"));
+  EXPECT_TRUE(Has(key, "what was hit"));
 }
 
 TEST(EpisodeFigure, AnimationFramesGrowTheTrails) {

@@ -36,6 +36,7 @@ struct FigureOptions {
   double max_side = 760.0;          ///< px, the longer side of the world area
   double time_mark_interval = 2.0;  ///< s between time dots on every trajectory
   bool time_labels = true;          ///< write the time next to each dot
+  bool key = true;                  ///< scale bar and key of the marks under the map
 };
 
 /// The whole episode: map, trajectories with time marks, starts and goals, final discs,

@@ -5,11 +5,13 @@
 
 namespace crowdsim::render {
 
-/// World-to-canvas transform: uniform scale, y flipped, a margin and a header band.
+/// World-to-canvas transform: uniform scale, y flipped, a margin, a header and a footer band.
 class View {
  public:
-  /// Fits `world` into at most `max_side` px per side, below a `header` px band.
-  static View Fit(const Rect& world, double max_side, double margin, double header);
+  /// Fits `world` into at most `max_side` px per side, below a `header` px band and above a
+  /// `footer` px band.
+  static View Fit(const Rect& world, double max_side, double margin, double header,
+                  double footer = 0.0);
 
   /// Canvas point of a world point.
   Vec2 ToCanvas(const Vec2& p) const {
