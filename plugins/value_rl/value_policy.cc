@@ -35,7 +35,7 @@ struct ValuePolicy::Impl {
   double momentum = 0.0;
 
   double gamma = 0.9;
-  double epsilon = 0.0;
+  Exploration exploration;
   Rng rng;
   double actions_v_pref = -1.0;
   std::vector<Action> actions;
@@ -43,6 +43,7 @@ struct ValuePolicy::Impl {
   std::vector<EncodedState> candidates;
   std::vector<const EncodedState*> candidate_ptrs;
   std::vector<float> action_values;
+  std::vector<size_t> safe_actions;  ///< exploration: indices of the non-colliding actions
 
   void NewNetworks() {
     model = MakeValueNetwork(config);
@@ -140,9 +141,17 @@ Action ValuePolicy::Decide(const Observation& obs) {
                                  m.config.stop_action, obs.self.v_pref);
     m.actions_v_pref = obs.self.v_pref;
   }
-  if (m.epsilon > 0.0 && m.rng.Uniform() < m.epsilon) {
+  if (m.exploration.epsilon > 0.0 && m.rng.Uniform() < m.exploration.epsilon) {
     m.action_values.clear();
-    return m.actions[m.rng.Below(m.actions.size())];
+    if (!m.exploration.avoid_collisions) return m.actions[m.rng.Below(m.actions.size())];
+    obs.lookahead->Evaluate(m.actions, &m.outcomes);
+    m.safe_actions.clear();
+    for (size_t k = 0; k < m.outcomes.size(); ++k) {
+      const StepEvent e = m.outcomes[k].event;
+      if (e != StepEvent::kCollisionHuman && e != StepEvent::kCollisionObstacle) m.safe_actions.push_back(k);
+    }
+    if (m.safe_actions.empty()) return m.actions[m.rng.Below(m.actions.size())];
+    return m.actions[m.safe_actions[m.rng.Below(m.safe_actions.size())]];
   }
   obs.lookahead->Evaluate(m.actions, &m.outcomes);
   m.candidates.resize(m.outcomes.size());
@@ -197,9 +206,9 @@ EncodedState ValuePolicy::Encode(const Observation& obs) const {
   return EncodeState(impl_->config, obs.self, obs.frame, obs.readings);
 }
 
-void ValuePolicy::SetExploration(double epsilon, std::uint64_t seed) {
-  impl_->epsilon = epsilon;
-  impl_->rng = Rng(seed);
+void ValuePolicy::SetExploration(const Exploration& exploration) {
+  impl_->exploration = exploration;
+  impl_->rng = Rng(exploration.seed);
 }
 
 void ValuePolicy::SetLearningRate(double learning_rate, double momentum) {

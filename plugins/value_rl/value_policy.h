@@ -33,7 +33,7 @@ class ValuePolicy final : public Policy, public Trainable {
   std::string Describe() const override;
   void InitWeights(std::uint64_t seed) override;
   EncodedState Encode(const Observation& obs) const override;
-  void SetExploration(double epsilon, std::uint64_t seed) override;
+  void SetExploration(const Exploration& exploration) override;
   void SetLearningRate(double learning_rate, double momentum) override;
   double TrainBatch(std::span<const EncodedState* const> states,
                     std::span<const float> targets) override;

@@ -19,6 +19,15 @@ struct EncodedState {
   std::vector<float> values;
 };
 
+/// How Decide explores while the trainer collects RL episodes.
+struct Exploration {
+  double epsilon = 0.0;    ///< probability in [0, 1] of a random action at a step; 0 = greedy
+  std::uint64_t seed = 0;  ///< of the stream the random draws come from
+  /// Draw the random action among those the one-step lookahead does not show colliding (among
+  /// all when every one collides); false: among all actions (CrowdNav).
+  bool avoid_collisions = false;
+};
+
 /// Implemented by value-based robot policies (the object made by the plugin is both a
 /// Policy and a Trainable; the host finds it with dynamic_cast).
 class Trainable {
@@ -32,9 +41,8 @@ class Trainable {
   virtual void InitWeights(std::uint64_t seed) = 0;
   /// The state of a robot observation (the one its Decide saw), encoded for the network.
   virtual EncodedState Encode(const Observation& obs) const = 0;
-  /// Epsilon-greedy exploration in Decide: a uniformly random action with probability
-  /// `epsilon` in [0, 1], drawn from a stream seeded with `seed`. 0 = greedy.
-  virtual void SetExploration(double epsilon, std::uint64_t seed) = 0;
+  /// Epsilon-greedy exploration in Decide (`Exploration`); epsilon 0 = greedy.
+  virtual void SetExploration(const Exploration& exploration) = 0;
   /// Starts a new optimiser with this learning rate (CrowdNav: a new SGD per phase).
   virtual void SetLearningRate(double learning_rate, double momentum) = 0;
   /// One optimiser step on the mean squared error of the model's values; returns the loss.

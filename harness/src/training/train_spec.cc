@@ -102,7 +102,7 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
       {"epsilon_start", &t.epsilon_start, 0.0, 1.0},
       {"epsilon_end", &t.epsilon_end, 0.0, 1.0},
   };
-  std::vector<std::string> keys = {"il_policy", "il_params", "store_timeouts"};
+  std::vector<std::string> keys = {"il_policy", "il_params", "store_timeouts", "exploration"};
   for (const auto& f : ints) keys.push_back(f.key);
   for (const auto& f : reals) keys.push_back(f.key);
   const bool map = Present(n) && r.IsMap(n, "training", "imitation and RL settings");
@@ -129,6 +129,17 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
       } else {
         r.Error(st, "training.store_timeouts",
                 "expected off, terminal or bootstrap, got " + suite_internal::Scalar(st));
+      }
+    }
+    if (const YAML::Node ex = n["exploration"]; Present(ex)) {
+      const std::string v = ex.IsScalar() ? ex.Scalar() : "";
+      if (v == "uniform") {
+        t.exploration = ExplorationRule::kUniform;
+      } else if (v == "collision_free") {
+        t.exploration = ExplorationRule::kCollisionFree;
+      } else {
+        r.Error(ex, "training.exploration",
+                "expected uniform or collision_free, got " + suite_internal::Scalar(ex));
       }
     }
   }
@@ -168,11 +179,18 @@ std::string Canonical(const TrainSpec& s) {
      << "," << t.epsilon_end << "," << t.epsilon_decay_episodes << "," << t.target_update_interval
      << "," << t.capacity << "," << t.batch_size << "," << t.train_batches << ","
      << t.validation_interval << "," << t.validation_episodes << ",store_timeouts="
-     << ToString(t.store_timeouts) << "\n";
+     << ToString(t.store_timeouts);
+  // Written only when not the default, so that the hashes of earlier trainings stay valid.
+  if (t.exploration != ExplorationRule::kUniform) os << ",exploration=" << ToString(t.exploration);
+  os << "\n";
   return os.str();
 }
 
 }  // namespace
+
+const char* ToString(ExplorationRule e) {
+  return e == ExplorationRule::kCollisionFree ? "collision_free" : "uniform";
+}
 
 const char* ToString(StoreTimeouts s) {
   switch (s) {

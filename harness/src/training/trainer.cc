@@ -332,7 +332,7 @@ void Trainer::Imitation() {
 
 ValidationResult Trainer::Validate(int rl_episode) {
   const auto t0 = Clock::now();
-  learner_->SetExploration(0.0, 0);
+  learner_->SetExploration(Exploration{});
   ValidationResult v;
   v.episode = rl_episode;
   double nav = 0.0;
@@ -388,7 +388,9 @@ void Trainer::Reinforcement() {
     }
     const double epsilon = Epsilon(t_, e);
     auto t0 = Clock::now();
-    learner_->SetExploration(epsilon, DeriveSeed(spec_.seed, "explore", static_cast<std::uint64_t>(e)));
+    learner_->SetExploration(
+        Exploration{epsilon, DeriveSeed(spec_.seed, "explore", static_cast<std::uint64_t>(e)),
+                    t_.exploration == ExplorationRule::kCollisionFree});
     const bool bootstrap_timeouts = t_.store_timeouts == StoreTimeouts::kBootstrap;
     Trajectory tr = RunEpisode(learner_policy_.get(), MakeScenario("rl", e), true, bootstrap_timeouts);
     summary_.times.rl_episodes += Since(t0);
@@ -531,7 +533,8 @@ void Trainer::WriteSummaryJson() const {
      << ",\n  \"procedure\": {\"il_episodes\": " << p.il_episodes << ", \"il_epochs\": " << p.il_epochs
      << ", \"rl_episodes\": " << p.rl_episodes << ", \"epsilon_start\": " << p.epsilon_start
      << ", \"epsilon_end\": " << p.epsilon_end << ", \"epsilon_decay_episodes\": " << p.epsilon_decay_episodes
-     << ", \"store_timeouts\": \"" << ToString(p.store_timeouts) << "\", \"train_batches\": "
+     << ", \"store_timeouts\": \"" << ToString(p.store_timeouts) << "\", \"exploration\": \"" << ToString(p.exploration)
+     << "\", \"train_batches\": "
      << p.train_batches << ", \"validation_interval\": " << p.validation_interval
      << ", \"validation_episodes\": " << p.validation_episodes << "}"
      << ",\n  \"cpu\": \"" << CpuModel() << "\",\n  \"commit\": \"" << GitCommit() << "\""

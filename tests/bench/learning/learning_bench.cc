@@ -141,7 +141,7 @@ void BM_TrainingEpisode(benchmark::State& state) {
   Rng rng(4);
   int k = 0;
   for (auto _ : state) {
-    policy.SetExploration(0.7, static_cast<std::uint64_t>(k));
+    policy.SetExploration(Exploration{0.7, static_cast<std::uint64_t>(k)});
     const Scenario scenario = w.Make(k++);
     Episode episode(scenario, w.sim, w.agents);
     std::vector<EncodedState> states;

@@ -77,6 +77,34 @@ TEST(TrainSpecTest, StoreTimeoutsIsAProcedureKey) {
             std::string::npos) << bad.errors[0].Format();
 }
 
+TEST(TrainSpecTest, ExplorationIsAProcedureKeyAndTheDefaultKeepsEarlierHashes) {
+  TempDir dir;
+  TrainFile f;
+  f.training = "{epsilon_end: 0.1}";
+  const auto plain = Load(WriteTrainFile(dir, f));
+  ASSERT_TRUE(plain.spec) << plain.errors[0].Format();
+  EXPECT_EQ(plain.spec->training.exploration, training::ExplorationRule::kUniform);
+  // The default is not written into the canonical text: trainings made before the key existed
+  // keep their config hash (and so --resume).
+  EXPECT_EQ(plain.spec->canonical.find("exploration"), std::string::npos);
+  f.training = "{epsilon_end: 0.1, exploration: uniform}";
+  const auto uniform = Load(WriteTrainFile(dir, f));
+  ASSERT_TRUE(uniform.spec);
+  EXPECT_EQ(uniform.spec->ConfigHash(), plain.spec->ConfigHash());
+
+  f.training = "{epsilon_end: 0.1, exploration: collision_free}";
+  const auto safe = Load(WriteTrainFile(dir, f));
+  ASSERT_TRUE(safe.spec) << safe.errors[0].Format();
+  EXPECT_EQ(safe.spec->training.exploration, training::ExplorationRule::kCollisionFree);
+  EXPECT_NE(safe.spec->ConfigHash(), plain.spec->ConfigHash());
+
+  f.training = "{exploration: careful}";
+  const auto bad = Load(WriteTrainFile(dir, f));
+  ASSERT_FALSE(bad.spec);
+  EXPECT_NE(bad.errors[0].Format().find("training.exploration: expected uniform or collision_free, got 'careful'"),
+            std::string::npos) << bad.errors[0].Format();
+}
+
 TEST(TrainSpecTest, SeedOverrideChangesTheConfigurationAndDecayWarns) {
   TempDir dir;
   TrainFile f;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "action_space.h"
 #include "crowdsim/lookahead.h"
@@ -160,7 +161,8 @@ TEST(ValueNetworkTest, PaddedBatchEqualsOneByOne) {
 /// A lookahead whose outcomes all look alike except for their rewards.
 class FixedLookahead final : public Lookahead {
  public:
-  explicit FixedLookahead(std::vector<double> rewards) : rewards_(std::move(rewards)) {}
+  explicit FixedLookahead(std::vector<double> rewards, std::vector<StepEvent> events = {})
+      : rewards_(std::move(rewards)), events_(std::move(events)) {}
   std::span<const AgentState> NextHumans() const override { return {}; }
   void Evaluate(std::span<const Action> actions, std::vector<LookaheadOutcome>* out) const override {
     out->assign(actions.size(), LookaheadOutcome{});
@@ -172,11 +174,13 @@ class FixedLookahead final : public Lookahead {
       people.sensor = "person";
       o.readings = {people};
       o.reward = k < rewards_.size() ? rewards_[k] : 0.0;
+      o.event = k < events_.size() ? events_[k] : StepEvent::kNone;
     }
   }
 
  private:
   std::vector<double> rewards_;
+  std::vector<StepEvent> events_;
 };
 
 TEST(ValuePolicyTest, PicksTheBestRewardAndTiesGoToTheEarliest) {
@@ -205,6 +209,42 @@ TEST(ValuePolicyTest, PicksTheBestRewardAndTiesGoToTheEarliest) {
 
   obs.lookahead = nullptr;
   EXPECT_THROW(policy.Decide(obs), std::runtime_error);
+}
+
+TEST(ValuePolicyTest, CollisionFreeExplorationDrawsOnlyActionsThatDoNotCollide) {
+  ValuePolicy policy(Config(Model::kCadrl, SensorSet::kPerson));
+  policy.Reset(EpisodeContext{});
+  Observation obs;
+  obs.self = Robot();
+  const auto actions = BuildActionSpace(2, 8, false, 1.0);
+  // Every action but 5 and 12 runs into something.
+  std::vector<StepEvent> events(16, StepEvent::kCollisionObstacle);
+  events[3] = StepEvent::kCollisionHuman;
+  events[5] = StepEvent::kNone;
+  events[12] = StepEvent::kDanger;
+  FixedLookahead walls({}, events);
+  obs.lookahead = &walls;
+  const auto draws = [&](bool avoid) {
+    policy.SetExploration(Exploration{1.0, 7, avoid});
+    std::set<size_t> seen;
+    for (int i = 0; i < 200; ++i) {
+      const Vec2 v = policy.Decide(obs).velocity;
+      for (size_t k = 0; k < actions.size(); ++k)
+        if (actions[k].velocity == v) seen.insert(k);
+    }
+    return seen;
+  };
+  EXPECT_EQ(draws(true), (std::set<size_t>{5, 12}));
+  EXPECT_GT(draws(false).size(), 10u);  // uniform: nearly all 16 in 200 draws
+  // When every action collides there is nothing to avoid: any action.
+  FixedLookahead boxed_in({}, std::vector<StepEvent>(16, StepEvent::kCollisionObstacle));
+  obs.lookahead = &boxed_in;
+  EXPECT_GT(draws(true).size(), 10u);
+  // Greedy decisions (epsilon 0) are not affected by the rule.
+  policy.SetExploration(Exploration{0.0, 7, true});
+  FixedLookahead best_is_3(std::vector<double>{0, 0, 0, 0.5}, events);
+  obs.lookahead = &best_is_3;
+  EXPECT_EQ(policy.Decide(obs).velocity, actions[3].velocity);
 }
 
 TEST(ValuePolicyTest, NeedsLookaheadAndItsSensors) {

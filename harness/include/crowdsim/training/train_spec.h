@@ -22,6 +22,13 @@ enum class StoreTimeouts {
 };
 const char* ToString(StoreTimeouts s);
 
+/// Which random actions the RL phase's epsilon-greedy exploration draws from (`exploration`).
+enum class ExplorationRule {
+  kUniform,        ///< any action (CrowdNav, the paper)
+  kCollisionFree,  ///< those the one-step lookahead does not show colliding (docs/training.md)
+};
+const char* ToString(ExplorationRule e);
+
 /// The `training:` keys. Defaults: CrowdNav's train.config with the paper's epsilon, i.e. the
 /// paper's literal procedure; the training files under suites/train/ name the procedure that
 /// learns (docs/training.md).
@@ -43,6 +50,7 @@ struct TrainingSettings {
   int validation_episodes = 100;
   int checkpoint_interval = 500;    ///< episodes between checkpoints
   StoreTimeouts store_timeouts = StoreTimeouts::kOff;
+  ExplorationRule exploration = ExplorationRule::kUniform;
 };
 
 /// A validated training file.
