@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 SUITE ?= suites/quick.yaml
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build run test bench train-all clean
+.PHONY: all deps configure build run test bench train-all gallery clean
 
 all: build
 
@@ -38,6 +38,10 @@ bench: build
 TRAIN_JOBS ?= 2
 train-all: build
 	scripts/train_all.sh -j $(TRAIN_JOBS)
+
+# Redraws docs/gallery/*.png and the README's docs/episode.png from the committed results.
+gallery: build
+	scripts/make_gallery.sh --bin $(BUILD)/bin/crowdsim-bench
 
 clean:
 	rm -rf $(BUILD)

@@ -1,5 +1,6 @@
 #include "floorplan_cli.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -87,7 +88,14 @@ std::string Required(const Parsed& p, const std::string& key) {
 void PrintReport(const ImportResult& r, const std::filesystem::path& out) {
   std::printf("imported %s -> %s in %.3f s\n", r.world.name.c_str(), out.string().c_str(),
               r.seconds);
-  for (const auto& [k, v] : r.world.stats) std::printf("  %-22s %.4f\n", k.c_str(), v);
+  for (const auto& [k, v] : r.world.stats) {
+    // Counts, flags and seeds are whole numbers: print them as such.
+    if (v == std::floor(v) && std::fabs(v) < 1e15) {
+      std::printf("  %-22s %.0f\n", k.c_str(), v);
+    } else {
+      std::printf("  %-22s %.4f\n", k.c_str(), v);
+    }
+  }
 }
 
 int Import(const std::vector<std::string>& args) {

@@ -183,6 +183,9 @@ std::vector<KeyEntry> KeyEntries(const EpisodeFigure& fig, std::optional<size_t>
   }
   e.push_back({KeyMark::kEndDisc, frame ? "agent now (radius to scale)" : "final position (radius to scale)"});
   if (sc.map && !sc.map->rectangles.empty()) e.push_back({KeyMark::kObstacle, "obstacle"});
+  if (sc.map && sc.map->mask && sc.map->mask->width > 0) {
+    e.push_back({KeyMark::kMask, "blocked in the plan (not collidable)"});
+  }
   if (!frame && fig.sensors) {
     bool lidar = false, people = false;
     for (const SensorReading& r : fig.sensors->readings) {
@@ -192,13 +195,14 @@ std::vector<KeyEntry> KeyEntries(const EpisodeFigure& fig, std::optional<size_t>
     if (lidar) e.push_back({KeyMark::kLidar, "lidar beam, hit"});
     if (people) e.push_back({KeyMark::kPersonReading, "person detection, velocity 1 s"});
   }
+  // Listed for every frame of an animation that ends in a collision, not only the last: all
+  // frames of an animation have one size.
   bool collided = false, partner = false;
   for (const RobotTrack& t : fig.robots) {
-    const bool at_end = !frame || *frame + 1 >= t.result->trajectory.size();
     const bool c = t.result->status == EpisodeStatus::kCollisionHuman ||
                    t.result->status == EpisodeStatus::kCollisionObstacle;
-    collided = collided || (c && at_end);
-    partner = partner || (c && at_end && (t.result->collided_human >= 0 || t.result->collided_rect >= 0));
+    collided = collided || c;
+    partner = partner || (c && (t.result->collided_human >= 0 || t.result->collided_rect >= 0));
   }
   if (collided) e.push_back({KeyMark::kCollision, "collision"});
   if (partner) e.push_back({KeyMark::kCollisionPartner, "what was hit"});

@@ -65,6 +65,10 @@ void DrawMark(Drawing* d, KeyMark m, const Vec2& c) {
       d->AddRect("key-mark", c - Vec2(8.0, 6.0), c + Vec2(8.0, 6.0),
                  Filled(palette::kObstacleFill, palette::kObstacleEdge, 1.0));
       break;
+    case KeyMark::kMask:
+      d->AddRect("key-mark", c - Vec2(8.0, 6.0), c + Vec2(8.0, 6.0),
+                 Filled(palette::kBlocked, palette::kBlocked, 0.0));
+      break;
     case KeyMark::kLidar:
       d->AddPolyline("key-mark", {c - Vec2(8.0, -4.0), c + Vec2(6.0, -2.0)},
                      Stroke(palette::kBeam.WithAlpha(0.6), 1.0));

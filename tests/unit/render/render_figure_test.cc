@@ -56,6 +56,18 @@ EpisodeFigure Figure(const Scenario& sc, const EpisodeResult& r) {
   return fig;
 }
 
+// The texts of the items of class `cls`, in paint order.
+std::vector<std::string> TextsOf(const Drawing& d, const std::string& cls) {
+  std::vector<std::string> out;
+  for (const DrawItem& it : d.items)
+    if (it.cls == cls) out.push_back(it.text);
+  return out;
+}
+
+bool Has(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
 TEST(EpisodeFigure, SvgShowsEveryRectangleAndTrajectory) {
   const Scenario sc = ScriptedScenario();
   const EpisodeResult r = RunScripted(sc);
@@ -210,18 +222,8 @@ TEST(EpisodeFigure, FloorPlanMaskIsDrawnUnderTheRectangles) {
   const std::string svg = ToSvg(d);
   EXPECT_NE(svg.find("<image class=\"mask\""), std::string::npos);
   EXPECT_NE(svg.find("href=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);
-}
-
-// The texts of the items of class `cls`, in paint order.
-std::vector<std::string> TextsOf(const Drawing& d, const std::string& cls) {
-  std::vector<std::string> out;
-  for (const DrawItem& it : d.items)
-    if (it.cls == cls) out.push_back(it.text);
-  return out;
-}
-
-bool Has(const std::vector<std::string>& v, const std::string& s) {
-  return std::find(v.begin(), v.end(), s) != v.end();
+  // The key says what the mask's grey means (only the rectangles collide).
+  EXPECT_TRUE(Has(TextsOf(d, "key-text"), "blocked in the plan (not collidable)"));
 }
 
 TEST(EpisodeFigure, KeyExplainsTheMarksDrawnAndTheScaleBarIsToScale) {
@@ -294,6 +296,14 @@ TEST(EpisodeFigure, ACollisionFigureMarksWhatWasHit) {
   const std::vector<std::string> key = TextsOf(d, "key-text");
   EXPECT_TRUE(Has(key, "collision"));
   EXPECT_TRUE(Has(key, "what was hit"));
+  // An animation of it keeps one frame size (the key lists the collision from the first frame).
+  const EpisodeFigure fig = Figure(up, r);
+  const Drawing first = DrawEpisodeFrame(fig, 0);
+  const Drawing last = DrawEpisodeFrame(fig, r.trajectory.size() - 1);
+  EXPECT_EQ(first.height, last.height);
+  EXPECT_EQ(first.width, last.width);
+  EXPECT_EQ(last.Count("collision-partner"), 1);
+  EXPECT_EQ(first.Count("collision-partner"), 0);
 }
 
 TEST(EpisodeFigure, AnimationFramesGrowTheTrails) {

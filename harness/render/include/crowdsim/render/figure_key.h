@@ -19,6 +19,7 @@ enum class KeyMark {
   kTimeDot,         ///< dot every N s on every path
   kEndDisc,         ///< disc of the agent's radius where it ended (or is, in an animation)
   kObstacle,        ///< grey rectangle
+  kMask,            ///< light grey: not navigable in a floor plan's mask
   kLidar,           ///< lidar beam and its hit
   kPersonReading,   ///< dashed ring and velocity of a person-sensor detection
   kCollision,       ///< dashed red ring around the robot that collided

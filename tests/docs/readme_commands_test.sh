@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Runs every command of the README's shell blocks, on small budgets, so the README cannot drift
+# from the program (issue: the README's own figure command had stopped working).
+#
+#   tests/docs/readme_commands_test.sh BUILD_DIR SOURCE_DIR
+#
+# Taken: each line of a ```sh block that starts with build/bin/, mpirun, for or source (the
+# `make` lines are what CI runs anyway). Budgets: every `run` gets --episodes 3, every `train` a
+# few imitation and RL episodes. The commands run in order in a scratch copy of the checkout's
+# suites, worlds and examples, with the committed results linked in (read only), so they write
+# nothing into the checkout. mpirun lines are skipped when the CLI was built without MPI.
+set -uo pipefail
+
+build="$(cd "$1" && pwd)"
+src="$(cd "$2" && pwd)"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+cp -r "$src/suites" "$src/worlds" "$src/examples" "$work/"
+mkdir -p "$work/results" "$work/build"
+for r in "$src"/results/*; do
+  [[ "$(basename "$r")" == train ]] || ln -s "$r" "$work/results/$(basename "$r")"  # local trainings stay out
+done
+for d in "$build"/*; do ln -s "$d" "$work/build/$(basename "$d")"; done
+
+mapfile -t commands < <(awk '
+  /^```/ { sh = ($0 ~ /^```sh/) && !sh; next }
+  sh { line = $0; sub(/^[ \t]+/, "", line)
+       if (line ~ /^(build\/bin\/|mpirun |for |source )/) { sub(/[ \t]+#.*$/, "", line); print line } }' \
+  "$src/README.md")
+[[ ${#commands[@]} -ge 10 ]] || { echo "FAIL: found only ${#commands[@]} commands in README.md"; exit 1; }
+
+small_train='--set training.il_episodes=3 --set training.il_epochs=1 --set training.rl_episodes=2 --set training.validation_interval=2 --set training.validation_episodes=2 --set training.checkpoint_interval=2'
+with_mpi=0
+"$build/bin/crowdsim-bench" --version | grep -q "with MPI" && command -v mpirun >/dev/null && with_mpi=1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+
+failed=0
+ran=0
+for c in "${commands[@]}"; do
+  if [[ "$c" == mpirun* && $with_mpi == 0 ]]; then
+    echo "SKIP (built without MPI): $c"
+    continue
+  fi
+  cmd=$(sed -E -e 's/ --episodes [0-9]+//g' \
+               -e 's/(crowdsim-bench run [^ ]+)/\1 --episodes 3/g' \
+               -e "s/(crowdsim-bench train [^ ]+)/\\1 $small_train/g" <<<"$c")
+  echo "RUN  $cmd"
+  if ! out=$(cd "$work" && timeout 300 bash -c "$cmd" 2>&1); then
+    echo "FAIL: $c"
+    echo "$out" | tail -n 15 | sed 's/^/    /'
+    failed=$((failed + 1))
+  fi
+  ran=$((ran + 1))
+done
+echo "$ran README commands run, $failed failed"
+[[ $failed == 0 ]]
