@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 SUITE ?= suites/quick.yaml
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build run test bench train-all gallery clean
+.PHONY: all deps configure build run test bench train-all gallery python clean
 
 all: build
 
@@ -38,6 +38,10 @@ bench: build
 TRAIN_JOBS ?= 2
 train-all: build
 	scripts/train_all.sh -j $(TRAIN_JOBS)
+
+# Builds the Python package crowdsim_bench into $(BUILD)/python (part of `make build` too).
+python: build
+	@echo "crowdsim_bench is in $(BUILD)/python: PYTHONPATH=$(BUILD)/python python3 -c 'import crowdsim_bench'"
 
 # Redraws docs/gallery/*.png and the README's docs/episode.png from the committed results.
 gallery: build

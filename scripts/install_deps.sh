@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libpng-dev libcairo2-dev libgif-dev
   libopenmpi-dev openmpi-bin
+  python3-dev python3-pybind11 python3-numpy
 )
 if [[ "${1:-}" != "--no-torch" ]]; then
   packages+=(libtorch-dev libopenblas0-pthread)

@@ -2,10 +2,11 @@
 # Runs every command of the README's shell blocks, on small budgets, so the README cannot drift
 # from the program (issue: the README's own figure command had stopped working).
 #
-#   tests/docs/readme_commands_test.sh BUILD_DIR SOURCE_DIR
+#   tests/docs/readme_commands_test.sh BUILD_DIR SOURCE_DIR [PYTHON]
 #
-# Taken: each line of a ```sh block that starts with build/bin/, mpirun, for or source (the
-# `make` lines are what CI runs anyway). Budgets: every `run` gets --episodes 3, every `train` a
+# Taken: each line of a ```sh block that starts with build/bin/, mpirun, for, source or
+# PYTHONPATH=build/python (run with PYTHON, the interpreter the package was built for; skipped
+# without it). The `make` lines are what CI runs anyway. Budgets: every `run` gets --episodes 3, every `train` a
 # few imitation and RL episodes. The commands run in order in a scratch copy of the checkout's
 # suites, worlds and examples, with the committed results linked in (read only), so they write
 # nothing into the checkout. mpirun lines are skipped when the CLI was built without MPI.
@@ -13,6 +14,7 @@ set -uo pipefail
 
 build="$(cd "$1" && pwd)"
 src="$(cd "$2" && pwd)"
+python="${3:-}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -26,7 +28,7 @@ for d in "$build"/*; do ln -s "$d" "$work/build/$(basename "$d")"; done
 mapfile -t commands < <(awk '
   /^```/ { sh = ($0 ~ /^```sh/) && !sh; next }
   sh { line = $0; sub(/^[ \t]+/, "", line)
-       if (line ~ /^(build\/bin\/|mpirun |for |source )/) { sub(/[ \t]+#.*$/, "", line); print line } }' \
+       if (line ~ /^(build\/bin\/|mpirun |for |source |PYTHONPATH=build\/python )/) { sub(/[ \t]+#.*$/, "", line); print line } }' \
   "$src/README.md")
 [[ ${#commands[@]} -ge 10 ]] || { echo "FAIL: found only ${#commands[@]} commands in README.md"; exit 1; }
 
@@ -41,6 +43,13 @@ for c in "${commands[@]}"; do
   if [[ "$c" == mpirun* && $with_mpi == 0 ]]; then
     echo "SKIP (built without MPI): $c"
     continue
+  fi
+  if [[ "$c" == PYTHONPATH=* ]]; then
+    if [[ -z "$python" ]]; then
+      echo "SKIP (no Python package built): $c"
+      continue
+    fi
+    c="${c/ python3 / $python }"
   fi
   cmd=$(sed -E -e 's/ --episodes [0-9]+//g' \
                -e 's/(crowdsim-bench run [^ ]+)/\1 --episodes 3/g' \

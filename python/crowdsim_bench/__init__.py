@@ -1,0 +1,232 @@
+"""crowdsim_bench: the crowdsim-bench simulator and benchmark from Python.
+
+    import crowdsim_bench as cb
+    env = cb.Env("suites/quick.yaml", row="orca")      # a suite row's worlds, humans, sensors
+    obs, info = env.reset(seed=0)                       # seed = the suite's episode index
+    obs, reward, terminated, truncated, info = env.step([0.5, 0.0])   # velocity, m/s, world frame
+
+    cb.evaluate(my_policy, "suites/quick.yaml", row="orca", out="runs/mine")  # the CLI's outputs
+    cb.run_suite("suites/quick.yaml")                   # the table as a list of dicts
+
+Env follows the Gymnasium API (reset/step/action_space/observation_space); it subclasses
+gymnasium.Env when gymnasium is installed and works the same without it. Episodes are those of
+the suite: `reset(seed=k)` (or `options={"episode": k}`) is episode k of the row, exactly as
+`crowdsim-bench run` simulates it, so a policy stepped from Python meets the same scenarios.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from . import _core
+
+__version__ = _core.__version__
+
+try:  # optional: Debian 12 has no gymnasium package
+    import gymnasium as _gym
+    from gymnasium import spaces as _spaces
+except ImportError:  # pragma: no cover - depends on the machine
+    _gym = None
+    _spaces = None
+
+
+class Box:
+    """A box of real vectors (gymnasium.spaces.Box's contract, for machines without gymnasium)."""
+
+    def __init__(self, low, high, shape, dtype=np.float64, seed=None):
+        self.shape = tuple(shape)
+        self.dtype = np.dtype(dtype)
+        self.low = np.broadcast_to(np.asarray(low, dtype=self.dtype), self.shape).copy()
+        self.high = np.broadcast_to(np.asarray(high, dtype=self.dtype), self.shape).copy()
+        self._rng = np.random.default_rng(seed)
+
+    def seed(self, seed=None):
+        self._rng = np.random.default_rng(seed)
+
+    def sample(self):
+        low = np.where(np.isfinite(self.low), self.low, -1e3)
+        high = np.where(np.isfinite(self.high), self.high, 1e3)
+        return self._rng.uniform(low, high).astype(self.dtype)
+
+    def contains(self, x) -> bool:
+        x = np.asarray(x)
+        return x.shape == self.shape and bool(np.all(x >= self.low) and np.all(x <= self.high))
+
+    def __repr__(self):
+        return f"Box({self.low.min()}, {self.high.max()}, {self.shape}, {self.dtype})"
+
+
+class Dict(dict):
+    """A dict of spaces (gymnasium.spaces.Dict's contract, for machines without gymnasium)."""
+
+    def sample(self):
+        return {k: v.sample() for k, v in self.items()}
+
+    def contains(self, x) -> bool:
+        return isinstance(x, dict) and x.keys() == self.keys() and all(
+            self[k].contains(x[k]) for k in self)
+
+
+def _box(low, high, shape, dtype=np.float64):
+    if _spaces is not None:
+        return _spaces.Box(low=low, high=high, shape=shape, dtype=dtype)
+    return Box(low, high, shape, dtype)
+
+
+def _dict(spaces: dict):
+    return _spaces.Dict(spaces) if _spaces is not None else Dict(spaces)
+
+
+def holonomic_actions(v_pref: float = 1.0, speeds: int = 5, rotations: int = 16,
+                      stop: bool = True) -> np.ndarray:
+    """CrowdNav's holonomic action set as velocities (n, 2): `speeds` exponentially spaced
+    speeds up to v_pref times `rotations` directions, plus standing still (CrowdNav: 5 x 16 + 1)."""
+    mags = [(math.exp((i + 1) / speeds) - 1) / (math.e - 1) * v_pref for i in range(speeds)]
+    angles = np.linspace(0.0, 2 * math.pi, rotations, endpoint=False)
+    acts = [(0.0, 0.0)] if stop else []
+    acts += [(m * math.cos(a), m * math.sin(a)) for a in angles for m in mags]
+    return np.asarray(acts, dtype=np.float64)
+
+
+_Base = _gym.Env if _gym is not None else object
+
+
+class Env(_Base):
+    """One suite row's episodes, stepped from Python (Gymnasium API).
+
+    Observation (dict of float64 arrays): `robot` (9,) = x, y, vx, vy, goal x, goal y, radius,
+    v_pref, heading (world frame, m, m/s, rad); `humans` (H, 5) = x, y, vx, vy, radius of the
+    people the person sensor sees, in the robot's frame (x towards the goal), padded to the row's
+    human count with `humans_mask` (H,) marking real rows; `lidar` (beams,) ranges in m (only
+    when the row has a range sensor). Action: a velocity (vx, vy) in m/s, world frame, or with
+    `discrete=True` an index into `actions` (CrowdNav's 81 holonomic actions). Reward: the
+    harness's (success 1, collision -0.25, discomfort penalty). `terminated` on success or
+    collision, `truncated` on timeout; `info["status"]` names the outcome.
+    """
+
+    metadata = {"render_modes": []}
+
+    def __init__(self, suite: str, row: str | int = 1, *, set: Sequence[str] = (),
+                 discrete: bool = False, record: bool = False):
+        self._env = _core.Env(str(suite), row, list(set))
+        self._record = record
+        self._episode = -1
+        self._done = True
+        self.discrete = discrete
+        v = self._env.v_pref
+        self.actions = holonomic_actions(v)
+        if discrete:
+            self.action_space = (_spaces.Discrete(len(self.actions)) if _spaces is not None
+                                 else _DiscreteSpace(len(self.actions)))
+        else:
+            self.action_space = _box(-v, v, (2,))
+        obs_spaces = {
+            "robot": _box(-np.inf, np.inf, (9,)),
+            "time": _box(0.0, np.inf, ()),
+            "humans": _box(-np.inf, np.inf, (self._env.humans, 5)),
+            "humans_mask": _box(0, 1, (self._env.humans,), dtype=np.bool_),
+        }
+        probe = self._env.reset(0, False)
+        if "lidar" in probe:
+            obs_spaces["lidar"] = _box(0.0, np.inf, probe["lidar"].shape)
+        self.observation_space = _dict(obs_spaces)
+
+    # -- Gymnasium API -----------------------------------------------------------------------
+    def reset(self, *, seed: int | None = None, options: dict | None = None):
+        if options and "episode" in options:
+            episode = int(options["episode"])
+        elif seed is not None:
+            episode = int(seed)
+        else:
+            episode = self._episode + 1
+        obs = self._env.reset(episode, self._record)
+        self._episode = episode
+        self._done = False
+        return self._obs(obs), {"episode": episode, "layout": self._env.result()["layout"]}
+
+    def step(self, action):
+        if self.discrete:
+            velocity = self.actions[int(action)]
+        else:
+            velocity = np.asarray(action, dtype=np.float64).reshape(-1)
+            if velocity.shape != (2,) or not np.all(np.isfinite(velocity)):
+                raise ValueError(f"action must be a finite velocity (vx, vy), got {action!r}")
+        obs, reward, status, error = self._env.step(float(velocity[0]), float(velocity[1]))
+        terminated = status in ("success", "collision_human", "collision_obstacle", "policy_error")
+        truncated = status == "timeout"
+        info = {"status": status}
+        if error:
+            info["error"] = error
+        if terminated or truncated:
+            info.update(self._env.result())
+        return self._obs(obs), float(reward), terminated, truncated, info
+
+    def close(self):
+        pass
+
+    # -- extras ------------------------------------------------------------------------------
+    @property
+    def episodes(self) -> int:
+        """Episodes the suite runs per row (its `episodes:`)."""
+        return self._env.episodes
+
+    @property
+    def time_step(self) -> float:
+        return self._env.time_step
+
+    def result(self) -> dict:
+        """The current episode's metrics (status, time, path length, ...)."""
+        return self._env.result()
+
+    def positions(self) -> np.ndarray:
+        """Recorded positions (frames, 1 + humans, 2), robot first; needs `record=True`."""
+        return self._env.positions()
+
+    @staticmethod
+    def _obs(obs: dict) -> dict:
+        obs["time"] = np.asarray(obs["time"], dtype=np.float64)
+        return obs
+
+
+class _DiscreteSpace:
+    def __init__(self, n: int, seed=None):
+        self.n = n
+        self.shape = ()
+        self.dtype = np.dtype(np.int64)
+        self._rng = np.random.default_rng(seed)
+
+    def seed(self, seed=None):
+        self._rng = np.random.default_rng(seed)
+
+    def sample(self) -> int:
+        return int(self._rng.integers(self.n))
+
+    def contains(self, x) -> bool:
+        return 0 <= int(x) < self.n
+
+
+def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
+             label: str = "python", out: str = "", episodes: int = -1, fresh: bool = True,
+             set: Sequence[str] = (), progress: bool = False) -> list[dict]:
+    """Runs one suite row with `policy(obs) -> (vx, vy)` as the robot (obs as in Env) and writes
+    the CLI's outputs (table.md, table.csv, episodes.csv, manifest.json) to `out` (default
+    runs/<suite name>/). Returns the table rows as dicts. A policy that raises ends that episode
+    as policy_error with the message. `fresh=False` resumes stored episodes: only safe when the
+    policy has not changed since."""
+    return _core.evaluate(policy, str(suite), row, label, out, episodes, fresh, list(set), progress)
+
+
+def run_suite(suite: str, *, out: str = "", jobs: int = 1, episodes: int = -1, fresh: bool = False,
+              set: Sequence[str] = (), progress: bool = False, dataframe: bool = False):
+    """Runs a suite file as `crowdsim-bench run` does (results in `out`, default runs/<name>/);
+    returns its table as a list of dicts (a pandas DataFrame with dataframe=True)."""
+    rows = _core.run_suite(str(suite), out, jobs, episodes, fresh, list(set), progress)
+    if dataframe:
+        import pandas as pd
+        return pd.DataFrame(rows)
+    return rows
+
+
+__all__ = ["Env", "evaluate", "run_suite", "holonomic_actions", "Box", "Dict", "__version__"]

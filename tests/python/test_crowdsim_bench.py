@@ -1,0 +1,169 @@
+"""The Python package: the Gymnasium contract of Env, episodes equal to the CLI's, evaluate()
+writing the CLI's outputs, run_suite(). Run by ctest (python_package) with the build's
+python/ folder on PYTHONPATH, from the source root."""
+import csv
+import math
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+import crowdsim_bench as cb
+
+QUICK = "suites/quick.yaml"
+
+
+def straight_to_goal(obs, time_step=0.25):
+    """The `linear` plugin's rule (speed v_pref, last step shortened), in Python."""
+    r = obs["robot"]
+    to_goal = r[4:6] - r[0:2]
+    dist = math.sqrt(to_goal[0] * to_goal[0] + to_goal[1] * to_goal[1])
+    if dist < 1e-9:
+        return np.zeros(2)
+    speed = min(r[7], dist / time_step)
+    return to_goal / dist * speed
+
+
+def committed_episodes(row):
+    with open("results/quick/episodes.csv", newline="") as f:
+        return {int(e["episode"]): e for e in csv.DictReader(f) if e["row"] == row}
+
+
+class EnvContract(unittest.TestCase):
+    def setUp(self):
+        self.env = cb.Env(QUICK, row="orca")
+
+    def test_spaces_reset_and_step_follow_gymnasium(self):
+        obs, info = self.env.reset(seed=3)
+        self.assertIsInstance(info, dict)
+        self.assertEqual(set(obs), set(self.env.observation_space.keys()))
+        self.assertTrue(self.env.observation_space.contains(obs))
+        self.assertEqual(obs["robot"].dtype, np.float64)
+        self.assertEqual(obs["humans"].shape, (5, 5))
+        self.assertEqual(obs["humans_mask"].dtype, np.bool_)
+        self.assertEqual(obs["lidar"].shape, (45,))
+        self.assertEqual(self.env.action_space.shape, (2,))
+        action = self.env.action_space.sample()
+        self.assertTrue(self.env.action_space.contains(action))
+        out = self.env.step(action)
+        self.assertEqual(len(out), 5)
+        obs2, reward, terminated, truncated, info = out
+        self.assertIsInstance(reward, float)
+        self.assertIsInstance(terminated, bool)
+        self.assertIsInstance(truncated, bool)
+        self.assertIn("status", info)
+        self.assertAlmostEqual(float(obs2["time"]), 0.25)
+
+    def test_seed_selects_the_suite_episode_and_repeats_exactly(self):
+        a, info_a = self.env.reset(seed=7)
+        b, info_b = self.env.reset(seed=7)
+        self.assertEqual(info_a, info_b)
+        for k in a:
+            np.testing.assert_array_equal(a[k], b[k])
+        c, info_c = self.env.reset(options={"episode": 8})
+        self.assertEqual(info_c["episode"], 8)
+        d, info_d = self.env.reset()  # the next episode
+        self.assertEqual(info_d["episode"], 9)
+        self.assertFalse(np.array_equal(a["robot"], c["robot"]))
+
+    def test_standing_still_times_out_as_truncated_not_terminated(self):
+        self.env.reset(seed=1)
+        steps = 0
+        while True:
+            _, _, terminated, truncated, info = self.env.step([0.0, 0.0])
+            steps += 1
+            if terminated or truncated:
+                break
+        if info["status"] == "timeout":
+            self.assertTrue(truncated)
+            self.assertFalse(terminated)
+            self.assertEqual(steps, 100)  # 25 s at 0.25 s
+        else:  # a human walked into the robot: a collision ends it first
+            self.assertEqual(info["status"], "collision_human")
+            self.assertTrue(terminated)
+            self.assertFalse(truncated)
+        with self.assertRaises(ValueError):
+            self.env.step([0.0, 0.0])  # after the end
+
+    def test_bad_actions_and_rows_are_clear_errors(self):
+        self.env.reset(seed=0)
+        with self.assertRaises(ValueError):
+            self.env.step([float("nan"), 0.0])
+        with self.assertRaises(ValueError):
+            self.env.step([1.0])
+        with self.assertRaises(KeyError):
+            cb.Env(QUICK, row="no_such_row")
+        with self.assertRaises(IndexError):
+            cb.Env(QUICK, row=9)
+        with self.assertRaises(ValueError):
+            cb.Env(QUICK, row=1, set=["humans.count=-1"])
+
+    def test_discrete_actions_are_crowdnavs_holonomic_set(self):
+        env = cb.Env(QUICK, row="orca", discrete=True)
+        self.assertEqual(len(env.actions), 81)
+        self.assertEqual(env.action_space.n, 81)
+        np.testing.assert_allclose(np.linalg.norm(env.actions, axis=1).max(), 1.0)
+        env.reset(seed=0)
+        env.step(80)
+
+
+class SameEpisodesAsTheCli(unittest.TestCase):
+    def test_python_stepped_linear_equals_the_cli_linear_row(self):
+        committed = committed_episodes("linear")
+        env = cb.Env(QUICK, row="linear")
+        for episode in range(8):
+            obs, _ = env.reset(seed=episode)
+            while True:
+                obs, _, terminated, truncated, info = env.step(straight_to_goal(obs))
+                if terminated or truncated:
+                    break
+            cli = committed[episode]
+            self.assertEqual(info["status"], cli["status"], f"episode {episode}")
+            self.assertEqual(info["steps"], int(cli["steps"]), f"episode {episode}")
+            self.assertEqual(f"{info['time']:.2f}", cli["time"])
+            self.assertAlmostEqual(info["path_length"], float(cli["path_length"]), places=6)
+            self.assertAlmostEqual(info["min_human_distance"], float(cli["min_human_distance"]),
+                                   places=6)
+
+
+class Evaluate(unittest.TestCase):
+    def test_a_python_policy_gets_the_clis_outputs_and_numbers(self):
+        with tempfile.TemporaryDirectory() as out:
+            rows = cb.evaluate(straight_to_goal, QUICK, row="linear", label="py_linear", out=out,
+                               episodes=6)
+            self.assertEqual(len(rows), 1)
+            self.assertEqual(rows[0]["label"], "py_linear")
+            self.assertEqual(rows[0]["episodes"], 6)
+            for f in ("table.md", "table.csv", "episodes.csv", "manifest.json"):
+                self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
+            committed = committed_episodes("linear")
+            with open(os.path.join(out, "episodes.csv"), newline="") as f:
+                mine = list(csv.DictReader(f))
+            self.assertEqual(len(mine), 6)
+            for e in mine:
+                cli = committed[int(e["episode"])]
+                for key in ("status", "time", "steps", "path_length", "min_human_distance"):
+                    self.assertEqual(e[key], cli[key], f"episode {e['episode']} {key}")
+
+    def test_a_raising_policy_ends_its_episodes_as_policy_errors(self):
+        def broken(obs):
+            raise RuntimeError("my bug")
+
+        with tempfile.TemporaryDirectory() as out:
+            rows = cb.evaluate(broken, QUICK, row=1, out=out, episodes=2)
+            self.assertEqual(rows[0]["policy_error"], 1.0)
+            with open(os.path.join(out, "episodes.csv"), newline="") as f:
+                errors = [e["error"] for e in csv.DictReader(f)]
+            self.assertTrue(all("my bug" in e for e in errors), errors)
+
+    def test_run_suite_returns_the_table(self):
+        with tempfile.TemporaryDirectory() as out:
+            rows = cb.run_suite(QUICK, out=out, episodes=3)
+            self.assertEqual([r["label"] for r in rows], ["linear", "orca"])
+            self.assertTrue(all(r["episodes"] == 3 for r in rows))
+            self.assertTrue(all(0.0 <= r["success"] <= 1.0 for r in rows))
+
+
+if __name__ == "__main__":
+    unittest.main()
