@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 SUITE ?= suites/quick.yaml
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build run test bench train-all gallery python clean
+.PHONY: all deps configure build run test bench train-all gallery python package clean
 
 all: build
 
@@ -42,6 +42,11 @@ train-all: build
 # Builds the Python package crowdsim_bench into $(BUILD)/python (part of `make build` too).
 python: build
 	@echo "crowdsim_bench is in $(BUILD)/python: PYTHONPATH=$(BUILD)/python python3 -c 'import crowdsim_bench'"
+
+# A Debian package of the install (CLI, core library and SDK headers, plugins, Python package,
+# worlds, suites, models) under /usr: $(BUILD)/crowdsim-bench_VERSION_ARCH.deb.
+package: build
+	cd $(BUILD) && cpack -G DEB
 
 # Redraws docs/gallery/*.png and the README's docs/episode.png from the committed results.
 gallery: build

@@ -35,4 +35,16 @@ CROWDSIM_PLUGIN_PATH="$work/example" "$work/prefix/bin/crowdsim-bench" run \
   { cat "$work/run.log"; fail "run the example suite"; }
 grep -q "^1,yielding_straight,person," "$work/run/table.csv" || fail "no yielding_straight row: $(cat "$work/run/table.csv")"
 grep -q ",0.0000,5," "$work/run/table.csv" || fail "policy errors in $(cat "$work/run/table.csv")"
+# The installed Python package (when built): imported from the prefix, it runs with the
+# installed core library and plugins.
+if [[ -d "$build/python/crowdsim_bench" ]]; then
+  py=$(sed -n 's/^CROWDSIM_PYTHON_EXECUTABLE:INTERNAL=//p' "$build/CMakeCache.txt")
+  PYTHONPATH="$work/prefix/lib/python3/dist-packages" "${py:-python3}" -c "
+import crowdsim_bench as cb
+assert cb.__file__.startswith('$work/prefix'), cb.__file__
+env = cb.Env('$source/suites/quick.yaml', row='orca')
+obs, info = env.reset(seed=0)
+env.step([0.0, 0.0])
+" || fail "the installed Python package does not run"
+fi
 echo "SDK install, example build and run: ok"
