@@ -18,7 +18,10 @@ constexpr const char* kSuffix = ".so";
 /// the plugins and data are found relative to it, never through paths of the build machine.
 std::optional<fs::path> InstalledLibDir() {
   std::error_code ec;
-  const fs::path lib = fs::path(boost::dll::this_line_location().string()).parent_path();
+  // Canonical: a library found through an RPATH such as $ORIGIN/../../.. (the Python module's)
+  // has '..' in its path, which parent_path() would strip lexically, not as folders.
+  const fs::path lib =
+      fs::weakly_canonical(fs::path(boost::dll::this_line_location().string()), ec).parent_path();
   if (fs::is_directory(lib / "crowdsim-bench" / "plugins", ec)) return lib;
   return std::nullopt;
 }

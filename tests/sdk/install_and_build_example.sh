@@ -26,7 +26,7 @@ cmake --build "$work/example" > "$work/build.log" 2>&1 || { cat "$work/build.log
 
 # The installed CLI searches its own plugin folder, not the build tree's.
 plugins=$(cd "$work" && "$work/prefix/bin/crowdsim-bench" list-plugins)
-grep -q "plugin folders: $work/prefix/bin/../lib/crowdsim-bench/plugins" <<< "$plugins" ||
+grep -q "plugin folders: $(cd "$work/prefix/lib" && pwd -P)/crowdsim-bench/plugins" <<< "$plugins" ||
   fail "the installed CLI does not search its own plugins: $(head -1 <<< "$plugins")"
 
 cd "$work"
