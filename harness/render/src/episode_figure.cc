@@ -23,22 +23,6 @@ std::string Format(const char* fmt, double x) {
   return buf;
 }
 
-Style Stroke(const Color& c, double width, bool dashed = false) {
-  Style s;
-  s.stroke = c;
-  s.stroke_width = width;
-  s.dashed = dashed;
-  return s;
-}
-
-Style Filled(const Color& fill, std::optional<Color> stroke = std::nullopt, double width = 1.0) {
-  Style s;
-  s.fill = fill;
-  s.stroke = stroke;
-  s.stroke_width = width;
-  return s;
-}
-
 void Grow(Rect* r, const Vec2& p, double pad) {
   r->min = r->min.cwiseMin(p - Vec2(pad, pad));
   r->max = r->max.cwiseMax(p + Vec2(pad, pad));

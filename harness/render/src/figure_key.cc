@@ -22,22 +22,6 @@ double TextWidth(const std::string& s) {
   return chars * kFont * kCharWidth;
 }
 
-Style Stroke(const Color& c, double width, bool dashed = false) {
-  Style s;
-  s.stroke = c;
-  s.stroke_width = width;
-  s.dashed = dashed;
-  return s;
-}
-
-Style Filled(const Color& fill, const Color& stroke, double width) {
-  Style s;
-  s.fill = fill;
-  s.stroke = stroke;
-  s.stroke_width = width;
-  return s;
-}
-
 // The mark of an entry centred at c.
 void DrawMark(Drawing* d, KeyMark m, const Vec2& c) {
   const Color human = palette::Human(0);

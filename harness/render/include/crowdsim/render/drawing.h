@@ -32,6 +32,24 @@ struct Style {
   bool dashed = false;
 };
 
+/// An outline of `width` px (dashed or solid), no fill.
+inline Style Stroke(const Color& c, double width, bool dashed = false) {
+  Style s;
+  s.stroke = c;
+  s.stroke_width = width;
+  s.dashed = dashed;
+  return s;
+}
+
+/// A filled shape, optionally outlined.
+inline Style Filled(const Color& fill, std::optional<Color> stroke = std::nullopt, double width = 1.0) {
+  Style s;
+  s.fill = fill;
+  s.stroke = stroke;
+  s.stroke_width = width;
+  return s;
+}
+
 /// An 8-bit RGBA raster (row 0 at the top), e.g. a floor plan's navigable mask.
 struct RgbaImage {
   int width = 0;
