@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs every command of the README's shell blocks, on small budgets, so the README cannot drift
-# from the program (issue: the README's own figure command had stopped working).
+# Runs every command of the README's shell blocks, on small budgets, and the script that redraws
+# its figures, so the README cannot drift from the program (its own figure command had stopped
+# working).
 #
 #   tests/docs/readme_commands_test.sh BUILD_DIR SOURCE_DIR [PYTHON]
 #
@@ -61,6 +62,19 @@ for c in "${commands[@]}"; do
     failed=$((failed + 1))
   fi
   ran=$((ran + 1))
+done
+# The README's picture and the gallery are redrawn from the committed results by a script:
+# it must run too (into the scratch folder).
+echo "RUN  scripts/make_gallery.sh"
+if ! out=$(cd "$src" && timeout 300 bash scripts/make_gallery.sh --bin "$build/bin/crowdsim-bench" --out "$work/docs" 2>&1); then
+  echo "FAIL: scripts/make_gallery.sh"
+  echo "$out" | tail -n 15 | sed 's/^/    /'
+  failed=$((failed + 1))
+fi
+ran=$((ran + 1))
+for f in episode.png gallery/success.png gallery/collision_human.png gallery/collision_obstacle.png \
+         gallery/timeout.png gallery/floorplan.png gallery/lidar.png gallery/compare.png; do
+  [[ -s "$work/docs/$f" ]] || { echo "FAIL: make_gallery.sh wrote no docs/$f"; failed=$((failed + 1)); }
 done
 echo "$ran README commands run, $failed failed"
 [[ $failed == 0 ]]
