@@ -189,6 +189,23 @@ class Env {
   int episode_index_ = -1;
 };
 
+// RunSuite with the GIL released (a Python policy's Decide takes it back for each decision);
+// its errors become ValueError.
+RunSummary RunWithoutGil(const Suite& suite, PluginRegistry& registry, const RunOptions& options) {
+  std::string error;
+  RunSummary summary;
+  {
+    py::gil_scoped_release release;
+    try {
+      summary = RunSuite(suite, registry, options);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  if (!error.empty()) throw py::value_error(error);
+  return summary;
+}
+
 py::list Evaluate(py::object policy, const std::string& suite_path, const py::object& row,
                   const std::string& label, const std::string& out, int episodes, bool fresh,
                   const std::vector<std::string>& set, bool progress) {
@@ -206,16 +223,7 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
   options.fresh = fresh;
   options.progress = progress;
   SetNextPythonPolicy(SensorNames(row_spec), row_spec.humans.count, policy.ptr());
-  RunSummary summary;
-  {
-    py::gil_scoped_release release;  // the worker takes it back for each decision
-    try {
-      summary = RunSuite(suite, registry, options);
-    } catch (const std::exception& e) {
-      py::gil_scoped_acquire gil;
-      throw py::value_error(e.what());
-    }
-  }
+  const RunSummary summary = RunWithoutGil(suite, registry, options);
   SetNextPythonPolicy({}, 0, nullptr);
   return Rows(summary);
 }
@@ -230,16 +238,7 @@ py::list RunSuiteFile(const std::string& suite_path, const std::string& out, int
   options.episodes = episodes;
   options.fresh = fresh;
   options.progress = progress;
-  RunSummary summary;
-  {
-    py::gil_scoped_release release;
-    try {
-      summary = RunSuite(suite, registry, options);
-    } catch (const std::exception& e) {
-      py::gil_scoped_acquire gil;
-      throw py::value_error(e.what());
-    }
-  }
+  const RunSummary summary = RunWithoutGil(suite, registry, options);
   return Rows(summary);
 }
 
