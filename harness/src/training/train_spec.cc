@@ -70,6 +70,25 @@ void ReadHumans(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpec*
   }
 }
 
+// A `training:` key whose value is one of a few words (store_timeouts, exploration): sets
+// *out, or reports "expected a, b or c, got 'x'".
+template <typename E>
+void ReadChoice(Reader& r, const YAML::Node& training, const std::string& key,
+                const std::vector<std::pair<std::string, E>>& choices, E* out) {
+  const YAML::Node node = training[key];
+  if (!Present(node)) return;
+  const std::string v = node.IsScalar() ? node.Scalar() : "";
+  std::string expected;
+  for (size_t i = 0; i < choices.size(); ++i) {
+    if (choices[i].first == v) {
+      *out = choices[i].second;
+      return;
+    }
+    expected += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].first;
+  }
+  r.Error(node, "training." + key, "expected " + expected + ", got " + suite_internal::Scalar(node));
+}
+
 void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpec* s) {
   TrainingSettings& t = s->training;
   struct IntField {
@@ -118,30 +137,14 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
         if (auto v = r.Number(n[f.key], Reader::Child("training", f.key), f.lo, f.hi)) *f.target = *v;
       }
     }
-    if (const YAML::Node st = n["store_timeouts"]; Present(st)) {
-      const std::string v = st.IsScalar() ? st.Scalar() : "";
-      if (v == "off") {
-        t.store_timeouts = StoreTimeouts::kOff;
-      } else if (v == "terminal") {
-        t.store_timeouts = StoreTimeouts::kTerminal;
-      } else if (v == "bootstrap") {
-        t.store_timeouts = StoreTimeouts::kBootstrap;
-      } else {
-        r.Error(st, "training.store_timeouts",
-                "expected off, terminal or bootstrap, got " + suite_internal::Scalar(st));
-      }
-    }
-    if (const YAML::Node ex = n["exploration"]; Present(ex)) {
-      const std::string v = ex.IsScalar() ? ex.Scalar() : "";
-      if (v == "uniform") {
-        t.exploration = ExplorationRule::kUniform;
-      } else if (v == "collision_free") {
-        t.exploration = ExplorationRule::kCollisionFree;
-      } else {
-        r.Error(ex, "training.exploration",
-                "expected uniform or collision_free, got " + suite_internal::Scalar(ex));
-      }
-    }
+    ReadChoice(r, n, "store_timeouts",
+               {{"off", StoreTimeouts::kOff}, {"terminal", StoreTimeouts::kTerminal},
+                {"bootstrap", StoreTimeouts::kBootstrap}},
+               &t.store_timeouts);
+    ReadChoice(r, n, "exploration",
+               {{"uniform", ExplorationRule::kUniform},
+                {"collision_free", ExplorationRule::kCollisionFree}},
+               &t.exploration);
   }
   const bool named = map && Present(n["il_policy"]);
   const YAML::Node teacher = named ? n["il_policy"] : YAML::Node("orca");
