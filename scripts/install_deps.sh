@@ -16,7 +16,7 @@ packages=(
   python3-dev python3-pybind11 python3-numpy
 )
 if [[ "${1:-}" != "--no-torch" ]]; then
-  packages+=(libtorch-dev libopenblas0-pthread)
+  packages+=(libtorch-dev libopenblas0-pthread zlib1g-dev)
 fi
 
 missing=()

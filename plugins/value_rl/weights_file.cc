@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+#include "zip_crc_check.h"
+
 namespace crowdsim::value_rl {
 namespace fs = std::filesystem;
 
@@ -45,6 +47,12 @@ void LoadWeightsFile(const WeightsMeta& expected, const fs::path& file, ValueNet
   if (!fs::exists(file)) {
     throw std::runtime_error("weights file '" + file.string() +
                              "' does not exist (train one with `crowdsim-bench train`)");
+  }
+  if (const std::optional<ZipDamage> damage = FindZipDamage(file)) {
+    throw std::runtime_error(
+        "weights file '" + file.string() + "' is damaged: " +
+        (damage->entry.empty() ? "" : "entry '" + damage->entry + "': ") + damage->problem +
+        "; train it again (`crowdsim-bench train`) or download it again");
   }
   torch::serialize::InputArchive archive;
   try {

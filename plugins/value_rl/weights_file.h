@@ -27,7 +27,8 @@ void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta,
                      const std::filesystem::path& file);
 
 /// Loads into `net`; throws std::runtime_error naming the file, the expected and the found
-/// values when the metadata differ, or what else is wrong with the file.
+/// values when the metadata differ, the entry when the file is damaged (CRC-32 or size of an
+/// entry wrong, truncated), or what else is wrong with the file.
 void LoadWeightsFile(const WeightsMeta& expected, const std::filesystem::path& file,
                      ValueNetwork* net);
 

@@ -1,6 +1,8 @@
 // Weights files: an identical round trip, and a clear error for weights of another model,
-// sensor set or action count.
+// sensor set or action count, and for a damaged file.
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "state_encoding.h"
 #include "temp_dir.h"
@@ -113,6 +115,44 @@ TEST(WeightsFileTest, MismatchesAreClearErrors) {
   ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), dir.path() / "missing.pt", "does not exist");
   const auto junk = dir.Write("junk.pt", "not a torch archive");
   ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), junk, "not a libtorch archive");
+}
+
+// Flips one byte inside the data of the archive entry whose name ends with `suffix` (found
+// through its local header: signature, 26 bytes of fields, name and extra lengths, name, extra)
+// and returns the entry's name.
+std::string FlipDataByte(const std::filesystem::path& file, const std::string& suffix) {
+  std::string bytes = testing::ReadText(file);
+  const std::string signature = "PK\x03\x04";
+  for (std::size_t at = bytes.find(signature); at != std::string::npos;
+       at = bytes.find(signature, at + 1)) {
+    const auto u16 = [&](std::size_t p) {
+      return static_cast<unsigned char>(bytes[p]) | static_cast<unsigned char>(bytes[p + 1]) << 8;
+    };
+    const std::string name = bytes.substr(at + 30, u16(at + 26));
+    if (!name.ends_with(suffix)) continue;
+    bytes[at + 30 + name.size() + u16(at + 28) + 5] ^= 0x10;
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+    return name;
+  }
+  ADD_FAILURE() << "no entry ending with " << suffix << " in " << file;
+  return "";
+}
+
+TEST(WeightsFileTest, DamagedFilesAreClearErrors) {
+  testing::TempDir dir;
+  const ValueRlConfig c = Config(Model::kCadrl, SensorSet::kPerson);
+  const auto flipped = dir.path() / "flipped.pt";
+  ValuePolicy(c).SaveWeights(flipped);
+  const std::string entry = FlipDataByte(flipped, "/data/0");
+  ASSERT_FALSE(entry.empty());
+  ExpectRejected(c, flipped, "is damaged: entry '" + entry + "': its CRC-32 is ");
+  ExpectRejected(c, flipped, "train it again (`crowdsim-bench train`) or download it again");
+
+  const auto truncated = dir.path() / "truncated.pt";
+  ValuePolicy(c).SaveWeights(truncated);
+  const std::string whole = testing::ReadText(truncated);
+  std::ofstream(truncated, std::ios::binary | std::ios::trunc) << whole.substr(0, whole.size() / 2);
+  ExpectRejected(c, truncated, "is damaged: the archive's end record is missing");
 }
 
 }  // namespace
