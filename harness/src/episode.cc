@@ -209,7 +209,9 @@ void Episode::FillRobotObservation() {
 }
 
 const Observation& Episode::ObserveRobot() {
-  FillRobotObservation();
+  if (!robot_obs_current_) FillRobotObservation();
+  robot_obs_.lookahead = nullptr;
+  robot_obs_current_ = true;
   return robot_obs_;
 }
 
@@ -219,7 +221,10 @@ StepInfo Episode::Step() {
   const double dt = sim_.time_step;
   try {
     DecideHumans();
-    FillRobotObservation();
+    // Sensing sees positions, velocities and radii only, which deciding does not change: an
+    // observation made by ObserveRobot since the last move is this step's (no second scan).
+    if (!robot_obs_current_) FillRobotObservation();
+    robot_obs_current_ = false;  // the move below changes what the robot would see
     if (robot_needs_.lookahead) {
       lookahead_->Prepare();
       robot_obs_.lookahead = lookahead_.get();

@@ -99,7 +99,8 @@ class Episode {
   const Observation& last_robot_observation() const { return robot_obs_; }
   /// The robot's observation of the current state, made now without a decision and without
   /// lookahead (e.g. the state a timed-out episode stopped in, which a learner bootstraps from).
-  /// It replaces last_robot_observation().
+  /// It replaces last_robot_observation(), and the next Step() decides on it instead of sensing
+  /// the same state again (Python's Env observes after every step).
   const Observation& ObserveRobot();
 
  private:
@@ -129,6 +130,7 @@ class Episode {
   std::vector<AgentState> human_view_;   // agents humans see (humans + robot if visible)
   AgentIndex human_index_;
   Observation robot_obs_;
+  bool robot_obs_current_ = false;  ///< robot_obs_ shows the current state (ObserveRobot)
   Observation human_obs_;
   std::unique_ptr<StepLookahead> lookahead_;
   double decision_time_total_us_ = 0.0;
