@@ -32,6 +32,8 @@ test: build
 # Runs every Google Benchmark (one core each, one after another).
 bench: build
 	@for b in $(BUILD)/bench/*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
+	@if [ -d $(BUILD)/python/crowdsim_bench ]; then echo "== tests/bench/python/env_bench.py"; \
+	  PYTHONPATH=$(BUILD)/python /usr/bin/python3 tests/bench/python/env_bench.py; fi
 
 # Trains every file under suites/train/ that has no finished training yet, TRAIN_JOBS at a time
 # (nice'd, one core each), resuming interrupted ones: hours of work, see docs/training.md.

@@ -7,6 +7,7 @@
 
     cb.evaluate(my_policy, "suites/quick.yaml", row="orca", out="runs/mine")  # the CLI's outputs
     cb.run_suite("suites/quick.yaml")                   # the table as a list of dicts
+    venv = cb.VectorEnv("suites/quick.yaml", row="orca", num_envs=16)  # batches, stepped in C++
 
 Env follows the Gymnasium API (reset/step/action_space/observation_space); it subclasses
 gymnasium.Env when gymnasium is installed and works the same without it. Episodes are those of
@@ -79,6 +80,10 @@ def _dict(spaces: dict):
     return _spaces.Dict(spaces) if _spaces is not None else Dict(spaces)
 
 
+def _discrete_space(n: int):
+    return _spaces.Discrete(n) if _spaces is not None else _DiscreteSpace(n)
+
+
 def holonomic_actions(v_pref: float = 1.0, speeds: int = 5, rotations: int = 16,
                       stop: bool = True) -> np.ndarray:
     """CrowdNav's holonomic action set as velocities (n, 2): `speeds` exponentially spaced
@@ -106,20 +111,23 @@ class Env(_Base):
     collision, `truncated` on timeout; `info["status"]` names the outcome.
     """
 
-    metadata = {"render_modes": []}
+    metadata = {"render_modes": ["rgb_array"], "render_fps": 4}
 
     def __init__(self, suite: str, row: str | int = 1, *, set: Sequence[str] = (),
-                 discrete: bool = False, record: bool = False):
+                 discrete: bool = False, record: bool = False, render_mode: str | None = None):
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f"render_mode must be None or 'rgb_array', got {render_mode!r}")
         self._env = _core.Env(str(suite), row, list(set))
-        self._record = record
+        self.render_mode = render_mode
+        self._record = record or render_mode == "rgb_array"
+        self.metadata = dict(self.metadata, render_fps=round(1.0 / self._env.time_step))
         self._episode = -1
         self._done = True
         self.discrete = discrete
         v = self._env.v_pref
         self.actions = holonomic_actions(v)
         if discrete:
-            self.action_space = (_spaces.Discrete(len(self.actions)) if _spaces is not None
-                                 else _DiscreteSpace(len(self.actions)))
+            self.action_space = _discrete_space(len(self.actions))
         else:
             self.action_space = _box(-v, v, (2,))
         obs_spaces = {
@@ -162,6 +170,13 @@ class Env(_Base):
         if terminated or truncated:
             info.update(self._env.result())
         return self._obs(obs), float(reward), terminated, truncated, info
+
+    def render(self):
+        """With render_mode="rgb_array": the episode so far as an (height, width, 3) uint8
+        array, drawn as the CLI's animation frames are (map, trails, discs, clock, key)."""
+        if self.render_mode != "rgb_array":
+            return None
+        return self._env.render(1.0)
 
     def close(self):
         pass
@@ -229,4 +244,6 @@ def run_suite(suite: str, *, out: str = "", jobs: int = 1, episodes: int = -1, f
     return rows
 
 
-__all__ = ["Env", "evaluate", "run_suite", "holonomic_actions", "Box", "Dict", "__version__"]
+from .vector import STATUS_NAMES, VectorEnv  # noqa: E402  (uses the helpers above)
+
+__all__ = ["Env", "VectorEnv", "STATUS_NAMES", "evaluate", "run_suite", "holonomic_actions", "Box", "Dict", "__version__"]

@@ -6,6 +6,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -14,62 +16,20 @@
 
 #include "crowdsim/episode.h"
 #include "crowdsim/plugin_registry.h"
-#include "crowdsim/row_instance.h"
 #include "crowdsim/runner.h"
 #include "crowdsim/suite.h"
 #include "crowdsim/version.h"
+#include "observation_arrays.h"
 #include "python_policy.h"
+#include "python_row.h"
+#include "render_frame.h"
+#include "row_episodes.h"
+#include "vector_env.h"
 
 namespace py = pybind11;
 
 namespace crowdsim::python {
 namespace {
-
-Suite Load(const std::string& path, PluginRegistry& registry, const std::vector<std::string>& set) {
-  SuiteLoadResult r = LoadSuite(path, registry, set);
-  if (!r.suite) {
-    std::string msg;
-    for (const auto& e : r.errors) msg += (msg.empty() ? "" : "\n") + e.Format();
-    throw py::value_error(msg);
-  }
-  return std::move(*r.suite);
-}
-
-size_t RowIndex(const Suite& suite, const py::object& row) {
-  if (py::isinstance<py::int_>(row)) {
-    const long k = row.cast<long>();  // 1-based, as in the tables and `render --row`
-    if (k < 1 || k > static_cast<long>(suite.rows.size()))
-      throw py::index_error("row " + std::to_string(k) + " does not exist: the suite has rows 1.." +
-                            std::to_string(suite.rows.size()));
-    return static_cast<size_t>(k - 1);
-  }
-  const std::string label = row.cast<std::string>();
-  std::string labels;
-  for (size_t i = 0; i < suite.rows.size(); ++i) {
-    if (suite.rows[i].label == label) return i;
-    labels += (labels.empty() ? "" : ", ") + suite.rows[i].label;
-  }
-  throw py::key_error("no row '" + label + "' in the suite (rows: " + labels + ")");
-}
-
-std::vector<std::string> SensorNames(const RowSpec& row) {
-  std::vector<std::string> names;
-  for (const PluginUse& s : row.sensors) names.push_back(s.loaded->descriptor->name);
-  return names;
-}
-
-// The row with the Python policy in place of its robot policy; the marker in the canonical text
-// keeps its stored results apart from the original row's.
-RowSpec WithPythonRobot(const RowSpec& row, const std::string& label) {
-  RowSpec out = row;
-  out.policy = PluginUse{"python", &PythonPolicyPlugin(), Params{}};
-  out.label = label;
-  out.reference.reset();
-  for (auto& [column, value] : out.info)
-    if (column == "model") value = label;  // the row's model column names the Python policy
-  out.canonical += "\nrobot: python policy '" + label + "'";
-  return out;
-}
 
 py::dict RowDict(const TableRow& r) {
   const RowMetrics& m = r.metrics;
@@ -101,43 +61,28 @@ py::list Rows(const RunSummary& s) {
 class Env {
  public:
   Env(const std::string& suite_path, const py::object& row, const std::vector<std::string>& set)
-      : suite_(Load(suite_path, registry_, set)) {
-    const RowSpec& original = suite_.rows[RowIndex(suite_, row)];
-    row_ = WithPythonRobot(original, original.label);
-    world_ = registry_.MakeWorld(*row_.world.loaded, row_.world.params);
-    SetNextPythonPolicy(SensorNames(row_), row_.humans.count, nullptr);
-    instance_ = std::make_unique<RowInstance>(row_, registry_);
-    policy_ = dynamic_cast<PythonPolicy*>(&instance_->robot());
-  }
+      : row_(std::make_unique<PythonRow>(suite_path, row, set)),
+        episodes_(row_->suite, row_->row, row_->registry) {}
 
   py::dict Reset(int episode, bool record) {
-    if (episode < 0) throw py::value_error("episode must be >= 0");
-    episode_.reset();
-    scenario_ = world_->Make(MakeEpisodeRequest(suite_, row_, *world_, episode));
     try {
-      CheckScenario(scenario_, suite_.sim);
+      return ObservationDict(episodes_.Reset(episode, record), humans());
     } catch (const std::invalid_argument& e) {
-      throw py::value_error(std::string("episode ") + std::to_string(episode) + ": " + e.what());
+      throw py::value_error(e.what());
     }
-    episode_ = std::make_unique<Episode>(scenario_, suite_.sim,
-                                         instance_->Agents(scenario_.humans.size()), record);
-    episode_index_ = episode;
-    return ObservationDict(episode_->ObserveRobot(), row_.humans.count);
   }
 
   py::tuple Step(double vx, double vy) {
-    if (!episode_) throw py::value_error("step() before reset()");
-    if (episode_->done()) throw py::value_error("step() after the episode ended: call reset()");
-    policy_->SetNextVelocity(Vec2(vx, vy));
-    const StepInfo info = episode_->Step();
-    const EpisodeResult& r = episode_->result();
-    py::dict obs = ObservationDict(episode_->ObserveRobot(), row_.humans.count);
+    if (!episodes_.started()) throw py::value_error("step() before reset()");
+    if (episodes_.episode().done()) throw py::value_error("step() after the episode ended: call reset()");
+    const StepInfo info = episodes_.Step(Vec2(vx, vy));
+    const EpisodeResult& r = episodes_.episode().result();
+    py::dict obs = ObservationDict(episodes_.observation(), humans());
     return py::make_tuple(obs, info.reward, EpisodeStatusName(r.status), r.error);
   }
 
   py::dict Result() const {
-    if (!episode_) throw py::value_error("no episode yet: call reset()");
-    const EpisodeResult& r = episode_->result();
+    const EpisodeResult& r = Current().result();
     py::dict d;
     d["status"] = EpisodeStatusName(r.status);
     d["time"] = r.time;
@@ -146,15 +91,14 @@ class Env {
     d["min_human_distance"] = r.min_human_distance;
     d["discounted_return"] = r.discounted_return;
     d["danger_steps"] = r.danger_steps;
-    d["episode"] = episode_index_;
-    d["layout"] = scenario_.layout;
+    d["episode"] = episodes_.episode_index();
+    d["layout"] = episodes_.scenario().layout;
     return d;
   }
 
   /// Robot and human positions of the recorded frames: (frames, 1 + humans, 2).
   py::array_t<double> Positions() const {
-    if (!episode_) throw py::value_error("no episode yet: call reset()");
-    const auto& tr = episode_->result().trajectory;
+    const auto& tr = Current().result().trajectory;
     const py::ssize_t agents = tr.empty() ? 1 : 1 + static_cast<py::ssize_t>(tr[0].humans.size());
     py::array_t<double> out({static_cast<py::ssize_t>(tr.size()), agents, py::ssize_t{2}});
     auto a = out.mutable_unchecked<3>();
@@ -169,25 +113,57 @@ class Env {
     return out;
   }
 
-  int episodes() const { return suite_.episodes; }
-  double time_step() const { return suite_.sim.time_step; }
-  double time_limit() const { return suite_.sim.time_limit; }
-  double v_pref() const { return suite_.sim.robot_v_pref; }
-  int humans() const { return row_.humans.count; }
-  std::string label() const { return row_.label; }
-  std::vector<std::string> sensors() const { return SensorNames(row_); }
+  /// The episode so far as the CLI's animation frame draws it: (height, width, 3) uint8.
+  py::array_t<std::uint8_t> Render(double scale) const {
+    const Episode& episode = Current();
+    if (episode.result().trajectory.empty())
+      throw py::value_error("render() needs a recorded episode: Env(..., render_mode=\"rgb_array\")");
+    const std::string title = row_->suite.name + " · " + row_->row.label + " · episode " +
+                              std::to_string(episodes_.episode_index());
+    const render::RgbImage image = RenderEpisodeFrame(episodes_.scenario(), episode.result(), title, scale);
+    py::array_t<std::uint8_t> out({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
+    std::copy(image.pixels.begin(), image.pixels.end(), out.mutable_data());
+    return out;
+  }
+
+  int episodes() const { return row_->suite.episodes; }
+  double time_step() const { return row_->suite.sim.time_step; }
+  double time_limit() const { return row_->suite.sim.time_limit; }
+  double v_pref() const { return row_->suite.sim.robot_v_pref; }
+  int humans() const { return row_->row.humans.count; }
+  std::string label() const { return row_->row.label; }
+  std::vector<std::string> sensors() const { return SensorNames(row_->row); }
 
  private:
-  PluginRegistry registry_;
-  Suite suite_;
-  RowSpec row_;
-  std::shared_ptr<WorldSource> world_;
-  std::unique_ptr<RowInstance> instance_;
-  PythonPolicy* policy_ = nullptr;
-  Scenario scenario_;
-  std::unique_ptr<Episode> episode_;
-  int episode_index_ = -1;
+  const Episode& Current() const {
+    if (!episodes_.started()) throw py::value_error("no episode yet: call reset()");
+    return episodes_.episode();
+  }
+
+  std::unique_ptr<PythonRow> row_;
+  RowEpisodes episodes_;
 };
+
+// For the step-overhead benchmark (tests/bench/python): `episodes` episodes of a row stepped in
+// C++ with one fixed velocity, as Env does it but without Python: (steps, seconds).
+py::tuple TimeFixedVelocitySteps(const std::string& suite_path, const py::object& row,
+                                 const std::vector<std::string>& set, int episodes, double vx,
+                                 double vy) {
+  PythonRow python_row(suite_path, row, set);
+  RowEpisodes env(python_row.suite, python_row.row, python_row.registry);
+  long steps = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int k = 0; k < episodes; ++k) {
+    env.Reset(k, false);
+    while (!env.episode().done()) {
+      env.Step(Vec2(vx, vy));
+      env.observation();
+      ++steps;
+    }
+  }
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - t0;
+  return py::make_tuple(steps, wall.count());
+}
 
 // RunSuite with the GIL released (a Python policy's Decide takes it back for each decision);
 // its errors become ValueError.
@@ -211,7 +187,7 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
                   const std::vector<std::string>& set, bool progress) {
   if (!PyCallable_Check(policy.ptr())) throw py::type_error("policy must be callable: policy(obs) -> (vx, vy)");
   PluginRegistry registry;
-  Suite suite = Load(suite_path, registry, set);
+  Suite suite = LoadSuiteOrThrow(suite_path, registry, set);
   const RowSpec row_spec = WithPythonRobot(suite.rows[RowIndex(suite, row)], label);
   suite.rows = {row_spec};
   suite.summaries.clear();
@@ -231,7 +207,7 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
 py::list RunSuiteFile(const std::string& suite_path, const std::string& out, int jobs, int episodes,
                       bool fresh, const std::vector<std::string>& set, bool progress) {
   PluginRegistry registry;
-  const Suite suite = Load(suite_path, registry, set);
+  const Suite suite = LoadSuiteOrThrow(suite_path, registry, set);
   RunOptions options;
   options.out_dir = out.empty() ? DefaultRunDir(suite) : std::filesystem::path(out);
   options.jobs = jobs;
@@ -256,6 +232,7 @@ PYBIND11_MODULE(_core, m) {
       .def("step", &Env::Step, py::arg("vx"), py::arg("vy"))
       .def("result", &Env::Result)
       .def("positions", &Env::Positions)
+      .def("render", &Env::Render, py::arg("scale") = 1.0)
       .def_property_readonly("episodes", &Env::episodes)
       .def_property_readonly("time_step", &Env::time_step)
       .def_property_readonly("time_limit", &Env::time_limit)
@@ -263,6 +240,26 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("humans", &Env::humans)
       .def_property_readonly("label", &Env::label)
       .def_property_readonly("sensors", &Env::sensors);
+  py::class_<VectorEnv>(m, "VectorEnv")
+      .def(py::init([](const std::string& suite, const py::object& row, int num_envs,
+                       const std::vector<std::string>& set, int threads) {
+             return std::make_unique<VectorEnv>(std::make_unique<PythonRow>(suite, row, set),
+                                                num_envs, threads);
+           }),
+           py::arg("suite"), py::arg("row"), py::arg("num_envs"),
+           py::arg("set") = std::vector<std::string>{}, py::arg("threads") = 1)
+      .def("reset", &VectorEnv::Reset, py::arg("first"))
+      .def("step", &VectorEnv::Step, py::arg("actions"))
+      .def_property_readonly("num_envs", &VectorEnv::num_envs)
+      .def_property_readonly("threads", &VectorEnv::threads)
+      .def_property_readonly("humans", &VectorEnv::humans)
+      .def_property_readonly("beams", &VectorEnv::beams);
+  py::list status_names;
+  for (int s = 0; s <= static_cast<int>(crowdsim::EpisodeStatus::kPolicyError); ++s)
+    status_names.append(crowdsim::EpisodeStatusName(static_cast<crowdsim::EpisodeStatus>(s)));
+  m.attr("STATUS_NAMES") = status_names;
+  m.def("_time_fixed_velocity_steps", &TimeFixedVelocitySteps, py::arg("suite"), py::arg("row"),
+        py::arg("set"), py::arg("episodes"), py::arg("vx"), py::arg("vy"));
   m.def("evaluate", &Evaluate, py::arg("policy"), py::arg("suite"), py::arg("row"),
         py::arg("label"), py::arg("out"), py::arg("episodes"), py::arg("fresh"), py::arg("set"),
         py::arg("progress"));

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "crowdsim/plugin_abi.h"
+#include "observation_arrays.h"
 
 namespace py = pybind11;
 
@@ -78,51 +79,6 @@ const LoadedPlugin& PythonPolicyPlugin() {
 
 void SetNextPythonPolicy(std::vector<std::string> sensors, int max_humans, PyObject* callable) {
   Next() = NextPolicy{std::move(sensors), max_humans, callable};
-}
-
-py::dict ObservationDict(const Observation& obs, int max_humans) {
-  py::dict d;
-  const AgentState& s = obs.self;
-  py::array_t<double> robot(9);
-  double* r = robot.mutable_data();
-  const double values[9] = {s.position.x(), s.position.y(), s.velocity.x(), s.velocity.y(),
-                            s.goal.x(),     s.goal.y(),     s.radius,       s.v_pref,
-                            s.heading};
-  std::copy(values, values + 9, r);
-  d["robot"] = robot;
-  d["time"] = obs.time;
-
-  // Humans seen by the person sensors, in the robot's frame (x towards the goal), padded.
-  std::vector<const PersonObservation*> people;
-  for (const SensorReading& reading : obs.readings)
-    for (const PersonObservation& p : reading.people) people.push_back(&p);
-  const int rows = std::max<int>(max_humans, static_cast<int>(people.size()));
-  py::array_t<double> humans({rows, 5});
-  py::array_t<bool> mask(rows);
-  auto h = humans.mutable_unchecked<2>();
-  auto m = mask.mutable_unchecked<1>();
-  for (int i = 0; i < rows; ++i) {
-    const bool seen = i < static_cast<int>(people.size());
-    m(i) = seen;
-    const PersonObservation* p = seen ? people[i] : nullptr;
-    h(i, 0) = seen ? p->position.x() : 0.0;
-    h(i, 1) = seen ? p->position.y() : 0.0;
-    h(i, 2) = seen ? p->velocity.x() : 0.0;
-    h(i, 3) = seen ? p->velocity.y() : 0.0;
-    h(i, 4) = seen ? p->radius : 0.0;
-  }
-  d["humans"] = humans;
-  d["humans_mask"] = mask;
-
-  // The first range sensor's ranges (m; max_range where nothing is hit).
-  for (const SensorReading& reading : obs.readings) {
-    if (reading.ranges.empty()) continue;
-    py::array_t<double> ranges(static_cast<py::ssize_t>(reading.ranges.size()));
-    std::copy(reading.ranges.begin(), reading.ranges.end(), ranges.mutable_data());
-    d["lidar"] = ranges;
-    break;
-  }
-  return d;
 }
 
 }  // namespace crowdsim::python

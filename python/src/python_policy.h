@@ -40,7 +40,4 @@ class PythonPolicy final : public Policy {
 const LoadedPlugin& PythonPolicyPlugin();
 void SetNextPythonPolicy(std::vector<std::string> sensors, int max_humans, PyObject* callable);
 
-/// The robot observation as a dict of numpy arrays (see crowdsim_bench.Env).
-pybind11::dict ObservationDict(const Observation& obs, int max_humans);
-
 }  // namespace crowdsim::python

@@ -165,5 +165,98 @@ class Evaluate(unittest.TestCase):
             self.assertTrue(all(0.0 <= r["success"] <= 1.0 for r in rows))
 
 
+def batched_straight_to_goal(obs, time_step=0.25):
+    return np.stack([straight_to_goal({"robot": r}, time_step) for r in obs["robot"]])
+
+
+class VectorEnvContract(unittest.TestCase):
+    N = 3
+
+    def run_batches(self, threads, steps=120):
+        venv = cb.VectorEnv(QUICK, row="linear", num_envs=self.N, threads=threads)
+        obs, info = venv.reset(seed=10)
+        log = [(obs, info)]
+        for _ in range(steps):
+            out = venv.step(batched_straight_to_goal(obs))
+            obs = out[0]
+            log.append(out)
+        return venv, log
+
+    def test_spaces_and_shapes(self):
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=4)
+        obs, info = venv.reset(seed=0)
+        self.assertTrue(venv.observation_space.contains(obs))
+        self.assertTrue(venv.single_observation_space.contains({k: v[0] for k, v in obs.items()}))
+        self.assertEqual(obs["lidar"].shape, (4, 45))
+        self.assertEqual(list(info["episode"]), [0, 1, 2, 3])
+        obs, reward, terminated, truncated, info = venv.step(np.zeros((4, 2)))
+        self.assertEqual(reward.shape, (4,))
+        self.assertEqual(terminated.dtype, np.bool_)
+        self.assertEqual(truncated.dtype, np.bool_)
+        np.testing.assert_allclose(obs["time"], 0.25)
+        with self.assertRaises(ValueError):
+            venv.step(np.zeros((3, 2)))
+        discrete = cb.VectorEnv(QUICK, row="orca", num_envs=2, discrete=True)
+        discrete.reset()
+        discrete.step(np.array([0, 80]))
+
+    def test_each_sub_environment_plays_the_envs_episodes_with_next_step_autoreset(self):
+        _, log = self.run_batches(threads=1)
+        env = cb.Env(QUICK, row="linear")
+        for i in range(self.N):
+            episode = 10 + i
+            obs, _ = env.reset(seed=episode)
+            np.testing.assert_array_equal(log[0][0]["robot"][i], obs["robot"])
+            ended = False
+            for t, (bobs, reward, terminated, truncated, info) in enumerate(log[1:], start=1):
+                if ended:  # the step after the end: the next episode of this sub-environment
+                    self.assertEqual(reward[i], 0.0)
+                    self.assertEqual(info["episode"][i], episode + self.N)
+                    self.assertEqual(bobs["time"][i], 0.0)
+                    obs, _ = cb.Env(QUICK, row="linear").reset(seed=episode + self.N)
+                    np.testing.assert_array_equal(bobs["robot"][i], obs["robot"])
+                    break
+                obs, r, term, trunc, step_info = env.step(straight_to_goal(obs))
+                for key in obs:
+                    np.testing.assert_array_equal(bobs[key][i], obs[key], f"env {i} step {t} {key}")
+                self.assertEqual(reward[i], r)
+                self.assertEqual((terminated[i], truncated[i]), (term, trunc))
+                self.assertEqual(cb.STATUS_NAMES[info["status"][i]], step_info["status"])
+                ended = term or trunc
+            self.assertTrue(ended, f"env {i}: episode {episode} did not end in the steps run")
+
+    def test_threads_do_not_change_the_batches(self):
+        _, one = self.run_batches(threads=1)
+        venv, two = self.run_batches(threads=2)
+        self.assertEqual(venv.threads, 2)
+        for a, b in zip(one[1:], two[1:]):
+            for key in a[0]:
+                np.testing.assert_array_equal(a[0][key], b[0][key])
+            for k in range(1, 4):
+                np.testing.assert_array_equal(a[k], b[k])
+            np.testing.assert_array_equal(a[4]["episode"], b[4]["episode"])
+
+
+class Render(unittest.TestCase):
+    def test_rgb_array_shows_the_episode_so_far(self):
+        env = cb.Env(QUICK, row="orca", render_mode="rgb_array")
+        obs, _ = env.reset(seed=1)
+        first = env.render()
+        for _ in range(8):
+            obs, _, terminated, truncated, _ = env.step(np.zeros(2))
+            if terminated or truncated:
+                break
+        later = env.render()
+        self.assertEqual(first.dtype, np.uint8)
+        self.assertEqual(first.ndim, 3)
+        self.assertEqual(first.shape[2], 3)
+        self.assertGreater(len(np.unique(first.reshape(-1, 3), axis=0)), 10)
+        self.assertEqual(first.shape, later.shape)
+        self.assertFalse(np.array_equal(first, later))  # the robot and the clock moved
+        self.assertIsNone(cb.Env(QUICK, row="orca").render())
+        with self.assertRaises(ValueError):
+            cb.Env(QUICK, row="orca", render_mode="human")
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -1,0 +1,81 @@
+"""VectorEnv: n copies of a suite row's episodes stepped together in C++."""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+
+from . import _core
+
+STATUS_NAMES = tuple(_core.STATUS_NAMES)
+
+
+class VectorEnv:
+    """`num_envs` environments of one suite row, stepped in C++ with numpy batches.
+
+    Follows Gymnasium's vector API: `reset(seed=k)` starts episodes k, k+1, ..., k+n-1 of the
+    row (default 0); sub-environment i then plays episodes k+i, k+i+n, k+i+2n, ... whatever
+    the thread count, so a batch run is reproducible. Observations are the Env's dict with a
+    leading batch axis (`robot` (n, 9), `humans` (n, H, 5), `humans_mask` (n, H), `lidar`
+    (n, beams), `time` (n,)). `step(actions)` takes (n, 2) velocities (m/s, world frame) or,
+    with `discrete=True`, (n,) indices into `actions`, and returns obs, reward (n,),
+    terminated (n,), truncated (n,), info with `status` (n,) codes into STATUS_NAMES and
+    `episode` (n,). Autoreset is Gymnasium's "next step" mode: the step after a sub-environment
+    ended resets it, ignores its action and returns the new episode's first observation with
+    reward 0. `threads` > 1 steps the sub-environments on that many threads (the caller's
+    included; the GIL is released while they run).
+    """
+
+    metadata = {"autoreset_mode": "next_step"}
+
+    def __init__(self, suite: str, row: str | int = 1, num_envs: int = 16, *,
+                 set: Sequence[str] = (), discrete: bool = False, threads: int = 1):
+        from . import _box, _dict, _discrete_space, holonomic_actions  # no import cycle at load
+        self._env = _core.VectorEnv(str(suite), row, int(num_envs), list(set), int(threads))
+        self.num_envs = self._env.num_envs
+        self.discrete = discrete
+        probe = _core.Env(str(suite), row, list(set))
+        self.actions = holonomic_actions(probe.v_pref)
+        n, h = self.num_envs, self._env.humans
+        if discrete:
+            self.single_action_space = _discrete_space(len(self.actions))
+            self.action_space = _box(0, len(self.actions) - 1, (n,), dtype=np.int64)
+        else:
+            self.single_action_space = _box(-probe.v_pref, probe.v_pref, (2,))
+            self.action_space = _box(-probe.v_pref, probe.v_pref, (n, 2))
+        single = {"robot": _box(-np.inf, np.inf, (9,)), "time": _box(0.0, np.inf, ()),
+                  "humans": _box(-np.inf, np.inf, (h, 5)),
+                  "humans_mask": _box(0, 1, (h,), dtype=np.bool_)}
+        batch = {"robot": _box(-np.inf, np.inf, (n, 9)), "time": _box(0.0, np.inf, (n,)),
+                 "humans": _box(-np.inf, np.inf, (n, h, 5)),
+                 "humans_mask": _box(0, 1, (n, h), dtype=np.bool_)}
+        if self._env.beams >= 0:
+            single["lidar"] = _box(0.0, np.inf, (self._env.beams,))
+            batch["lidar"] = _box(0.0, np.inf, (n, self._env.beams))
+        self.single_observation_space = _dict(single)
+        self.observation_space = _dict(batch)
+
+    @property
+    def threads(self) -> int:
+        return self._env.threads
+
+    def reset(self, *, seed: int | None = None, options: dict | None = None):
+        first = int(options["episode"]) if options and "episode" in options else (
+            int(seed) if seed is not None else 0)
+        obs = self._env.reset(first)
+        episode = obs.pop("episode")
+        return obs, {"episode": episode}
+
+    def step(self, actions):
+        if self.discrete:
+            velocities = self.actions[np.asarray(actions, dtype=np.int64).reshape(self.num_envs)]
+        else:
+            velocities = np.asarray(actions, dtype=np.float64)
+        if velocities.shape != (self.num_envs, 2) or not np.all(np.isfinite(velocities)):
+            raise ValueError(f"actions must be {self.num_envs} finite velocities, shape "
+                             f"({self.num_envs}, 2); got shape {np.shape(actions)}")
+        obs, reward, terminated, truncated, status, episode = self._env.step(velocities)
+        return obs, reward, terminated, truncated, {"status": status, "episode": episode}
+
+    def close(self):
+        pass

@@ -1,0 +1,43 @@
+// A suite row as the Python package uses it: the suite read with its own plugin registry and
+// one row picked by 1-based index or label, with the Python policy as its robot.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/suite.h"
+
+namespace crowdsim::python {
+
+/// Reads a suite file (with --set style overrides); its errors become ValueError.
+Suite LoadSuiteOrThrow(const std::string& path, PluginRegistry& registry,
+                       const std::vector<std::string>& set);
+
+/// The index of a row given as a 1-based int or a label (IndexError / KeyError otherwise).
+size_t RowIndex(const Suite& suite, const pybind11::object& row);
+
+/// Plugin names of the row's sensors.
+std::vector<std::string> SensorNames(const RowSpec& row);
+
+/// The row with the Python policy in place of its robot policy; the marker in the canonical
+/// text keeps its stored results apart from the original row's.
+RowSpec WithPythonRobot(const RowSpec& row, const std::string& label);
+
+/// A suite, its registry and one of its rows with the Python robot (not movable: the row's
+/// plugins live in the registry, and RowEpisodes keep references to the suite and row).
+struct PythonRow {
+  PythonRow(const std::string& suite_path, const pybind11::object& row,
+            const std::vector<std::string>& set);
+  PythonRow(const PythonRow&) = delete;
+  PythonRow& operator=(const PythonRow&) = delete;
+
+  PluginRegistry registry;
+  Suite suite;
+  RowSpec row;
+};
+
+}  // namespace crowdsim::python

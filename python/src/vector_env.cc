@@ -1,0 +1,148 @@
+#include "vector_env.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "observation_arrays.h"
+
+namespace py = pybind11;
+
+namespace crowdsim::python {
+
+// The arrays of one batched observation and step outcome, written by the workers without
+// the GIL (the raw pointers are taken while it is held).
+struct VectorEnv::Batch {
+  py::array_t<double> robot, humans, lidar, time, reward;
+  py::array_t<bool> mask, terminated, truncated;
+  py::array_t<std::int8_t> status;
+  py::array_t<std::int64_t> episode;
+  double *robot_p, *humans_p, *lidar_p = nullptr, *time_p, *reward_p;
+  bool *mask_p, *terminated_p, *truncated_p;
+  std::int8_t* status_p;
+  std::int64_t* episode_p;
+
+  py::dict Observations() const {
+    py::dict d;
+    d["robot"] = robot;
+    d["time"] = time;
+    d["humans"] = humans;
+    d["humans_mask"] = mask;
+    if (lidar_p != nullptr) d["lidar"] = lidar;
+    return d;
+  }
+};
+
+VectorEnv::VectorEnv(std::unique_ptr<PythonRow> row, int num_envs, int threads)
+    : row_(std::move(row)), pool_(std::clamp(threads, 1, std::max(1, num_envs))) {
+  if (num_envs < 1) throw py::value_error("num_envs must be >= 1, got " + std::to_string(num_envs));
+  humans_ = row_->row.humans.count;
+  for (int i = 0; i < num_envs; ++i)
+    envs_.push_back(std::make_unique<RowEpisodes>(row_->suite, row_->row, row_->registry));
+  next_episode_.assign(envs_.size(), 0);
+  ended_.assign(envs_.size(), false);
+  // The range sensor's beam count fixes the lidar batch's shape.
+  const std::vector<double>* ranges = FirstRanges(envs_[0]->Reset(0, false));
+  beams_ = ranges ? static_cast<int>(ranges->size()) : -1;
+}
+
+VectorEnv::~VectorEnv() = default;
+
+VectorEnv::Batch VectorEnv::MakeBatch() const {
+  const py::ssize_t n = num_envs();
+  Batch b;
+  b.robot = py::array_t<double>({n, py::ssize_t{kRobotStateSize}});
+  b.humans = py::array_t<double>({n, py::ssize_t{humans_}, py::ssize_t{5}});
+  b.mask = py::array_t<bool>({n, py::ssize_t{humans_}});
+  b.time = py::array_t<double>(n);
+  b.reward = py::array_t<double>(n);
+  b.terminated = py::array_t<bool>(n);
+  b.truncated = py::array_t<bool>(n);
+  b.status = py::array_t<std::int8_t>(n);
+  b.episode = py::array_t<std::int64_t>(n);
+  b.robot_p = b.robot.mutable_data();
+  b.humans_p = b.humans.mutable_data();
+  b.mask_p = b.mask.mutable_data();
+  b.time_p = b.time.mutable_data();
+  b.reward_p = b.reward.mutable_data();
+  b.terminated_p = b.terminated.mutable_data();
+  b.truncated_p = b.truncated.mutable_data();
+  b.status_p = b.status.mutable_data();
+  b.episode_p = b.episode.mutable_data();
+  if (beams_ >= 0) {
+    b.lidar = py::array_t<double>({n, py::ssize_t{beams_}});
+    b.lidar_p = b.lidar.mutable_data();
+  }
+  return b;
+}
+
+void VectorEnv::Write(size_t i, const Observation& obs, Batch& b) const {
+  WriteRobotState(obs, b.robot_p + i * kRobotStateSize);
+  WriteHumans(obs, humans_, b.humans_p + i * 5 * humans_, b.mask_p + i * humans_);
+  b.time_p[i] = obs.time;
+  if (b.lidar_p != nullptr) {
+    const std::vector<double>* ranges = FirstRanges(obs);
+    if (ranges == nullptr || static_cast<int>(ranges->size()) != beams_)
+      throw std::logic_error("the range sensor's beam count changed between steps");
+    std::copy(ranges->begin(), ranges->end(), b.lidar_p + i * beams_);
+  }
+}
+
+py::dict VectorEnv::Reset(int first) {
+  if (first < 0) throw py::value_error("the first episode must be >= 0, got " + std::to_string(first));
+  Batch b = MakeBatch();
+  const int n = num_envs();
+  {
+    py::gil_scoped_release release;
+    pool_.Run(envs_.size(), [&](size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) {
+        const int episode = first + static_cast<int>(i);
+        Write(i, envs_[i]->Reset(episode, false), b);
+        next_episode_[i] = episode + n;
+        ended_[i] = false;
+        b.episode_p[i] = episode;
+      }
+    });
+  }
+  py::dict obs = b.Observations();
+  obs["episode"] = b.episode;
+  return obs;
+}
+
+py::tuple VectorEnv::Step(const py::array_t<double, py::array::c_style | py::array::forcecast>& actions) {
+  const py::ssize_t n = num_envs();
+  if (actions.ndim() != 2 || actions.shape(0) != n || actions.shape(1) != 2) {
+    throw py::value_error("actions must have shape (" + std::to_string(n) +
+                          ", 2): one velocity (vx, vy) per environment");
+  }
+  if (!envs_[0]->started()) throw py::value_error("step() before reset()");
+  const double* a = actions.data();
+  Batch b = MakeBatch();
+  {
+    py::gil_scoped_release release;
+    pool_.Run(envs_.size(), [&](size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) {
+        RowEpisodes& env = *envs_[i];
+        double reward = 0.0;
+        if (ended_[i]) {  // next-step autoreset: the action of this step is ignored
+          env.Reset(next_episode_[i], false);
+          next_episode_[i] += static_cast<int>(n);
+          ended_[i] = false;
+        } else {
+          reward = env.Step(Vec2(a[2 * i], a[2 * i + 1])).reward;
+        }
+        const EpisodeStatus status = env.episode().result().status;
+        ended_[i] = status != EpisodeStatus::kRunning;
+        b.reward_p[i] = reward;
+        b.terminated_p[i] = ended_[i] && status != EpisodeStatus::kTimeout;
+        b.truncated_p[i] = status == EpisodeStatus::kTimeout;
+        b.status_p[i] = static_cast<std::int8_t>(status);
+        b.episode_p[i] = env.episode_index();
+        Write(i, env.observation(), b);
+      }
+    });
+  }
+  return py::make_tuple(b.Observations(), b.reward, b.terminated, b.truncated, b.status, b.episode);
+}
+
+}  // namespace crowdsim::python
