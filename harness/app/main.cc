@@ -30,9 +30,11 @@ const std::vector<Command>& Commands() {
       --set changes one key of the suite (humans.count=10, rows[orca].params.safety_space=0.1,
       robot.sensors[lidar2d].beams=90; recorded in manifest.json), as validate, render, train
 )"},
-    {"merge", crowdsim::cli::MergeCommand, R"(  crowdsim-bench merge SHARD_DIR... --out DIR [--suite SUITE.yaml]
+    {"merge", crowdsim::cli::MergeCommand, R"(  crowdsim-bench merge SHARD_DIR... --out DIR [--suite SUITE.yaml] [--allow-mixed-commits]
       joins the output folders of `run --shard K/N` into the tables of a single run, after
-      checking that they are one configuration and hold every episode exactly once
+      checking that they are one configuration and hold every episode exactly once, made by
+      one commit (git_commit of their manifest.json); --allow-mixed-commits joins shards of
+      different commits anyway (manifest.json records each shard's commit)
 )"},
     {"validate", crowdsim::cli::ValidateCommand, R"(  crowdsim-bench validate FILE.yaml... [--set KEY.PATH=VALUE]...
       checks suites (and training files) without running them; reports every error with

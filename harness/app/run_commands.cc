@@ -65,9 +65,10 @@ void ExplainInterruption(const std::filesystem::path& out_dir) {
 /// Joins shard folders into `out` (MergeShards), prints the table and what was written; the
 /// exit code. `from` says where the episodes came from ("3 folders", "2 MPI ranks").
 int MergeAndReport(const std::vector<std::filesystem::path>& dirs, const std::filesystem::path& out,
-                   const std::filesystem::path& suite_file, PluginRegistry& registry, const std::string& from) {
+                   const std::filesystem::path& suite_file, PluginRegistry& registry, const std::string& from,
+                   bool allow_mixed_commits = false) {
   try {
-    const RunSummary s = MergeShards(dirs, out, suite_file, registry);
+    const RunSummary s = MergeShards(dirs, out, suite_file, registry, allow_mixed_commits);
     std::cout << s.table_markdown << "\n";
     std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
               << s.episodes_resumed << " episodes from " << from << ")\n";
@@ -167,14 +168,14 @@ int RunCommand(const std::vector<std::string>& args) {
 }
 
 int MergeCommand(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args, {"--out", "--suite"}, {});
+  const Args a = Args::Parse(args, {"--out", "--suite"}, {"--allow-mixed-commits"});
   if (a.positional.empty()) throw UsageError("merge needs the output folders of the shards");
   const auto out = a.Get("--out");
   if (!out) throw UsageError("merge needs --out DIR (the folder of the joined results)");
   std::vector<std::filesystem::path> dirs(a.positional.begin(), a.positional.end());
   PluginRegistry registry;
   return MergeAndReport(dirs, *out, a.Get("--suite").value_or(""), registry,
-                        std::to_string(dirs.size()) + " folders");
+                        std::to_string(dirs.size()) + " folders", a.Has("--allow-mixed-commits"));
 }
 
 int ValidateCommand(const std::vector<std::string>& args) {

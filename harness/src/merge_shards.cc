@@ -1,7 +1,12 @@
 // `crowdsim-bench merge`: the shards of one suite run, checked and joined into the output a
 // single run writes (the tables are made by the runner's own resume of the joined episodes).
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "crowdsim/results.h"
 #include "crowdsim/runner.h"
@@ -9,12 +14,55 @@
 namespace crowdsim {
 namespace fs = std::filesystem;
 
+namespace {
+
+/// A JSON string of plain text (commits, shard names, folder names).
+std::string Quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+/// Adds to the merged manifest, after its own git_commit (the build that merged), the commit
+/// that made the shards ("mixed" when --allow-mixed-commits joined several) and each shard's
+/// ("COMMIT SHARD", as row_hashes are "HASH LABEL").
+void RecordShardCommits(const fs::path& manifest,
+                        const std::vector<std::pair<std::string, std::string>>& shard_commits) {
+  std::string text;
+  {
+    std::ifstream f(manifest);
+    text.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+  }
+  const auto field = text.find("\n  \"git_commit\": ");
+  const auto end = field == std::string::npos ? field : text.find('\n', field + 1);
+  if (end == std::string::npos) {
+    throw RunError("'" + manifest.string() + "' has no git_commit line: a bug, please report");
+  }
+  bool mixed = false;
+  std::string list;
+  for (const auto& [commit, shard] : shard_commits) {
+    mixed = mixed || commit != shard_commits.front().first;
+    list += (list.empty() ? "" : ", ") + Quoted(commit + " " + shard);
+  }
+  text.insert(end + 1, "  \"shards_git_commit\": " + Quoted(mixed ? "mixed" : shard_commits.front().first) +
+                           ",\n  \"shard_commits\": [" + list + "],\n");
+  WriteFileAtomically(manifest, text);
+}
+
+}  // namespace
+
 RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& out_dir,
-                       const fs::path& suite_file, PluginRegistry& registry) {
+                       const fs::path& suite_file, PluginRegistry& registry, bool allow_mixed_commits) {
   if (shard_dirs.empty()) throw RunError("merge needs the output folders of the shards");
   std::string hash, episodes_text, manifest_suite;
   std::map<std::pair<std::string, int>, std::pair<EpisodeLine, fs::path>> lines;
   std::set<std::string> shards_seen;
+  // The build that made each shard (COMMIT, SHARD or its folder): episodes of different code
+  // are not one run, even when the configuration is the same.
+  std::vector<std::pair<std::string, std::string>> shard_commits;
   for (const fs::path& dir : shard_dirs) {
     const fs::path manifest = dir / "manifest.json";
     if (!fs::exists(manifest) || !fs::exists(dir / "episodes.csv")) {
@@ -33,6 +81,15 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     if (!shard.empty() && !shards_seen.insert(shard).second) {
       throw RunError("shard " + shard + " is given twice ('" + dir.string() + "')");
     }
+    std::string commit = ReadManifestField(manifest, "git_commit");
+    if (commit.empty()) commit = "unknown";
+    if (!shard_commits.empty() && commit != shard_commits.front().first && !allow_mixed_commits) {
+      throw RunError("'" + shard_dirs.front().string() + "' was made by commit " + shard_commits.front().first +
+                     ", '" + dir.string() + "' by commit " + commit + ": shards of different code do not "
+                     "make one run. Rerun the shards with one build, or pass --allow-mixed-commits to "
+                     "join them anyway (the merged manifest.json records each shard's commit)");
+    }
+    shard_commits.emplace_back(commit, shard.empty() ? dir.string() : shard);
     for (auto& line : ReadEpisodesCsv(dir / "episodes.csv")) {
       const auto key = std::make_pair(line.row, line.episode);
       if (auto it = lines.find(key); it != lines.end()) {
@@ -97,6 +154,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   if (summary.episodes_run != 0) {
     throw RunError("merge ran " + std::to_string(summary.episodes_run) + " episodes: a bug, please report");
   }
+  RecordShardCommits(out_dir / "manifest.json", shard_commits);
   return summary;
 }
 

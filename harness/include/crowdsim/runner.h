@@ -41,11 +41,13 @@ struct RunSummary {
 
 /// Joins the output folders of the shards of one suite run into `out_dir` and writes the tables
 /// as a single run would: the shards must hold the same configuration (config hash, episode
-/// count) and together every (row, episode) exactly once. `suite_file` empty: the manifests'.
-/// Throws RunError naming the folder and the episode at fault.
+/// count) and together every (row, episode) exactly once, and have been made by one commit
+/// (their manifests' git_commit) unless `allow_mixed_commits`. `suite_file` empty: the
+/// manifests'. The merged manifest records the shards' commit (shards_git_commit, "mixed" if
+/// several) and each shard's (shard_commits). Throws RunError naming the folders at fault.
 RunSummary MergeShards(const std::vector<std::filesystem::path>& shard_dirs,
                        const std::filesystem::path& out_dir, const std::filesystem::path& suite_file,
-                       PluginRegistry& registry);
+                       PluginRegistry& registry, bool allow_mixed_commits = false);
 
 /// Where a run writes without an explicit folder: runs/<suite name>/ under the working folder
 /// (ignored by git). The committed reference outputs under results/ are only ever written
