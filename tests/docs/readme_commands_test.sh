@@ -8,7 +8,7 @@
 # Taken: each line of a ```sh block that starts with build/bin/, mpirun, for, source or
 # PYTHONPATH=build/python (run with PYTHON, the interpreter the package was built for; skipped
 # without it). The `make` lines are what CI runs anyway. Budgets: every `run` gets --episodes 3, every `train` a
-# few imitation and RL episodes. The commands run in order in a scratch copy of the checkout's
+# few imitation and RL episodes, the PyTorch example 10 updates (skipped without python3-torch). The commands run in order in a scratch copy of the checkout's
 # suites, worlds and examples, with the committed results linked in (read only), so they write
 # nothing into the checkout. mpirun lines are skipped when the CLI was built without MPI.
 set -uo pipefail
@@ -51,9 +51,14 @@ for c in "${commands[@]}"; do
       continue
     fi
     c="${c/ python3 / $python }"
+    if [[ "$c" == *_torch.py* ]] && ! "$python" -c "import torch" 2>/dev/null; then
+      echo "SKIP (no python3-torch): $c"
+      continue
+    fi
   fi
   cmd=$(sed -E -e 's/ --episodes [0-9]+//g' \
                -e 's/(crowdsim-bench run [^ ]+)/\1 --episodes 3/g' \
+               -e 's/(train_policy_torch\.py) [0-9]+/\1 10/' \
                -e "s/(crowdsim-bench train [^ ]+)/\\1 $small_train/g" <<<"$c")
   echo "RUN  $cmd"
   if ! out=$(cd "$work" && timeout 300 bash -c "$cmd" 2>&1); then
