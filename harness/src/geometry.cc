@@ -23,6 +23,20 @@ bool Slab(double o, double d, double lo, double hi, double* t_near, double* t_fa
   return *t_near <= *t_far;
 }
 
+// How far p lies outside r along each axis (0 inside the rectangle's slab on that axis).
+Vec2 OutsideRect(const Vec2& p, const Rect& r) {
+  return Vec2(std::max({r.min.x() - p.x(), 0.0, p.x() - r.max.x()}),
+              std::max({r.min.y() - p.y(), 0.0, p.y() - r.max.y()}));
+}
+
+// hypot(d.x, d.y) for non-negative d, skipping the call (a hot path of human placement) beside
+// the rectangle's sides, where hypot would return the other coordinate exactly.
+double Length(const Vec2& d) {
+  if (d.x() == 0.0) return d.y();
+  if (d.y() == 0.0) return d.x();
+  return std::hypot(d.x(), d.y());
+}
+
 }  // namespace
 
 double PointToSegmentDistance(const Vec2& a, const Vec2& b, const Vec2& p) {
@@ -33,14 +47,14 @@ double PointToSegmentDistance(const Vec2& a, const Vec2& b, const Vec2& p) {
   return (a + u * ab - p).norm();
 }
 
-double PointToRectDistance(const Vec2& p, const Rect& r) {
-  const double dx = std::max({r.min.x() - p.x(), 0.0, p.x() - r.max.x()});
-  const double dy = std::max({r.min.y() - p.y(), 0.0, p.y() - r.max.y()});
-  return std::hypot(dx, dy);
-}
+double PointToRectDistance(const Vec2& p, const Rect& r) { return Length(OutsideRect(p, r)); }
 
 bool DiscOverlapsRect(const Vec2& c, double radius, const Rect& r) {
-  return PointToRectDistance(c, r) < radius;
+  const Vec2 d = OutsideRect(c, r);
+  // hypot(x, y) >= max(x, y) holds in floating point too (the float x lies at or below the
+  // exact value, and rounding is monotonic), so this cut-off gives hypot's answer.
+  if (d.x() >= radius || d.y() >= radius) return false;
+  return Length(d) < radius;
 }
 
 double RayRectDistance(const Vec2& origin, const Vec2& dir, const Rect& r) {
