@@ -11,6 +11,7 @@ int MergeCommand(const std::vector<std::string>& args);
 int ValidateCommand(const std::vector<std::string>& args);
 int ListPluginsCommand(const std::vector<std::string>& args);
 int TrainCommand(const std::vector<std::string>& args);
+int TrainAllCommand(const std::vector<std::string>& args);
 int RenderCommand(const std::vector<std::string>& args);
 int ReportCommand(const std::vector<std::string>& args);
 

@@ -48,6 +48,12 @@ const std::vector<Command>& Commands() {
       every 500 episodes and on Ctrl-C; --resume continues exactly, and goes on to a larger
       training.rl_episodes (e.g. --set training.rl_episodes=10000)
 )"},
+    {"train-all", crowdsim::cli::TrainAllCommand, R"(  crowdsim-bench train-all TRAIN.yaml[@SEED]... [--quiet] [--set KEY.PATH=VALUE]...
+      a training campaign: each file (FILE@N: with seed N) as `train` runs it, resuming one
+      with a checkpoint and skipping one finished with the same configuration; started by
+      mpirun or srun, rank r of R takes files r, r+R, ... (one training per rank); alone, it
+      trains them one after another (scripts/train_all.sh -j N runs N at a time on one machine)
+)"},
     {"floorplan", crowdsim::floorplan::RunFloorplanCli, R"(  crowdsim-bench floorplan import IMAGE [--resolution M] [--kind navmesh|outline] [--max-rectangles 30] --out WORLD.yaml
   crowdsim-bench floorplan preview WORLD.yaml [--image IMAGE] --out FILE.svg
   crowdsim-bench floorplan dataset --source DIR --out worlds/floorplans

@@ -1,45 +1,65 @@
-// train: imitation + reinforcement learning of a learned policy from a training file.
+// train: imitation + reinforcement learning of a learned policy from a training file;
+// train-all: a campaign of them, one training per MPI rank (or one after another).
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "crowdsim/render/learning_curve.h"
 #include "crowdsim/training/train_spec.h"
 #include "crowdsim/training/trainer.h"
 #include "cli_args.h"
 #include "commands.h"
+#include "process_group.h"
 
 namespace crowdsim::cli {
+namespace {
 
-int TrainCommand(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args, {"--out", "--seed", "--set"}, {"--resume", "--quiet"});
-  if (a.positional.size() != 1) throw UsageError("train needs exactly one training file");
+/// One training as `train` runs it.
+struct TrainJob {
+  std::string file;
+  std::optional<std::string> seed;  ///< another seed: folder <name>_seed<N>
+  std::optional<std::string> out;
+  std::vector<std::string> sets;
+  bool resume = false;
+  bool quiet = false;
+  /// train-all: resume when the folder has a checkpoint, skip a finished training of the same
+  /// configuration.
+  bool campaign = false;
+};
+
+int Train(const TrainJob& job) {
   PluginRegistry registry;
-  training::TrainSpecLoadResult loaded = training::LoadTrainSpec(a.positional[0], registry, a.All("--set"));
+  training::TrainSpecLoadResult loaded = training::LoadTrainSpec(job.file, registry, job.sets);
   if (!loaded.spec) {
     for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
     std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
-              << " in " << a.positional[0] << "\n";
+              << " in " << job.file << "\n";
     return 2;
   }
   training::TrainOptions options;
-  if (auto seed = a.Get("--seed")) {
-    // Another training seed of the same file: its own default folder <name>_seed<N>.
+  if (job.seed) {
+    const std::string& seed = *job.seed;
     char* end = nullptr;
-    const unsigned long long v = std::strtoull(seed->c_str(), &end, 10);
-    if (seed->empty() || *end != '\0' || (*seed)[0] == '-') {
-      throw UsageError("--seed needs a non-negative integer, got '" + *seed + "'");
+    const unsigned long long v = std::strtoull(seed.c_str(), &end, 10);
+    if (seed.empty() || *end != '\0' || seed[0] == '-') {
+      throw UsageError("the seed of '" + job.file + "' must be a non-negative integer, got '" + seed + "'");
     }
     training::OverrideSeed(*loaded.spec, v);
-    options.out_dir = std::filesystem::path("results") / "train" / (loaded.spec->name + "_seed" + *seed);
+    options.out_dir = std::filesystem::path("results") / "train" / (loaded.spec->name + "_seed" + seed);
   }
-  if (auto out = a.Get("--out")) options.out_dir = *out;
+  if (job.out) options.out_dir = *job.out;
+  if (options.out_dir.empty()) options.out_dir = std::filesystem::path("results") / "train" / loaded.spec->name;
+  if (job.campaign && training::IsFinishedTraining(options.out_dir, *loaded.spec)) {
+    std::cout << "finished already: " << options.out_dir.string() << " (skipped)\n";
+    return 0;
+  }
   for (const auto& w : training::TrainSpecWarnings(*loaded.spec)) {
-    std::cerr << "warning: " << a.positional[0] << ": " << w << "\n";
+    std::cerr << "warning: " << job.file << ": " << w << "\n";
   }
-  options.resume = a.Has("--resume");
-  options.progress = !a.Has("--quiet");
+  options.resume = job.resume || (job.campaign && training::HasCheckpoint(options.out_dir));
+  options.progress = !job.quiet;
   options.on_files_flushed = [](const std::filesystem::path& dir, const std::string& name) {
     try {
       render::WriteLearningCurve(dir, name);
@@ -62,10 +82,63 @@ int TrainCommand(const std::vector<std::string>& args) {
     std::cerr << "\n" << e.what() << "\n";
     return 130;
   } catch (const training::TrainError& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    std::cerr << "error: " << job.file << ": " << e.what() << "\n";
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int TrainCommand(const std::vector<std::string>& args) {
+  const Args a = Args::Parse(args, {"--out", "--seed", "--set"}, {"--resume", "--quiet"});
+  if (a.positional.size() != 1) throw UsageError("train needs exactly one training file");
+  TrainJob job;
+  job.file = a.positional[0];
+  job.seed = a.Get("--seed");
+  job.out = a.Get("--out");
+  job.sets = a.All("--set");
+  job.resume = a.Has("--resume");
+  job.quiet = a.Has("--quiet");
+  return Train(job);
+}
+
+int TrainAllCommand(const std::vector<std::string>& args) {
+  const Args a = Args::Parse(args, {"--set"}, {"--quiet"});
+  if (a.positional.empty()) throw UsageError("train-all needs training files (FILE.yaml or FILE.yaml@SEED)");
+  std::vector<TrainJob> jobs;
+  for (const std::string& entry : a.positional) {
+    TrainJob job;
+    const auto at = entry.rfind('@');
+    job.file = entry.substr(0, at);
+    if (at != std::string::npos) {
+      job.seed = entry.substr(at + 1);
+      // Checked before any rank starts, so a typo stops the whole campaign at once.
+      if (job.seed->empty() || job.seed->find_first_not_of("0123456789") != std::string::npos) {
+        throw UsageError("'" + entry + "': the seed after '@' must be a non-negative integer");
+      }
+    }
+    job.sets = a.All("--set");
+    job.quiet = a.Has("--quiet");
+    job.campaign = true;
+    jobs.push_back(job);
+  }
+  // Rank r takes trainings r, r + R, r + 2R, ... of the list (every rank derives the same split).
+  const ProcessGroup group;
+  int failed = 0;
+  for (size_t i = static_cast<size_t>(group.rank()); i < jobs.size(); i += static_cast<size_t>(group.size())) {
+    std::cout << "train-all: rank " << group.rank() << " of " << group.size() << ": " << a.positional[i]
+              << std::endl;
+    const int code = Train(jobs[i]);
+    if (code == 130) return 130;  // interrupted: the checkpoint is written, a relaunch resumes
+    if (code != 0) ++failed;
+  }
+  const bool all_ok = group.AllOk(failed == 0);
+  if (group.rank() == 0) {
+    std::cout << "train-all: " << jobs.size() << " training(s) over " << group.size() << " process(es): "
+              << (all_ok ? "all finished" : "some failed (see above)") << "\n";
+  }
+  return all_ok ? 0 : 1;
 }
 
 }  // namespace crowdsim::cli

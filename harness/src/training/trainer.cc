@@ -6,6 +6,7 @@
 #include <cmath>
 #include <csignal>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <memory>
 #include <numeric>
@@ -602,6 +603,20 @@ TrainSummary Trainer::Run() {
 TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry, const TrainOptions& options) {
   Trainer trainer(spec, registry, options);
   return trainer.Run();
+}
+
+bool IsFinishedTraining(const fs::path& out_dir, const TrainSpec& spec) {
+  const fs::path summary = out_dir / "summary.json";
+  if (!fs::is_regular_file(summary) || !fs::is_regular_file(out_dir / "weights.pt")) return false;
+  std::ifstream f(summary);
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  return text.find("\"finished\": true") != std::string::npos &&
+         ReadManifestField(summary, "config_hash") == spec.ConfigHash();
+}
+
+bool HasCheckpoint(const fs::path& out_dir) {
+  return fs::exists(out_dir / "checkpoint" / "state.txt") ||
+         fs::exists(out_dir / "checkpoint.tmp" / "state.txt");
 }
 
 }  // namespace crowdsim::training

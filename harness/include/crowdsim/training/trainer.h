@@ -76,6 +76,14 @@ struct TrainSummary {
 /// Runs (or resumes) a training. Throws TrainError, or TrainingInterrupted on a signal.
 TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry, const TrainOptions& options);
 
+/// The folder holds a finished training of exactly this configuration (its summary.json says
+/// finished, with spec's config hash): a campaign skips it. A finished training whose file now
+/// asks for more RL episodes is not (it resumes and goes on).
+bool IsFinishedTraining(const std::filesystem::path& out_dir, const TrainSpec& spec);
+
+/// The folder holds a checkpoint to resume from (also one left as checkpoint.tmp by a crash).
+bool HasCheckpoint(const std::filesystem::path& out_dir);
+
 /// Epsilon of RL episode `episode`: linear from start to end over `decay` episodes, then end.
 double Epsilon(const TrainingSettings& t, int episode);
 
