@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cerrno>
@@ -224,43 +225,110 @@ std::string FormatEpisodeLine(const EpisodeLine& e) {
   return os.str();
 }
 
-std::vector<EpisodeLine> ReadEpisodesCsv(const fs::path& path) {
-  std::vector<EpisodeLine> out;
-  std::ifstream f(path);
-  if (!f) return out;
+namespace {
+
+// How to get a readable episodes.csv back, for every error about one.
+constexpr const char* kEpisodesCsvFix =
+    "restore it from a copy, or run the suite again with --fresh to rewrite it";
+
+// `s` for a message: control characters as '?', at most 60 characters.
+std::string Quote(const std::string& s) {
+  std::string out;
+  for (char c : s.substr(0, 60)) out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
+  return "'" + out + (s.size() > 60 ? "...'" : "'");
+}
+
+bool ParseReal(const std::string& s, double* out) {
+  try {
+    size_t used = 0;
+    *out = std::stod(s, &used);
+    return used == s.size();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+template <typename Int>
+bool ParseWhole(const std::string& s, Int* out) {
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), *out);
+  return ec == std::errc() && end == s.data() + s.size();
+}
+
+// The episode of one line's fields, or why they are not one ("" when they are).
+std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e) {
+  static const std::vector<std::string> names = SplitCsvLine(EpisodeCsvHeader());
+  if (v.size() != names.size()) {
+    return "it has " + std::to_string(v.size()) + " field(s), expected " + std::to_string(names.size());
+  }
+  const auto not_a = [&](size_t k, const char* what) {
+    return "its " + names[k] + " " + Quote(v[k]) + " is not " + what;
+  };
+  e->row = v[0];
+  if (!ParseWhole(v[1], &e->episode)) return not_a(1, "a whole number");
+  if (!ParseWhole(v[2], &e->seed)) return not_a(2, "a seed (a whole number >= 0)");
+  e->layout = v[3];
+  e->record.status = ParseStatus(v[4]);
+  if (e->record.status == EpisodeStatus::kRunning) {
+    return not_a(4, "success, collision_human, collision_obstacle, timeout or policy_error");
+  }
+  if (!ParseReal(v[5], &e->record.time)) return not_a(5, "a number");
+  if (!ParseWhole(v[6], &e->record.steps)) return not_a(6, "a whole number");
+  if (!ParseWhole(v[7], &e->record.danger_steps)) return not_a(7, "a whole number");
+  if (!ParseReal(v[8], &e->record.path_length)) return not_a(8, "a number");
+  e->record.min_human_distance = kInfinity;  // written empty when nobody was there
+  if (!v[9].empty() && !ParseReal(v[9], &e->record.min_human_distance)) return not_a(9, "a number");
+  if (!ParseReal(v[10], &e->record.discounted_return)) return not_a(10, "a number");
+  if (!ParseReal(v[11], &e->record.decision_time_us)) return not_a(11, "a number");
+  if (!ParseWhole(v[12], &e->humans_at_goal)) return not_a(12, "a whole number");
+  e->error = v[13];
+  return "";
+}
+
+}  // namespace
+
+EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
+  EpisodesCsvRead read;
   std::string line;
-  std::getline(f, line);  // header
+  if (!std::getline(f, line)) line.clear();
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  if (line != EpisodeCsvHeader()) {
+    throw std::runtime_error(
+        path.string() + ":1: " + (line.empty() ? "the first line is empty" : "the header is " + Quote(line)) +
+        ", expected '" + EpisodeCsvHeader() + "': this is not an episodes.csv written by "
+        "`crowdsim-bench run`; " + kEpisodesCsvFix);
+  }
+  int number = 1, episode_lines = 0;
   while (std::getline(f, line)) {
-    if (line.empty() || f.eof()) {
-      // A last line without its newline may be cut short by a crash: skip it.
-      if (f.eof() && !line.empty()) break;
-      continue;
+    ++number;
+    if (f.eof()) {
+      // A last line without its newline was cut short by a crash mid-write: skipped, and its
+      // episode runs again on resume.
+      read.cut_last_line = !line.empty();
+      break;
     }
-    auto v = SplitCsvLine(line);
-    if (v.size() != 14) continue;
-    try {
-      EpisodeLine e;
-      e.row = v[0];
-      e.episode = std::stoi(v[1]);
-      e.seed = std::stoull(v[2]);
-      e.layout = v[3];
-      e.record.status = ParseStatus(v[4]);
-      if (e.record.status == EpisodeStatus::kRunning) continue;
-      e.record.time = std::stod(v[5]);
-      e.record.steps = std::stoi(v[6]);
-      e.record.danger_steps = std::stoi(v[7]);
-      e.record.path_length = std::stod(v[8]);
-      e.record.min_human_distance = v[9].empty() ? kInfinity : std::stod(v[9]);
-      e.record.discounted_return = std::stod(v[10]);
-      e.record.decision_time_us = std::stod(v[11]);
-      e.humans_at_goal = std::stoi(v[12]);
-      e.error = v[13];
-      out.push_back(std::move(e));
-    } catch (const std::exception&) {
-      continue;  // damaged line: the episode simply runs again
+    if (line.empty() || line == "\r") continue;
+    ++episode_lines;
+    EpisodeLine e;
+    const std::string why = ParseEpisodeFields(SplitCsvLine(line), &e);
+    if (why.empty()) {
+      read.lines.push_back(std::move(e));
+    } else if (read.damaged++ == 0) {
+      read.first_damage = path.string() + ":" + std::to_string(number) + ": " + why;
     }
   }
-  return out;
+  if (f.bad()) throw std::runtime_error("cannot read " + path.string() + ": " + std::strerror(errno));
+  if (read.lines.empty() && read.damaged > 0) {
+    throw std::runtime_error(path.string() + ": none of its " + std::to_string(episode_lines) +
+                             " episode line(s) can be read (the first: " + read.first_damage +
+                             "); " + kEpisodesCsvFix);
+  }
+  return read;
+}
+
+std::vector<EpisodeLine> ReadEpisodesCsv(const fs::path& path) {
+  return ReadEpisodesCsvChecked(path).lines;
 }
 
 namespace {

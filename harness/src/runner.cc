@@ -177,7 +177,17 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
                      summary.out_dir.string().c_str(), kept.size(), rerun.c_str());
       }
     }
-    for (auto& line : ReadEpisodesCsv(episodes_csv)) {
+    EpisodesCsvRead stored_lines;
+    try {
+      stored_lines = ReadEpisodesCsvChecked(episodes_csv);
+    } catch (const std::runtime_error& e) {
+      throw RunError(e.what());
+    }
+    if (stored_lines.damaged > 0 && options.progress) {
+      std::fprintf(stderr, "note: %d damaged line(s) of %s skipped, their episodes run again (the first: %s)\n",
+                   stored_lines.damaged, episodes_csv.string().c_str(), stored_lines.first_damage.c_str());
+    }
+    for (auto& line : stored_lines.lines) {
       if (kept.count(line.row)) done[{line.row, line.episode}] = std::move(line);
     }
     const std::string commit = ReadManifestField(manifest, "git_commit");

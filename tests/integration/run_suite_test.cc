@@ -100,6 +100,35 @@ TEST_F(RunSuiteTest, ResumesAfterInterruptionWithTheSameResults) {
             WithoutWallTime(ReadText(csv)));
 }
 
+TEST_F(RunSuiteTest, ResumeRerunsDamagedLinesAndRefusesAnUnreadableEpisodesCsv) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "full", 1);
+  // A line damaged in the middle (not by a crash): its episode runs again, the others resume.
+  Run(s, "damaged", 1, 5);
+  const auto csv = dir_.path() / "damaged" / "episodes.csv";
+  std::string text = ReadText(csv);
+  const size_t third = text.find("\nlinear,2,");
+  ASSERT_NE(third, std::string::npos) << text;
+  text.replace(third + 1, 8, "linear,x");
+  std::ofstream(csv) << text;
+  const RunSummary r = Run(s, "damaged", 2);
+  EXPECT_EQ(r.episodes_resumed, 9);
+  EXPECT_EQ(r.episodes_run, 15);
+  EXPECT_EQ(WithoutWallTime(ReadText(dir_.path() / "full" / "episodes.csv")),
+            WithoutWallTime(ReadText(csv)));
+
+  // No episodes.csv header (not a file the run wrote): an error naming the file and the fix.
+  std::ofstream(csv) << "garbage\n";
+  try {
+    Run(s, "damaged", 1);
+    ADD_FAILURE() << "resumed from a garbage episodes.csv";
+  } catch (const RunError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(csv.string() + ":1: the header is 'garbage'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("--fresh"), std::string::npos) << msg;
+  }
+}
+
 // Every built-in robot policy gives the same episodes whichever worker runs them and after
 // whichever earlier episodes: a policy object is reused across episodes, so any state that
 // Reset() misses shows here. (ompl_planner's first step of an episode read the previous

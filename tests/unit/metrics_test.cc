@@ -133,5 +133,74 @@ TEST(EpisodesCsv, RoundTripAndDamagedLastLine) {
   EXPECT_EQ(lines[1].record.min_human_distance, kInfinity);
 }
 
+EpisodeLine SomeLine(int episode) {
+  EpisodeLine e;
+  e.row = "plain";
+  e.episode = episode;
+  e.seed = 42;
+  e.layout = "rect1/test/000";
+  e.record = Rec(EpisodeStatus::kTimeout, 25.0, 100, 3, 7.5);
+  return e;
+}
+
+// The message of the std::runtime_error that reading `file` throws ("" when it reads).
+std::string ReadError(const std::filesystem::path& file) {
+  try {
+    ReadEpisodesCsvChecked(file);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
+  testing::TempDir dir;
+  const std::string text = EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) + "\n" +
+                           "plain,two,42,x,timeout,1,4,0,1,1,1,1,0,\n" + FormatEpisodeLine(SomeLine(1)) +
+                           "\n" + "plain,3,42,x,teleported,1,4,0,1,1,1,1,0,\n" + "plain,4,42,x,succ";
+  const auto file = dir.Write("episodes.csv", text);
+  const EpisodesCsvRead read = ReadEpisodesCsvChecked(file);
+  ASSERT_EQ(read.lines.size(), 2u);
+  EXPECT_EQ(read.lines[1].episode, 1);
+  EXPECT_EQ(read.damaged, 2);
+  EXPECT_EQ(read.first_damage, file.string() + ":3: its episode 'two' is not a whole number");
+  EXPECT_TRUE(read.cut_last_line);
+  EXPECT_EQ(ReadEpisodesCsv(file).size(), 2u);
+
+  // Whole-field numbers only (std::stoi read "4x" as 4), and the field count.
+  const auto partial = dir.Write("partial.csv", EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) +
+                                                   "\nplain,4x,42,x,timeout,1,4,0,1,1,1,1,0,\nplain,5\n");
+  const EpisodesCsvRead p = ReadEpisodesCsvChecked(partial);
+  EXPECT_EQ(p.lines.size(), 1u);
+  EXPECT_EQ(p.damaged, 2);
+  EXPECT_EQ(p.first_damage, partial.string() + ":3: its episode '4x' is not a whole number");
+}
+
+TEST(EpisodesCsv, AFileWithoutItsHeaderOrAReadableLineIsAnErrorNamingFileLineAndFix) {
+  testing::TempDir dir;
+  const auto garbage = dir.Write("garbage.csv", "garbage\nmore garbage, x\n\x01\x02\n");
+  std::string msg = ReadError(garbage);
+  EXPECT_NE(msg.find(garbage.string() + ":1: the header is 'garbage', expected 'row,episode,"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("not an episodes.csv written by `crowdsim-bench run`"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("--fresh"), std::string::npos) << msg;
+  msg = ReadError(dir.Write("empty.csv", ""));
+  EXPECT_NE(msg.find("empty.csv:1: the first line is empty"), std::string::npos) << msg;
+
+  const auto unreadable =
+      dir.Write("unreadable.csv", EpisodeCsvHeader() + "\nnot,an,episode\n\nplain,1,2,x,success,1,2.5,3,4,5,6,7,8,9\n");
+  msg = ReadError(unreadable);
+  EXPECT_NE(msg.find(unreadable.string() + ": none of its 2 episode line(s) can be read (the first: " +
+                     unreadable.string() + ":2: it has 3 field(s), expected 14)"),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("--fresh"), std::string::npos) << msg;
+
+  // No episode yet, or only the line a crash cut short: nothing to read, nothing wrong.
+  EXPECT_EQ(ReadError(dir.Write("header.csv", EpisodeCsvHeader() + "\n")), "");
+  const auto cut = dir.Write("cut.csv", EpisodeCsvHeader() + "\nplain,0,42,rect,succ");
+  EXPECT_EQ(ReadError(cut), "");
+  EXPECT_TRUE(ReadEpisodesCsvChecked(cut).cut_last_line);
+}
+
 }  // namespace
 }  // namespace crowdsim

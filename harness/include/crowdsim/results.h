@@ -28,7 +28,19 @@ struct EpisodeLine {
 std::string EpisodeCsvHeader();
 /// One CSV line (no newline).
 std::string FormatEpisodeLine(const EpisodeLine& e);
-/// Reads an episodes.csv; lines that are cut short (a crash mid-write) are skipped.
+/// What reading an episodes.csv found.
+struct EpisodesCsvRead {
+  std::vector<EpisodeLine> lines;
+  int damaged = 0;             ///< complete lines that are no episode line (skipped)
+  std::string first_damage;    ///< "FILE:LINE: why" of the first of them; empty when none
+  bool cut_last_line = false;  ///< the last line lacks its newline (a crash mid-write): skipped
+};
+/// Reads an episodes.csv. Throws std::runtime_error naming the file (and line) and the fix when
+/// it cannot be read, when its first line is not EpisodeCsvHeader(), or when it has episode
+/// lines and none of them can be read. Damaged lines among readable ones are skipped and
+/// counted (on resume their episodes run again); a last line cut short by a crash is skipped.
+EpisodesCsvRead ReadEpisodesCsvChecked(const std::filesystem::path& path);
+/// ReadEpisodesCsvChecked's lines.
 std::vector<EpisodeLine> ReadEpisodesCsv(const std::filesystem::path& path);
 
 /// One finished line of the table: a suite row, or a summary line (spec null, summary set).

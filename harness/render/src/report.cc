@@ -128,10 +128,16 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
     c_timeout = table.Column("timeout rate");
     c_nav = table.Column("nav. time");
     c_danger = table.Column("danger freq.");
-    episodes = ReadEpisodesCsv(dir / "episodes.csv");
   } catch (const std::runtime_error& e) {
     throw ReportError((dir / "table.csv").string() + ": " + e.what());
   }
+  EpisodesCsvRead read;
+  try {
+    read = ReadEpisodesCsvChecked(dir / "episodes.csv");
+  } catch (const std::runtime_error& e) {
+    throw ReportError(e.what());
+  }
+  episodes = std::move(read.lines);
   const std::string recorded_hash = JsonStringField(manifest, "config_hash").value_or("");
 
   std::ostringstream html;
@@ -148,6 +154,10 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
     if (auto v = JsonStringField(manifest, key)) html << " · " << key << " " << XmlEscape(*v);
   }
   html << "</p>\n";
+  if (read.damaged > 0) {
+    html << "<p class=\"warn\">" << read.damaged << " damaged line(s) of episodes.csv were skipped (the first: "
+         << XmlEscape(read.first_damage) << "): the figures show the readable episodes only.</p>\n";
+  }
   if (!recorded_hash.empty() && recorded_hash != suite.ConfigHash()) {
     html << "<p class=\"warn\">The suite file changed since this run (config hash "
          << XmlEscape(suite.ConfigHash()) << " vs " << XmlEscape(recorded_hash)

@@ -102,5 +102,36 @@ TEST(ReportCli, WritesTheReportAndRejectsBadFolders) {
   EXPECT_NE(ftext.find("--out must end in .html"), std::string::npos) << ftext;
 }
 
+TEST(ReportCli, AGarbageEpisodesCsvFailsAndDamagedLinesAreShown) {
+  TempDir tmp;
+  const fs::path results = tmp.path() / "quick";
+  auto [rrc, rtext] =
+      Shell(Exe() + " run " + Quick() + " --episodes 3 --jobs 2 --quiet --out " + results.string());
+  ASSERT_EQ(rrc, 0) << rtext;
+  const fs::path csv = results / "episodes.csv";
+  std::string text = testing::ReadText(csv);
+
+  // One damaged line among readable ones: the page says so.
+  const size_t second = text.find("\nlinear,1,");
+  ASSERT_NE(second, std::string::npos) << text;
+  std::ofstream(csv, std::ios::trunc) << text.substr(0, second + 1) + "linear,1,oops\n" +
+                                             text.substr(text.find('\n', second + 1) + 1);
+  const fs::path html = tmp.path() / "report.html";
+  auto [rc, out] = Shell(Exe() + " report " + results.string() + " --out " + html.string());
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(testing::ReadText(html).find("1 damaged line(s) of episodes.csv were skipped (the first: " +
+                                         csv.string() + ":3: it has 3 field(s), expected 14)"),
+            std::string::npos);
+
+  // Garbage: an error naming the file, the line and the fix, and no page.
+  std::ofstream(csv, std::ios::trunc) << "garbage\nmore garbage, x\n";
+  const fs::path none = tmp.path() / "none.html";
+  auto [grc, gout] = Shell(Exe() + " report " + results.string() + " --out " + none.string());
+  EXPECT_NE(grc, 0) << gout;
+  EXPECT_NE(gout.find(csv.string() + ":1: the header is 'garbage'"), std::string::npos) << gout;
+  EXPECT_NE(gout.find("--fresh"), std::string::npos) << gout;
+  EXPECT_FALSE(fs::exists(none));
+}
+
 }  // namespace
 }  // namespace crowdsim
