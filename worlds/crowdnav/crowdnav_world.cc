@@ -31,12 +31,31 @@ struct Placed {
   double radius;
 };
 
-[[noreturn]] void Fail(int human, const ScenarioRequest& request, const std::string& scenario) {
+// Rejection sampling cannot tell "unlucky" from "full": after kMaxTries the placed humans have
+// left no spot, and the message says how crowded that is and how large a world would hold them:
+// a circle's room grows with its circumference, a square's with its area, and random placement
+// jams before the room is full, so the size that held `human` of them is scaled up with a 25%
+// margin (enough for every seed tried in the test).
+[[noreturn]] void Fail(int human, const ScenarioRequest& request, bool circle, double size) {
+  const double gap = 2.0 * request.sim.human_radius + request.sim.discomfort_dist;
+  const double n = request.num_humans;
+  const double placed = std::max(1, human);
+  std::string where, fix;
+  if (circle) {
+    where = "circle_crossing (circle_radius " + Number(size) + " m: " +
+            Number(std::round(n / (2.0 * std::numbers::pi * size) * 100.0) / 100.0) +
+            " humans per metre of circle)";
+    fix = "circle_radius >= ~" + Number(std::ceil(1.25 * size * n / placed * 10.0) / 10.0);
+  } else {
+    where = "square_crossing (square_width " + Number(size) + " m: " +
+            Number(std::round(n / (size * size) * 100.0) / 100.0) + " humans per m^2)";
+    fix = "square_width >= ~" + Number(std::ceil(1.25 * size * std::sqrt(n / placed) * 10.0) / 10.0);
+  }
   throw std::runtime_error("crowdnav: cannot place human " + std::to_string(human + 1) + " of " +
-                           std::to_string(request.num_humans) + " in " + scenario + " after " +
-                           std::to_string(kMaxTries) +
-                           " tries: too many humans for the circle or square. Fix: lower "
-                           "num_humans or raise circle_radius / square_width");
+                           std::to_string(request.num_humans) + " in " + where + ": after " +
+                           std::to_string(kMaxTries) + " tries no spot is " + Number(gap) +
+                           " m from every start and goal placed so far. Fix: fewer humans, or " +
+                           fix + " for " + std::to_string(request.num_humans) + " humans");
 }
 
 // generate_circle_crossing_human: angle, x noise, y noise; rejected when closer than
@@ -64,7 +83,7 @@ void CircleHuman(double radius, const ScenarioRequest& request, int index,
       return;
     }
   }
-  Fail(index, request, "circle_crossing");
+  Fail(index, request, true, radius);
 }
 
 // generate_square_crossing_human: side sign first, then the start (tested against placed
@@ -87,7 +106,7 @@ void SquareHuman(double width, const ScenarioRequest& request, int index,
     *start = Vec2(px, py);
     ok = clear(*start, false);
   }
-  if (!ok) Fail(index, request, "square_crossing");
+  if (!ok) Fail(index, request, false, width);
   ok = false;
   for (int t = 0; t < kMaxTries && !ok; ++t) {
     const double gx = rng.Uniform() * width * 0.5 * -sign;
@@ -95,7 +114,7 @@ void SquareHuman(double width, const ScenarioRequest& request, int index,
     *goal = Vec2(gx, gy);
     ok = clear(*goal, true);
   }
-  if (!ok) Fail(index, request, "square_crossing");
+  if (!ok) Fail(index, request, false, width);
 }
 
 }  // namespace

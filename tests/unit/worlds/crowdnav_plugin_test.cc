@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <numbers>
 
 #include "crowdsim/plugin_registry.h"
@@ -143,6 +144,32 @@ TEST_F(CrowdNavPlugin, RadiusAndCountAreParameters) {
   ASSERT_EQ(s.humans.size(), 10u);
   for (const HumanSpec& h : s.humans) EXPECT_LE(std::abs(h.start.norm() - 6.0), 0.71);
   EXPECT_THROW(Make()->Make(Request(1, 200)), std::runtime_error);
+}
+
+// A crowd too dense to place is an error that says how dense, and a size that holds it does.
+TEST_F(CrowdNavPlugin, ACrowdThatDoesNotFitNamesItsDensityAndASizeThatFits) {
+  auto message = [&](std::map<std::string, ParamValue> values, int humans, int seeds = 1) {
+    try {
+      for (int seed = 0; seed < seeds; ++seed) Make(values)->Make(Request(seed, humans));
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(placed)");
+  };
+  const std::string circle = message({}, 30);
+  EXPECT_NE(circle.find("circle_radius 4 m: 1.19 humans per metre of circle"), std::string::npos) << circle;
+  const auto fix = circle.find("circle_radius >= ~");
+  ASSERT_NE(fix, std::string::npos) << circle;
+  const double radius = std::stod(circle.substr(fix + 18));
+  EXPECT_EQ(message({{"circle_radius", radius}}, 30, 20), "(placed)");
+
+  const std::string square = message({{"scenario", std::string("square_crossing")}}, 300);
+  EXPECT_NE(square.find("square_width 10 m: 3 humans per m^2"), std::string::npos) << square;
+  const auto sfix = square.find("square_width >= ~");
+  ASSERT_NE(sfix, std::string::npos) << square;
+  const double width = std::stod(square.substr(sfix + 17));
+  EXPECT_EQ(message({{"scenario", std::string("square_crossing")}, {"square_width", width}}, 300, 20),
+            "(placed)");
 }
 
 }  // namespace
