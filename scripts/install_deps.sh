@@ -16,7 +16,9 @@ packages=(
   python3-dev python3-pybind11 python3-numpy
 )
 if [[ "${1:-}" != "--no-torch" ]]; then
-  packages+=(libtorch-dev libopenblas0-pthread zlib1g-dev)
+  # python3-torch: the torchscript plugin's test scripts and saves tiny TorchScript modules
+  # with it (and examples/python/ train and export policies); the C++ side needs only libtorch.
+  packages+=(libtorch-dev libopenblas0-pthread zlib1g-dev python3-torch)
 fi
 
 missing=()

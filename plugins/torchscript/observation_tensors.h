@@ -1,0 +1,30 @@
+// The robot's observation as the Dict[str, Tensor] a TorchScript policy's forward takes: the
+// layout of the Python package's observations (python/src/observation_arrays.h), as tensors.
+//   robot (9,) float64: x, y, vx, vy, goal x, goal y, radius, v_pref, heading (world frame)
+//   humans (H, 5) float64: x, y, vx, vy, radius of the people seen, robot frame (x to the goal),
+//       padded with zero rows to H = max(`humans`, people seen)
+//   humans_mask (H,) bool: true for real rows
+//   lidar (beams,) float64: the first range sensor's ranges (only when there is one)
+//   time () float64: s since the episode start
+// Includes libtorch: only the policy's .cc files include this header.
+#pragma once
+
+#include <ATen/core/Dict.h>
+#include <ATen/core/Tensor.h>
+
+#include <string>
+
+#include "crowdsim/observation.h"
+
+namespace crowdsim::torchscript {
+
+using ObservationDict = c10::Dict<std::string, at::Tensor>;
+
+/// The observation `obs`, humans padded to at least `humans` rows.
+ObservationDict MakeObservationDict(const Observation& obs, int humans);
+
+/// A stand-in observation for the load-time check of a module's output: robot at the origin,
+/// goal 4 m ahead, v_pref 1, nobody seen, `lidar_beams` ranges of 5 m (none when 0).
+ObservationDict ProbeObservationDict(int humans, int lidar_beams);
+
+}  // namespace crowdsim::torchscript

@@ -1,0 +1,53 @@
+#include "torchscript_config.h"
+
+#include <stdexcept>
+
+namespace crowdsim::torchscript {
+
+const char* OutputName(Output output) {
+  return output == Output::kVelocity ? "velocity" : "action";
+}
+
+ParamSchema Schema() {
+  return {
+      {"weights", ParamType::kString, std::string(""), 0, 0, {},
+       "TorchScript file (torch.jit.script(model).save(path)); the row's `weights:` key sets it"},
+      {"sensors", ParamType::kString, std::string("person"), 0, 0,
+       {"person", "lidar", "lidar+person"},
+       "readings the module gets (the row must configure the matching sensors)"},
+      {"humans", ParamType::kInt, std::int64_t{5}, 0, 1000, {},
+       "rows of `humans` and `humans_mask` (the row's human count; more when more are seen)"},
+      {"lidar_beams", ParamType::kInt, std::int64_t{45}, 1, 3600, {},
+       "size of `lidar` (must match the lidar2d sensor's `beams`)"},
+      {"output", ParamType::kString, std::string("velocity"), 0, 0, {"velocity", "action"},
+       "velocity: (vx, vy) m/s world frame; action: index or 81 scores over CrowdNav's actions"},
+      {"torch_threads", ParamType::kInt, std::int64_t{1}, 1, 256, {},
+       "libtorch intra-op threads (1: deterministic, best for one observation at a time)"},
+  };
+}
+
+TorchScriptConfig ConfigFromParams(const Params& params) {
+  TorchScriptConfig c;
+  const std::string& w = params.GetString("weights");
+  if (w.empty()) {
+    throw std::invalid_argument(
+        "torchscript: parameter 'weights' is empty; give the TorchScript file of the policy "
+        "(row key `weights: model.pt`, written by torch.jit.script(model).save('model.pt'))");
+  }
+  c.weights = params.ResolvePath(w).string();
+  c.sensors = params.GetString("sensors");
+  c.humans = static_cast<int>(params.GetInt("humans"));
+  c.lidar_beams = static_cast<int>(params.GetInt("lidar_beams"));
+  c.output = params.GetString("output") == "action" ? Output::kAction : Output::kVelocity;
+  c.torch_threads = static_cast<int>(params.GetInt("torch_threads"));
+  return c;
+}
+
+std::vector<std::string> SensorPlugins(const TorchScriptConfig& config) {
+  std::vector<std::string> names;
+  if (config.UsesLidar()) names.push_back("lidar2d");
+  if (config.UsesPerson()) names.push_back("person");
+  return names;
+}
+
+}  // namespace crowdsim::torchscript

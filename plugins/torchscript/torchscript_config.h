@@ -1,0 +1,49 @@
+// Settings of the `torchscript` policy, read from its plugin parameters. No libtorch here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "crowdsim/params.h"
+
+namespace crowdsim::torchscript {
+
+/// What the module returns.
+enum class Output {
+  kVelocity,  ///< 2 numbers: vx, vy in m/s, world frame
+  kAction,    ///< an index into, or one score per action of, CrowdNav's 81 holonomic actions
+};
+
+/// CrowdNav's holonomic action set (crowdsim_bench.holonomic_actions()): stop, then 16
+/// directions x 5 exponentially spaced speeds up to v_pref, direction the outer loop.
+inline constexpr int kSpeeds = 5;
+inline constexpr int kDirections = 16;
+inline constexpr int kActionCount = kSpeeds * kDirections + 1;
+
+/// Everything the policy is built from.
+struct TorchScriptConfig {
+  std::string weights;          ///< resolved path of the TorchScript file
+  std::string sensors = "person";  ///< person | lidar | lidar+person
+  int humans = 5;               ///< rows of `humans` / `humans_mask` (more when more are seen)
+  int lidar_beams = 45;         ///< size of `lidar` (must equal the lidar2d sensor's beams)
+  Output output = Output::kVelocity;
+  int torch_threads = 1;        ///< libtorch intra-op threads
+
+  bool UsesPerson() const { return sensors != "lidar"; }
+  bool UsesLidar() const { return sensors != "person"; }
+};
+
+/// The plugin parameters.
+ParamSchema Schema();
+
+/// Reads validated parameters; throws std::invalid_argument naming the parameter, its value
+/// and the fix when they cannot make a policy (e.g. no `weights`).
+TorchScriptConfig ConfigFromParams(const Params& params);
+
+/// Plugin names of the sensors the configuration reads (checked against the row's sensors).
+std::vector<std::string> SensorPlugins(const TorchScriptConfig& config);
+
+/// "velocity" | "action".
+const char* OutputName(Output output);
+
+}  // namespace crowdsim::torchscript

@@ -1,0 +1,20 @@
+# The `torchscript` policy plugin (plugins/torchscript): tiny modules scripted and saved by the
+# test with python3-torch run through the CLI (tests/python/test_torchscript_plugin.py). The
+# test exits 77 (skipped) when python3-torch is missing; the Python package, when built, is on
+# PYTHONPATH for the layout check against crowdsim_bench.evaluate().
+if(CROWDSIM_BUILD_TESTS AND TARGET crowdsim_plugin_torchscript)
+  if(CROWDSIM_PYTHON_EXECUTABLE)
+    set(_torchscript_python "${CROWDSIM_PYTHON_EXECUTABLE}")
+  else()
+    find_package(Python3 COMPONENTS Interpreter)
+    set(_torchscript_python "${Python3_EXECUTABLE}")
+  endif()
+  if(_torchscript_python)
+    add_test(NAME torchscript_plugin
+      COMMAND "${_torchscript_python}" tests/python/test_torchscript_plugin.py
+      WORKING_DIRECTORY "${CMAKE_SOURCE_DIR}")
+    set_tests_properties(torchscript_plugin PROPERTIES LABELS integration TIMEOUT 300
+      SKIP_RETURN_CODE 77
+      ENVIRONMENT "CROWDSIM_BENCH=$<TARGET_FILE:crowdsim-bench>;PYTHONPATH=${CROWDSIM_PYTHON_DIR}")
+  endif()
+endif()
