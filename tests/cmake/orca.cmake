@@ -19,4 +19,7 @@ if(CROWDSIM_BUILD_BENCHMARKS)
   crowdsim_add_benchmark(orca_bench
     SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bench/orca/orca_bench.cc
     LIBS crowdsim_orca_solver crowdsim_orca_test_sim)
+  crowdsim_add_benchmark(rvo2_scenarios_bench
+    SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bench/orca/rvo2_scenarios_bench.cc
+    LIBS crowdsim_orca_solver crowdsim_orca_test_sim)
 endif()

@@ -1,0 +1,143 @@
+// RVO2's own examples run to completion on our ORCA solver (plugins/orca) with the two-pass
+// test simulator, as RVO2's example programs run them: Circle with 250 agents and Blocks with
+// 100. Time per step (preferred velocities + the simulator's step, as in RVO2's loop) and, as
+// counters, the steps until every agent arrived, whether all did, and the worst overlap (the
+// deepest pairwise penetration at any step), so that a faster solver that walks agents into
+// each other or never arrives shows here. Issue 14's target: >= 2x RVO2's C++ at -O2 with the
+// same or fewer overlaps, all agents arriving.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "orca_obstacles.h"
+#include "orca_test_sim.h"
+
+namespace crowdsim::orca {
+namespace {
+
+using testing::SimAgent;
+using testing::TestSim;
+
+/// One of RVO2's examples: its set-up, its preferred-velocity rule and its arrival test.
+struct Rvo2Example {
+  std::string name;
+  TestSim (*make)();
+  /// Sets every agent's preferred velocity; `rng` draws the perturbation.
+  void (*prefer)(TestSim& sim, std::mt19937& rng);
+  bool (*arrived)(const TestSim& sim);
+  int max_steps;  ///< a run that has not arrived by then is reported with all_arrived 0
+};
+
+// Towards the goal at most 1 m/s per metre away (RVO2's examples), plus a perturbation of
+// at most `noise` m/s in a random direction.
+void PreferGoal(TestSim& sim, std::mt19937& rng, double noise) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (SimAgent& a : sim.agents()) {
+    const Vec2 d = a.goal - a.state.position;
+    const double phi = 2.0 * std::numbers::pi * unit(rng);
+    a.pref_velocity = (d.squaredNorm() > 1.0 ? Vec2(d.normalized()) : d) +
+                      noise * unit(rng) * Vec2(std::cos(phi), std::sin(phi));
+  }
+}
+
+// Every agent within `distance(agent)` of its goal (RVO2's reachedGoal).
+template <typename Distance>
+bool AllWithin(const TestSim& sim, Distance distance) {
+  return std::all_of(sim.agents().begin(), sim.agents().end(), [&](const SimAgent& a) {
+    const double r = distance(a);
+    return (a.state.position - a.goal).squaredNorm() <= r * r;
+  });
+}
+
+// Circle.cc: 250 agents on a circle of radius 200 m walk to the antipode; time step 0.25,
+// setAgentDefaults(neighbour dist 15, max neighbours 10, horizons 10 and 10, radius 1.5,
+// max speed 2); done when every agent is within its radius of its goal.
+TestSim MakeCircle() {
+  constexpr int kAgents = 250;
+  TestSim sim(0.25, OrcaObstacles());
+  for (int i = 0; i < kAgents; ++i) {
+    const double a = i * 2.0 * std::numbers::pi / kAgents;
+    SimAgent agent;
+    agent.neighbor_dist = 15.0;
+    agent.max_neighbors = 10;
+    agent.params = OrcaParams{10.0, 10.0, 2.0};
+    agent.state.radius = 1.5;
+    agent.state.position = 200.0 * Vec2(std::cos(a), std::sin(a));
+    agent.goal = -agent.state.position;
+    sim.AddAgent(agent);
+  }
+  return sim;
+}
+
+const Rvo2Example kCircle{
+    "circle250", &MakeCircle,
+    // RVO2's Circle has no perturbation, but a perfectly symmetric ring is a fixed point of
+    // ORCA in double precision (RVO2 leaves it through float32 rounding of the starts): the
+    // agents close in and stand still. <= 1 mm/s, as orca_scenarios_test does.
+    [](TestSim& sim, std::mt19937& rng) { PreferGoal(sim, rng, 1e-3); },
+    [](const TestSim& sim) {
+      return AllWithin(sim, [](const SimAgent& a) { return a.state.radius; });
+    },
+    10000};
+
+// Blocks.cc: 100 agents in four groups through four squares; RVO2 perturbs every preferred
+// velocity by up to 0.0001 m/s and stops when every agent is within 20 m of its goal. Agents
+// can wait long at the squares' corners (orca_scenarios_test: 3,923 steps with its seed).
+const Rvo2Example kBlocks{
+    "blocks100", [] { return testing::MakeBlocksSim(0.25); },
+    [](TestSim& sim, std::mt19937& rng) { PreferGoal(sim, rng, 1e-4); },
+    [](const TestSim& sim) { return AllWithin(sim, [](const SimAgent&) { return 20.0; }); }, 10000};
+
+struct RunReport {
+  int steps = 0;
+  bool arrived = false;
+  double worst_overlap = 0.0;  ///< m, >= 0
+};
+
+// Runs `example` from its start until it arrives or reaches max_steps; the overlap check is
+// quadratic in the agents, so only the untimed report run makes it.
+RunReport Run(const Rvo2Example& example, TestSim& sim, bool measure_overlap) {
+  std::mt19937 rng(11);
+  RunReport report;
+  while (!(report.arrived = example.arrived(sim)) && report.steps < example.max_steps) {
+    example.prefer(sim, rng);
+    sim.Step();
+    ++report.steps;
+    if (measure_overlap)
+      report.worst_overlap = std::max(report.worst_overlap, -testing::MinPairGap(sim.agents()));
+  }
+  return report;
+}
+
+void BM_Rvo2Example(benchmark::State& state, const Rvo2Example& example) {
+  // The report run, once per example however often the library calls this function.
+  static std::map<std::string, RunReport> reports;
+  if (!reports.count(example.name)) {
+    TestSim sim = example.make();
+    reports[example.name] = Run(example, sim, true);
+  }
+  const RunReport& report = reports[example.name];
+  int steps = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    TestSim sim = example.make();
+    state.ResumeTiming();
+    steps = Run(example, sim, false).steps;  // the same seed: the report run's steps
+  }
+  // An inverted iteration-invariant rate: CPU time / (iterations x steps), shown as a time.
+  state.counters["per_step"] = benchmark::Counter(
+      steps, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["steps"] = steps;
+  state.counters["all_arrived"] = report.arrived ? 1 : 0;
+  state.counters["worst_overlap_m"] = report.worst_overlap;
+}
+BENCHMARK_CAPTURE(BM_Rvo2Example, circle250, kCircle)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Rvo2Example, blocks100, kBlocks)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace crowdsim::orca
