@@ -38,7 +38,8 @@ const std::vector<Command>& Commands() {
 )"},
     {"validate", crowdsim::cli::ValidateCommand, R"(  crowdsim-bench validate FILE.yaml... [--set KEY.PATH=VALUE]...
       checks suites (and training files) without running them; reports every error with
-      file:line:col
+      file:line:col, then builds every row as `run` does (weights and world files read, the
+      sensors its policy needs, episode 0's scenario made and checked), each error naming the row
 )"},
     {"train", crowdsim::cli::TrainCommand, R"(  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet] [--set KEY.PATH=VALUE]...
       trains a learned policy (cadrl, sarl): imitation of ORCA, then RL; writes

@@ -68,8 +68,10 @@ class Progress {
   int last_decile_ = -1;
 };
 
-/// Builds row `r`'s world, sensors and policies once and checks that the robot has the sensors
-/// it needs; returns the world. Throws RunError naming the row.
+/// Builds row `r`'s world, sensors and policies once, checks that the robot has the sensors
+/// it needs, and makes and checks episode 0's scenario as the run does (a world too small for
+/// the row's humans fails here, in `validate` too); returns the world. Throws RunError naming
+/// the row.
 std::shared_ptr<WorldSource> PreflightRow(const Suite& suite, size_t r, PluginRegistry& registry) {
   const RowSpec& row = suite.rows[r];
   const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
@@ -86,6 +88,11 @@ std::shared_ptr<WorldSource> PreflightRow(const Suite& suite, size_t r, PluginRe
         throw RunError(where + ": policy '" + row.policy.plugin + "' needs the sensor '" + needed +
                        "'; add it to the row's sensors list");
       }
+    }
+    try {
+      CheckScenario(world->Make(MakeEpisodeRequest(suite, row, *world, 0)), suite.sim);
+    } catch (const std::exception& e) {
+      throw RunError(where + ": the scenario of episode 0 cannot be made: " + e.what());
     }
     return world;
   } catch (const PluginError& e) {

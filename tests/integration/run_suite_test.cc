@@ -385,6 +385,70 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_NE(mtext.find("suite file does not exist"), std::string::npos) << mtext;
 }
 
+// `validate` runs `run`'s preflight: every row's plugins built (weights read, world files read,
+// the sensors the policy needs) and episode 0's scenario made and checked, so none of these
+// says "ok" and then fails in `run`. Each suite has one bad row, named in the message.
+TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
+  const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
+  const fs::path models = testing::SourceDir() / "results" / "models" / "cadrl_crowdnav";
+  // cadrl_crowdnav's best.pt: CADRL, person sensor, 81 actions.
+  const std::string cadrl_params = "{sensors: person, speed_samples: 5, rotation_samples: 16, stop_action: true}";
+  const fs::path garbage = dir_.Write("garbage.pt", "not a torch archive");
+  std::string bytes = ReadText(models / "best.pt");
+  bytes[bytes.size() / 3] ^= 0x10;  // inside the tensors' data, far from the zip directory
+  const fs::path damaged = dir_.Write("damaged.pt", bytes);
+  std::string world = ReadText(testing::SourceDir() / "worlds" / "gibson" / "easy.yaml");
+  const size_t rect = world.find("rectangles:\n  - [");
+  ASSERT_NE(rect, std::string::npos);
+  world.insert(rect + 12, "  - [1, 1, -1, -1]\n");
+  const fs::path bad_world = dir_.Write("bad_world.yaml", world);
+
+  struct Case {
+    std::string name, row, expected;
+  };
+  const std::vector<Case> cases = {
+      {"missing weights",
+       "policy: cadrl, weights: " + (dir_.path() / "missing.pt").string() + ", params: " + cadrl_params,
+       "missing.pt' does not exist"},
+      {"garbage weights", "policy: cadrl, weights: " + garbage.string() + ", params: " + cadrl_params,
+       "is not a libtorch archive"},
+      {"damaged weights", "policy: cadrl, weights: " + damaged.string() + ", params: " + cadrl_params,
+       "damaged.pt' is damaged: entry '"},
+      {"weights of another model",
+       "policy: sarl, weights: " + (models / "best.pt").string() + ", params: " + cadrl_params,
+       "was trained for another configuration (model: expected sarl, found cadrl"},
+      {"weights of another sensor set",
+       "policy: cadrl, sensors: [person, lidar2d], weights: " + (models / "best.pt").string() +
+           ", params: {sensors: lidar+person, speed_samples: 5, rotation_samples: 16, stop_action: true}",
+       "sensors: expected lidar+person, found person"},
+      {"world file with a bad rectangle",
+       "policy: linear, world: {source: floorplan, file: " + bad_world.string() + "}, humans: {count: 2}",
+       "bad_world.yaml:"},
+      {"cadrl without lidar2d", "policy: cadrl, params: {sensors: lidar+person}",
+       "policy 'cadrl' needs the sensor 'lidar2d'"},
+      {"impossible human count",
+       "policy: linear, world: {source: random_rect, obstacles: 1, split: test}, humans: {count: 500}",
+       "the scenario of episode 0 cannot be made: random_rect"},
+  };
+  for (const Case& c : cases) {
+    const fs::path suite = dir_.Write("preflight.yaml",
+        "name: preflight\nepisodes: 2\nseed: 1\nworld: {source: crowdnav, scenario: circle_crossing}\n"
+        "humans: {count: 5, policy: orca}\nrobot: {sensors: [person]}\nrows:\n"
+        "  - {label: fine, policy: linear}\n  - {label: bad, " + c.row + "}\n");
+    auto [rc, text] = Shell(exe + " validate " + suite.string());
+    EXPECT_EQ(rc, 2) << c.name << ": " << text;
+    EXPECT_NE(text.find("row 'bad' (rows[1]): "), std::string::npos) << c.name << ": " << text;
+    EXPECT_NE(text.find(c.expected), std::string::npos) << c.name << ": " << text;
+    EXPECT_EQ(text.find("row 'fine'"), std::string::npos) << c.name << ": " << text;
+  }
+  // The last suite (impossible human count): `run` stops at the same preflight, before any episode.
+  const fs::path out = dir_.path() / "preflight-out";
+  auto [rc, text] = Shell(exe + " run " + (dir_.path() / "preflight.yaml").string() + " --quiet --out " + out.string());
+  EXPECT_EQ(rc, 1) << text;
+  EXPECT_NE(text.find("row 'bad' (rows[1]): the scenario of episode 0 cannot be made"), std::string::npos) << text;
+  EXPECT_FALSE(fs::exists(out / "episodes.csv"));
+}
+
 TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
   auto [rc, text] = Shell(exe + " --version");
