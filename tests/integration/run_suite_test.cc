@@ -480,9 +480,12 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   // The completion script knows every command and each command's options, and is valid bash.
   const auto [c, completion] = Shell(exe + " completion bash");
   EXPECT_EQ(c, 0);
-  EXPECT_NE(completion.find("run merge validate train floorplan render report list-plugins"), std::string::npos);
+  EXPECT_NE(completion.find("run merge validate train train-all floorplan render report list-plugins"),
+            std::string::npos) << completion;
   EXPECT_NE(completion.find("train) COMPREPLY=($(compgen -W \"--resume --out --seed --quiet --set --help\""),
             std::string::npos) << completion;
+  EXPECT_NE(completion.find("train-all) COMPREPLY=($(compgen -W \"--quiet --set --help\""), std::string::npos)
+      << completion;
   const auto script = dir_.Write("completion.bash", completion);
   const auto [b, bash_text] = Shell("bash -n " + script.string());
   EXPECT_EQ(b, 0) << bash_text;
