@@ -1,6 +1,6 @@
 // The `cadrl` plugin: CADRL and CADRL++ (value_rl with the pairwise network).
 #include "crowdsim/plugin_abi.h"
-#include "value_policy.h"
+#include "value_rl/value_policy.h"
 
 namespace crowdsim::cadrl {
 namespace {

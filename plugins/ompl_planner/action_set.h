@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "crowdsim/collision_world.h"
-#include "orca_solver.h"
+#include "orca/solver.h"
 
 namespace crowdsim::ompl_planner {
 

@@ -11,8 +11,8 @@
 #include "crowdsim/policy.h"
 #include "crowdsim/rng.h"
 #include "global_planner.h"
-#include "orca_obstacles.h"
-#include "orca_solver.h"
+#include "orca/obstacles.h"
+#include "orca/solver.h"
 #include "path_follower.h"
 #include "planner_config.h"
 

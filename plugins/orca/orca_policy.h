@@ -9,10 +9,10 @@
 
 #include "crowdsim/params.h"
 #include "crowdsim/policy.h"
-#include "orca_guidance.h"
-#include "orca_obstacles.h"
-#include "orca_solver.h"
-#include "orca_yielding.h"
+#include "orca/guidance.h"
+#include "orca/obstacles.h"
+#include "orca/solver.h"
+#include "orca/yielding.h"
 
 namespace crowdsim::orca {
 

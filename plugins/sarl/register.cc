@@ -1,6 +1,6 @@
 // The `sarl` plugin: SARL and SARL++ (value_rl with the attention network).
 #include "crowdsim/plugin_abi.h"
-#include "value_policy.h"
+#include "value_rl/value_policy.h"
 
 namespace crowdsim::sarl {
 namespace {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "zip_crc_check.h"
+#include "value_rl/zip_crc_check.h"
 
 namespace crowdsim::torchscript {
 namespace fs = std::filesystem;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "action_space.h"
+#include "value_rl/action_space.h"
 #include "module_file.h"
 #include "module_output.h"
 #include "observation_tensors.h"

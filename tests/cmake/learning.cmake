@@ -1,4 +1,4 @@
-# The learned policies (plugins/value_rl, cadrl, sarl) and the trainer (harness/src/training).
+# The learned policies (plugins/lib/value_rl, cadrl, sarl) and the trainer (harness/src/training).
 if(CROWDSIM_WITH_TORCH)
   if(CROWDSIM_BUILD_TESTS OR CROWDSIM_BUILD_BENCHMARKS)
     # Training helpers shared by the tests and the benchmarks.

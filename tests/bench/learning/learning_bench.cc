@@ -6,8 +6,8 @@
 #include "crowdsim/episode.h"
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/rng.h"
-#include "state_encoding.h"
-#include "value_policy.h"
+#include "value_rl/state_encoding.h"
+#include "value_rl/value_policy.h"
 
 namespace crowdsim::value_rl {
 namespace {

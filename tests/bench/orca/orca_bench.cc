@@ -10,8 +10,8 @@
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/plugin_registry.h"
-#include "orca_obstacles.h"
-#include "orca_solver.h"
+#include "orca/obstacles.h"
+#include "orca/solver.h"
 #include "orca_test_sim.h"
 #include "test_paths.h"
 

@@ -14,7 +14,7 @@
 #include <random>
 #include <string>
 
-#include "orca_obstacles.h"
+#include "orca/obstacles.h"
 #include "orca_test_sim.h"
 
 namespace crowdsim::orca {

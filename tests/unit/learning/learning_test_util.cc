@@ -4,9 +4,9 @@
 #include <stdexcept>
 
 #include "crowdsim/plugin_registry.h"
-#include "state_encoding.h"
+#include "value_rl/state_encoding.h"
 #include "crowdsim/training/train_spec.h"
-#include "value_policy.h"
+#include "value_rl/value_policy.h"
 
 namespace crowdsim::testing {
 

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <set>
 
-#include "action_space.h"
+#include "value_rl/action_space.h"
 #include "crowdsim/lookahead.h"
-#include "state_encoding.h"
-#include "value_policy.h"
+#include "value_rl/state_encoding.h"
+#include "value_rl/value_policy.h"
 
 namespace crowdsim::value_rl {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <fstream>
 
-#include "state_encoding.h"
+#include "value_rl/state_encoding.h"
 #include "temp_dir.h"
-#include "value_network.h"
-#include "value_policy.h"
+#include "value_rl/value_network.h"
+#include "value_rl/value_policy.h"
 
 namespace crowdsim::value_rl {
 namespace {

@@ -1,5 +1,5 @@
 // The roadmap and the path following that keep ORCA agents from stalling behind walls.
-#include "orca_guidance.h"
+#include "orca/guidance.h"
 
 #include <gtest/gtest.h>
 
@@ -7,11 +7,11 @@
 #include <cmath>
 #include <vector>
 
-#include "orca_geometry.h"
-#include "orca_obstacles.h"
-#include "orca_roadmap.h"
-#include "orca_solver.h"
-#include "orca_yielding.h"
+#include "orca/geometry.h"
+#include "orca/obstacles.h"
+#include "orca/roadmap.h"
+#include "orca/solver.h"
+#include "orca/yielding.h"
 
 namespace crowdsim::orca {
 namespace {

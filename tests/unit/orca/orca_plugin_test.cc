@@ -7,7 +7,7 @@
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/plugin_registry.h"
-#include "orca_geometry.h"
+#include "orca/geometry.h"
 #include "test_paths.h"
 
 namespace crowdsim {

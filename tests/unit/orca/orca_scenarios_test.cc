@@ -9,9 +9,9 @@
 #include <random>
 #include <vector>
 
-#include "orca_geometry.h"
-#include "orca_obstacles.h"
-#include "orca_solver.h"
+#include "orca/geometry.h"
+#include "orca/obstacles.h"
+#include "orca/solver.h"
 #include "orca_test_sim.h"
 
 namespace crowdsim::orca {

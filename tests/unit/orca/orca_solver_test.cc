@@ -1,6 +1,6 @@
 // The ORCA solver on small scenes: linear programs, obstacle processing, agents swapping,
 // walls and corners, speed limit.
-#include "orca_solver.h"
+#include "orca/solver.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <random>
 #include <vector>
 
-#include "orca_geometry.h"
-#include "orca_linear_program.h"
-#include "orca_obstacles.h"
+#include "orca/geometry.h"
+#include "orca/linear_program.h"
+#include "orca/obstacles.h"
 #include "orca_test_sim.h"
 
 namespace crowdsim::orca {

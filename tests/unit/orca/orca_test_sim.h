@@ -7,8 +7,8 @@
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/agent_state.h"
-#include "orca_obstacles.h"
-#include "orca_solver.h"
+#include "orca/obstacles.h"
+#include "orca/solver.h"
 
 namespace crowdsim::orca::testing {
 

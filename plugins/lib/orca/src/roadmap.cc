@@ -1,4 +1,4 @@
-#include "orca_roadmap.h"
+#include "orca/roadmap.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <mutex>
 #include <queue>
 
-#include "orca_geometry.h"
+#include "orca/geometry.h"
 
 namespace crowdsim::orca {
 namespace {

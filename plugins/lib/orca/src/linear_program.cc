@@ -1,10 +1,10 @@
-#include "orca_linear_program.h"
+#include "orca/linear_program.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "orca_geometry.h"
+#include "orca/geometry.h"
 
 namespace crowdsim::orca {
 namespace {

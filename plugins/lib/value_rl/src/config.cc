@@ -1,4 +1,4 @@
-#include "value_rl_config.h"
+#include "value_rl/config.h"
 
 #include <stdexcept>
 

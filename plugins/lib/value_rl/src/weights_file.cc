@@ -1,11 +1,11 @@
-#include "weights_file.h"
+#include "value_rl/weights_file.h"
 
 #include <torch/serialize/input-archive.h>
 #include <torch/serialize/output-archive.h>
 
 #include <stdexcept>
 
-#include "zip_crc_check.h"
+#include "value_rl/zip_crc_check.h"
 
 namespace crowdsim::value_rl {
 namespace fs = std::filesystem;

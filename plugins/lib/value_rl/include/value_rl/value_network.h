@@ -9,7 +9,7 @@
 #include <span>
 
 #include "crowdsim/trainable.h"
-#include "value_rl_config.h"
+#include "value_rl/config.h"
 
 namespace crowdsim::value_rl {
 

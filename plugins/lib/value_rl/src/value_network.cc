@@ -1,4 +1,4 @@
-#include "value_network.h"
+#include "value_rl/value_network.h"
 
 #include <torch/nn/modules/activation.h>
 #include <torch/nn/modules/linear.h>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "state_encoding.h"
+#include "value_rl/state_encoding.h"
 
 namespace crowdsim::value_rl {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "crowdsim/geometry.h"
-#include "orca_roadmap.h"
+#include "orca/roadmap.h"
 
 namespace crowdsim::orca {
 

@@ -1,4 +1,4 @@
-#include "state_encoding.h"
+#include "value_rl/state_encoding.h"
 
 #include <algorithm>
 #include <stdexcept>

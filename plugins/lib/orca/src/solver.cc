@@ -1,9 +1,9 @@
-#include "orca_solver.h"
+#include "orca/solver.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "orca_geometry.h"
+#include "orca/geometry.h"
 
 namespace crowdsim::orca {
 namespace {

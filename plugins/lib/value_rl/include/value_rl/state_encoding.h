@@ -9,7 +9,7 @@
 #include "crowdsim/agent_state.h"
 #include "crowdsim/observation.h"
 #include "crowdsim/trainable.h"
-#include "value_rl_config.h"
+#include "value_rl/config.h"
 
 namespace crowdsim::value_rl {
 

@@ -1,4 +1,4 @@
-#include "orca_geometry.h"
+#include "orca/geometry.h"
 
 #include <algorithm>
 #include <array>

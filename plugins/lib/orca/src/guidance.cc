@@ -1,4 +1,4 @@
-#include "orca_guidance.h"
+#include "orca/guidance.h"
 
 namespace crowdsim::orca {
 

@@ -1,4 +1,4 @@
-#include "zip_crc_check.h"
+#include "value_rl/zip_crc_check.h"
 
 #include <zlib.h>
 

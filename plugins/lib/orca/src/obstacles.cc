@@ -1,10 +1,10 @@
-#include "orca_obstacles.h"
+#include "orca/obstacles.h"
 
 #include <algorithm>
 #include <array>
 #include <stdexcept>
 
-#include "orca_geometry.h"
+#include "orca/geometry.h"
 
 namespace crowdsim::orca {
 

@@ -1,4 +1,4 @@
-#include "action_space.h"
+#include "value_rl/action_space.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "orca_yielding.h"
+#include "orca/yielding.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "value_policy.h"
+#include "value_rl/value_policy.h"
 
 #include <dlfcn.h>
 #include <malloc.h>
@@ -14,12 +14,12 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "action_space.h"
+#include "value_rl/action_space.h"
 #include "crowdsim/lookahead.h"
 #include "crowdsim/rng.h"
-#include "state_encoding.h"
-#include "value_network.h"
-#include "weights_file.h"
+#include "value_rl/state_encoding.h"
+#include "value_rl/value_network.h"
+#include "value_rl/weights_file.h"
 
 namespace crowdsim::value_rl {
 namespace fs = std::filesystem;

@@ -11,7 +11,7 @@
 #include "crowdsim/params.h"
 #include "crowdsim/policy.h"
 #include "crowdsim/trainable.h"
-#include "value_rl_config.h"
+#include "value_rl/config.h"
 
 namespace crowdsim::value_rl {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "crowdsim/geometry.h"
-#include "orca_linear_program.h"
-#include "orca_obstacles.h"
+#include "orca/linear_program.h"
+#include "orca/obstacles.h"
 
 namespace crowdsim::orca {
 
