@@ -3,11 +3,7 @@
 # the merged manifest; --allow-mixed-commits joins shards of different commits and records each.
 #   tests/cluster/merge_commits_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
-build="$1"; source="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-bin="$build/bin/crowdsim-bench"
+source "$(dirname "$0")/../support/cli_test.sh" "$@"
 cd "$source"
 field() { sed -n "s/^  \"$2\": \"\(.*\)\",\$/\1/p" "$1/manifest.json"; }  # field DIR KEY
 valid_json() {

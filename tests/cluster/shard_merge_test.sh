@@ -4,11 +4,7 @@
 # columns (found by their header names). A changed file must fail the comparison (checked).
 #   tests/cluster/shard_merge_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
-build="$1"; source="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-bin="$build/bin/crowdsim-bench"
+source "$(dirname "$0")/../support/cli_test.sh" "$@"
 cd "$source"
 
 # The timing columns: episodes.csv's decision_time_us, the tables' "decision µs" (the

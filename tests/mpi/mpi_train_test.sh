@@ -4,13 +4,7 @@
 # finished trainings. Tiny budgets (a few episodes): this checks the campaign, not learning.
 #   tests/mpi/mpi_train_test.sh BUILD_DIR SOURCE_DIR MPIEXEC
 set -euo pipefail
-build="$1"; source="$2"; mpiexec="$3"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-bin="$build/bin/crowdsim-bench"
-flags=(--oversubscribe)
-[[ $(id -u) -eq 0 ]] && flags+=(--allow-run-as-root)
+source "$(dirname "$0")/../support/cli_test.sh" "$@"
 campaign=(suites/train/cadrl_pp_lidar_rect0.yaml suites/train/sarl_person_rect0.yaml@7)
 small=(--quiet --set training.il_episodes=4 --set training.il_epochs=1 --set training.rl_episodes=4
        --set training.validation_interval=2 --set training.validation_episodes=2
@@ -19,7 +13,7 @@ for d in mpi single; do
   mkdir -p "$work/$d"
   cp -r "$source/suites" "$source/worlds" "$work/$d/"
 done
-(cd "$work/mpi" && "$mpiexec" "${flags[@]}" -n 2 "$bin" train-all "${campaign[@]}" "${small[@]}") \
+(cd "$work/mpi" && "$mpiexec" "${mpi_flags[@]}" -n 2 "$bin" train-all "${campaign[@]}" "${small[@]}") \
   > "$work/mpi.log" 2>&1 || { cat "$work/mpi.log"; fail "mpirun -n 2 train-all"; }
 grep -q "rank 0 of 2: suites/train/cadrl_pp_lidar_rect0.yaml" "$work/mpi.log" &&
   grep -q "rank 1 of 2: suites/train/sarl_person_rect0.yaml@7" "$work/mpi.log" ||
@@ -33,7 +27,7 @@ for model in cadrl_pp_lidar_rect0 sarl_person_rect0_seed7; do
     cmp -s "$a" "$b" || fail "$model/$f differs between mpirun -n 2 and one process"
   done
 done
-(cd "$work/mpi" && "$mpiexec" "${flags[@]}" -n 2 "$bin" train-all "${campaign[@]}" "${small[@]}") \
+(cd "$work/mpi" && "$mpiexec" "${mpi_flags[@]}" -n 2 "$bin" train-all "${campaign[@]}" "${small[@]}") \
   > "$work/again.log" 2>&1 || { cat "$work/again.log"; fail "second mpirun"; }
 [[ $(grep -c "finished already" "$work/again.log") == 2 ]] || { cat "$work/again.log"; fail "a relaunch retrained"; }
 echo "mpirun -n 2 train-all equals the single process, and a relaunch skips finished trainings: ok"
