@@ -57,22 +57,7 @@ bool AllWithin(const TestSim& sim, Distance distance) {
 // Circle.cc: 250 agents on a circle of radius 200 m walk to the antipode; time step 0.25,
 // setAgentDefaults(neighbour dist 15, max neighbours 10, horizons 10 and 10, radius 1.5,
 // max speed 2); done when every agent is within its radius of its goal.
-TestSim MakeCircle() {
-  constexpr int kAgents = 250;
-  TestSim sim(0.25, OrcaObstacles());
-  for (int i = 0; i < kAgents; ++i) {
-    const double a = i * 2.0 * std::numbers::pi / kAgents;
-    SimAgent agent;
-    agent.neighbor_dist = 15.0;
-    agent.max_neighbors = 10;
-    agent.params = OrcaParams{10.0, 10.0, 2.0};
-    agent.state.radius = 1.5;
-    agent.state.position = 200.0 * Vec2(std::cos(a), std::sin(a));
-    agent.goal = -agent.state.position;
-    sim.AddAgent(agent);
-  }
-  return sim;
-}
+TestSim MakeCircle() { return testing::MakeRvo2Circle(250, 200.0, 0.25); }
 
 const Rvo2Example kCircle{
     "circle250", &MakeCircle,

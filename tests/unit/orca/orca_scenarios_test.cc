@@ -21,6 +21,7 @@ using testing::SimAgent;
 using testing::TestSim;
 using testing::BlocksSquares;
 using testing::MakeBlocksSim;
+using testing::MakeRvo2Circle;
 
 constexpr double kDt = 0.25;
 
@@ -43,20 +44,7 @@ struct CircleResult {
 CircleResult RunCircle(bool mirror) {
   constexpr int kAgents = 50;
   constexpr double kCircle = 200.0 * kAgents / 250.0;
-  TestSim sim(kDt, OrcaObstacles());
-  for (int i = 0; i < kAgents; ++i) {
-    const double a = i * 2.0 * std::numbers::pi / kAgents;
-    SimAgent agent;
-    // setAgentDefaults(15, 10, 10, 10, 1.5, 2.0)
-    agent.neighbor_dist = 15.0;
-    agent.max_neighbors = 10;
-    agent.params = OrcaParams{10.0, 10.0, 2.0};
-    agent.state.radius = 1.5;
-    agent.state.position = kCircle * Vec2(std::cos(a), std::sin(a));
-    if (mirror) agent.state.position.x() = -agent.state.position.x();
-    agent.goal = -agent.state.position;
-    sim.AddAgent(agent);
-  }
+  TestSim sim = MakeRvo2Circle(kAgents, kCircle, kDt, mirror);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   CircleResult result;

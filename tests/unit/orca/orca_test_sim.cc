@@ -1,6 +1,8 @@
 #include "orca_test_sim.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace crowdsim::orca::testing {
 
@@ -94,6 +96,23 @@ TestSim MakeBlocksSim(double time_step) {
       add(Vec2(55.0 + 10 * i, -55.0 - 10 * j), Vec2(-75, 75));
       add(Vec2(-55.0 - 10 * i, -55.0 - 10 * j), Vec2(75, 75));
     }
+  }
+  return sim;
+}
+
+TestSim MakeRvo2Circle(int agents, double radius, double time_step, bool mirror) {
+  TestSim sim(time_step, OrcaObstacles());
+  for (int i = 0; i < agents; ++i) {
+    const double a = i * 2.0 * std::numbers::pi / agents;
+    SimAgent agent;
+    agent.neighbor_dist = 15.0;
+    agent.max_neighbors = 10;
+    agent.params = OrcaParams{10.0, 10.0, 2.0};
+    agent.state.radius = 1.5;
+    agent.state.position = radius * Vec2(std::cos(a), std::sin(a));
+    if (mirror) agent.state.position.x() = -agent.state.position.x();
+    agent.goal = -agent.state.position;
+    sim.AddAgent(agent);
   }
   return sim;
 }

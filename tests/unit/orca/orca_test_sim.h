@@ -62,6 +62,11 @@ double MinPairGap(const std::vector<SimAgent>& agents, bool feasible_only = fals
 /// neighbours 15 m / 10, horizons 5 s) in four groups crossing four 30 x 30 m squares.
 TestSim MakeBlocksSim(double time_step);
 
+/// RVO2's Circle example: `agents` agents evenly on a circle of radius `radius` (mirrored in x
+/// when asked), each bound for its antipode, with Circle.cc's agent defaults (neighbour dist
+/// 15, max neighbours 10, horizons 10 and 10, radius 1.5, max speed 2).
+TestSim MakeRvo2Circle(int agents, double radius, double time_step, bool mirror = false);
+
 /// The four squares of Blocks as rectangles (for inside-obstacle checks).
 std::vector<Rect> BlocksSquares();
 
