@@ -3,30 +3,44 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crowdsim/episode_columns.h"
+
 namespace crowdsim {
 
-EpisodeRecord ToRecord(const EpisodeResult& r) {
-  return EpisodeRecord{r.status,       r.time,
-                       r.steps,        r.danger_steps,
-                       r.path_length,  r.min_human_distance,
-                       r.discounted_return, r.decision_time_us};
+namespace {
+
+/// A column's row mean (kEpisodeColumns) over the episodes, in episode order.
+double RowMeanOf(const EpisodeColumn& c, std::span<const EpisodeOutcome> episodes) {
+  const auto member = std::get<double EpisodeOutcome::*>(c.field);
+  double sum = 0.0;
+  int count = 0;
+  for (const EpisodeOutcome& e : episodes) {
+    const double x = e.*member;
+    const bool counted = c.mean == RowMean::kAll ||
+                         (c.mean == RowMean::kSuccesses && e.status == EpisodeStatus::kSuccess) ||
+                         (c.mean == RowMean::kFinite && std::isfinite(x));
+    if (!counted) continue;
+    sum += x;
+    ++count;
+  }
+  return count > 0 ? sum / count : 0.0;
 }
 
-RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit) {
+}  // namespace
+
+RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit) {
   RowMetrics m;
   m.episodes = static_cast<int>(episodes.size());
   if (episodes.empty()) return m;
   int success = 0, coll_h = 0, coll_o = 0, timeout = 0, error = 0;
   long long steps = 0, danger = 0;
-  double nav_time = 0.0, nav_time_sq = 0.0, path = 0.0, ret = 0.0, decision = 0.0, min_dist = 0.0;
-  int with_humans = 0;
+  double nav_time = 0.0, nav_time_sq = 0.0;
   for (const auto& e : episodes) {
     switch (e.status) {
       case EpisodeStatus::kSuccess:
         ++success;
         nav_time += e.time;
         nav_time_sq += e.time * e.time;
-        path += e.path_length;
         break;
       case EpisodeStatus::kCollisionHuman: ++coll_h; break;
       case EpisodeStatus::kCollisionObstacle: ++coll_o; break;
@@ -35,12 +49,6 @@ RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit)
     }
     steps += e.steps;
     danger += e.danger_steps;
-    ret += e.discounted_return;
-    decision += e.decision_time_us;
-    if (e.min_human_distance < kInfinity) {
-      min_dist += e.min_human_distance;
-      ++with_humans;
-    }
   }
   const double n = static_cast<double>(episodes.size());
   m.success_rate = success / n;
@@ -50,11 +58,10 @@ RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit)
   m.timeout_rate = timeout / n;
   m.policy_error_rate = error / n;
   m.nav_time = success > 0 ? nav_time / success : time_limit;
-  m.path_length = success > 0 ? path / success : 0.0;
   m.danger_frequency = steps > 0 ? static_cast<double>(danger) / static_cast<double>(steps) : 0.0;
-  m.discounted_return = ret / n;
-  m.decision_time_us = decision / n;
-  m.min_human_distance = with_humans > 0 ? min_dist / with_humans : 0.0;
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (c.mean != RowMean::kNone) m.*c.row_mean = RowMeanOf(c, episodes);
+  }
   m.successes = success;
   m.collisions = coll_h + coll_o;
   m.timeouts = timeout;
@@ -91,10 +98,11 @@ RowMetrics SummarizeRows(std::span<const RowMetrics> rows) {
     for (auto field : {&RowMetrics::success_rate, &RowMetrics::collision_rate,
                        &RowMetrics::collision_human_rate, &RowMetrics::collision_obstacle_rate,
                        &RowMetrics::timeout_rate, &RowMetrics::policy_error_rate,
-                       &RowMetrics::nav_time, &RowMetrics::danger_frequency,
-                       &RowMetrics::path_length, &RowMetrics::min_human_distance,
-                       &RowMetrics::discounted_return, &RowMetrics::decision_time_us}) {
+                       &RowMetrics::nav_time, &RowMetrics::danger_frequency}) {
       m.*field += r.*field / k;
+    }
+    for (const EpisodeColumn& c : kEpisodeColumns) {
+      if (c.mean != RowMean::kNone) m.*c.row_mean += r.*c.row_mean / k;
     }
     se_known = se_known && std::isfinite(r.nav_time_se);
     se_sq += r.nav_time_se * r.nav_time_se;

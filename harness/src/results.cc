@@ -13,6 +13,8 @@
 #include <functional>
 #include <iomanip>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 #include "crowdsim/csv.h"
 #include "crowdsim/version.h"
@@ -29,13 +31,26 @@ std::string Fixed(double x, int digits) {
   return buf;
 }
 
+/// The statuses an episode can end with, as episodes.csv names them.
+constexpr EpisodeStatus kEndStatuses[] = {EpisodeStatus::kSuccess, EpisodeStatus::kCollisionHuman,
+                                          EpisodeStatus::kCollisionObstacle, EpisodeStatus::kTimeout,
+                                          EpisodeStatus::kPolicyError};
+
 EpisodeStatus ParseStatus(const std::string& s) {
-  for (auto st : {EpisodeStatus::kSuccess, EpisodeStatus::kCollisionHuman,
-                  EpisodeStatus::kCollisionObstacle, EpisodeStatus::kTimeout,
-                  EpisodeStatus::kPolicyError}) {
+  for (auto st : kEndStatuses) {
     if (s == EpisodeStatusName(st)) return st;
   }
   return EpisodeStatus::kRunning;
+}
+
+/// "success, collision_human, ... or policy_error".
+std::string EndStatusNames() {
+  std::string names;
+  const size_t n = std::size(kEndStatuses);
+  for (size_t i = 0; i < n; ++i) {
+    names += (i == 0 ? "" : i + 1 < n ? ", " : " or ") + std::string(EpisodeStatusName(kEndStatuses[i]));
+  }
+  return names;
 }
 
 std::string JsonString(const std::string& s) {
@@ -176,10 +191,9 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
   cols.push_back(metric("danger freq.", &RowMetrics::danger_frequency, 4));
   cols.push_back(metric("coll. human", &RowMetrics::collision_human_rate, 4));
   cols.push_back(metric("coll. obstacle", &RowMetrics::collision_obstacle_rate, 4));
-  cols.push_back(metric("path length", &RowMetrics::path_length, 3));
-  cols.push_back(metric("min. dist.", &RowMetrics::min_human_distance, 3));
-  cols.push_back(metric("return", &RowMetrics::discounted_return, 4));
-  cols.push_back(metric("decision µs", &RowMetrics::decision_time_us, 1));
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (c.mean != RowMean::kNone) cols.push_back(metric(c.table_header, c.row_mean, c.table_decimals));
+  }
   cols.push_back({"errors", [](const TableRow& r) { return Fixed(r.metrics.policy_error_rate, 4); }});
   cols.push_back({"episodes", [](const TableRow& r) { return std::to_string(r.metrics.episodes); }});
   if (!with_uncertainty) return cols;
@@ -210,19 +224,59 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
 }  // namespace
 
 std::string EpisodeCsvHeader() {
-  return "row,episode,seed,layout,status,time,steps,danger_steps,path_length,"
-         "min_human_distance,discounted_return,decision_time_us,humans_at_goal,error";
+  std::string header;
+  for (const EpisodeColumn& c : kEpisodeColumns) header += (header.empty() ? "" : ",") + std::string(c.name);
+  return header;
 }
 
+namespace {
+
+/// The member a column names, in a line (an identity member) or in its outcome.
+template <typename T>
+const T& Value(const EpisodeLine& e, T EpisodeLine::*member) { return e.*member; }
+template <typename T>
+const T& Value(const EpisodeLine& e, T EpisodeOutcome::*member) { return e.outcome.*member; }
+template <typename T>
+T& Value(EpisodeLine& e, T EpisodeLine::*member) { return e.*member; }
+template <typename T>
+T& Value(EpisodeLine& e, T EpisodeOutcome::*member) { return e.outcome.*member; }
+
+std::string FormatCell(const EpisodeColumn& c, const EpisodeLine& e) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        const auto& v = Value(e, member);
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::string>) return CsvField(v);
+        else if constexpr (std::is_same_v<T, EpisodeStatus>) return EpisodeStatusName(v);
+        else if constexpr (std::is_same_v<T, double>) return Fixed(v, c.decimals);
+        else return std::to_string(v);
+      },
+      c.field);
+}
+
+}  // namespace
+
 std::string FormatEpisodeLine(const EpisodeLine& e) {
-  std::ostringstream os;
-  const auto& r = e.record;
-  os << CsvField(e.row) << "," << e.episode << "," << e.seed << "," << CsvField(e.layout) << ","
-     << EpisodeStatusName(r.status) << "," << Fixed(r.time, 2) << "," << r.steps << ","
-     << r.danger_steps << "," << Fixed(r.path_length, 6) << ","
-     << Fixed(r.min_human_distance, 6) << "," << Fixed(r.discounted_return, 8) << ","
-     << Fixed(r.decision_time_us, 3) << "," << e.humans_at_goal << "," << CsvField(e.error);
-  return os.str();
+  std::string line;
+  for (const EpisodeColumn& c : kEpisodeColumns) line += (&c == kEpisodeColumns ? "" : ",") + FormatCell(c, e);
+  return line;
+}
+
+std::string WithoutTimingColumns(const std::string& episodes_csv) {
+  std::istringstream in(episodes_csv);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = SplitCsvLine(line);
+    bool first = true;
+    for (size_t k = 0; k < fields.size(); ++k) {
+      // A line of another width keeps every field (it differs anyway).
+      if (fields.size() == std::size(kEpisodeColumns) && kEpisodeColumns[k].timing) continue;
+      out += (first ? "" : ",") + CsvField(fields[k]);
+      first = false;
+    }
+    out += "\n";
+  }
+  return out;
 }
 
 namespace {
@@ -254,37 +308,46 @@ bool ParseWhole(const std::string& s, Int* out) {
   return ec == std::errc() && end == s.data() + s.size();
 }
 
-// The episode of one line's fields, or why they are not one ("" when they are).
-std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e) {
-  static const std::vector<std::string> names = SplitCsvLine(EpisodeCsvHeader());
-  if (v.size() != names.size()) {
-    return "it has " + std::to_string(v.size()) + " field(s), expected " + std::to_string(names.size());
-  }
-  const auto not_a = [&](size_t k, const char* what) {
-    return "its " + names[k] + " " + Quote(v[k]) + " is not " + what;
-  };
-  e->row = v[0];
-  if (!ParseWhole(v[1], &e->episode)) return not_a(1, "a whole number");
-  if (!ParseWhole(v[2], &e->seed)) return not_a(2, "a seed (a whole number >= 0)");
-  e->layout = v[3];
-  e->record.status = ParseStatus(v[4]);
-  if (e->record.status == EpisodeStatus::kRunning) {
-    return not_a(4, "success, collision_human, collision_obstacle, timeout or policy_error");
-  }
-  if (!ParseReal(v[5], &e->record.time)) return not_a(5, "a number");
-  if (!ParseWhole(v[6], &e->record.steps)) return not_a(6, "a whole number");
-  if (!ParseWhole(v[7], &e->record.danger_steps)) return not_a(7, "a whole number");
-  if (!ParseReal(v[8], &e->record.path_length)) return not_a(8, "a number");
-  e->record.min_human_distance = kInfinity;  // written empty when nobody was there
-  if (!v[9].empty() && !ParseReal(v[9], &e->record.min_human_distance)) return not_a(9, "a number");
-  if (!ParseReal(v[10], &e->record.discounted_return)) return not_a(10, "a number");
-  if (!ParseReal(v[11], &e->record.decision_time_us)) return not_a(11, "a number");
-  if (!ParseWhole(v[12], &e->humans_at_goal)) return not_a(12, "a whole number");
-  e->error = v[13];
-  return "";
+// Reads one cell into `e`; returns what the cell should have been, or "" when it reads.
+std::string ParseCell(const EpisodeColumn& c, const std::string& text, EpisodeLine* e) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        auto& v = Value(*e, member);
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::string>) {
+          v = text;
+          return "";
+        } else if constexpr (std::is_same_v<T, EpisodeStatus>) {
+          v = ParseStatus(text);
+          return v == EpisodeStatus::kRunning ? EndStatusNames() : "";
+        } else if constexpr (std::is_same_v<T, double>) {
+          if (text.empty() && c.empty_is_infinity) {
+            v = kInfinity;
+            return "";
+          }
+          return ParseReal(text, &v) ? "" : "a number";
+        } else if constexpr (std::is_unsigned_v<T>) {
+          return ParseWhole(text, &v) ? "" : "a whole number >= 0";
+        } else {
+          return ParseWhole(text, &v) ? "" : "a whole number";
+        }
+      },
+      c.field);
 }
 
 }  // namespace
+
+std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e) {
+  const size_t n = std::size(kEpisodeColumns);
+  if (v.size() != n) {
+    return "it has " + std::to_string(v.size()) + " field(s), expected " + std::to_string(n);
+  }
+  for (size_t k = 0; k < n; ++k) {
+    const std::string expected = ParseCell(kEpisodeColumns[k], v[k], e);
+    if (!expected.empty()) return "its " + std::string(kEpisodeColumns[k].name) + " " + Quote(v[k]) + " is not " + expected;
+  }
+  return "";
+}
 
 EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
   std::ifstream f(path, std::ios::binary);
@@ -507,12 +570,11 @@ std::string JsonLineTail(const TableRow& line) {
      << ", \"timeout_rate\": " << JsonNumber(m.timeout_rate)
      << ", \"policy_error_rate\": " << JsonNumber(m.policy_error_rate)
      << ", \"nav_time\": " << JsonNumber(m.nav_time)
-     << ", \"danger_frequency\": " << JsonNumber(m.danger_frequency)
-     << ", \"path_length\": " << JsonNumber(m.path_length)
-     << ", \"min_human_distance\": " << JsonNumber(m.min_human_distance)
-     << ", \"discounted_return\": " << JsonNumber(m.discounted_return)
-     << ", \"decision_time_us\": " << JsonNumber(m.decision_time_us)
-     << ", \"success_rate_95\": " << JsonInterval(WilsonInterval95(m.successes, m.episodes))
+     << ", \"danger_frequency\": " << JsonNumber(m.danger_frequency);
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (c.mean != RowMean::kNone) os << ", \"" << c.name << "\": " << JsonNumber(m.*c.row_mean);
+  }
+  os << ", \"success_rate_95\": " << JsonInterval(WilsonInterval95(m.successes, m.episodes))
      << ", \"collision_rate_95\": " << JsonInterval(WilsonInterval95(m.collisions, m.episodes))
      << ", \"timeout_rate_95\": " << JsonInterval(WilsonInterval95(m.timeouts, m.episodes))
      << ", \"nav_time_se\": " << JsonNumber(m.nav_time_se) << "}";

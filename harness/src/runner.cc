@@ -227,9 +227,7 @@ EpisodeLine RunEpisode(const Suite& suite, const RowSpec& row, const WorldSource
   const EpisodeResult& result = episode.Run();
   line.seed = req.seed;
   line.layout = scenario.layout;
-  line.record = ToRecord(result);
-  line.humans_at_goal = result.humans_at_goal;
-  line.error = result.error;
+  line.outcome = result;
   return line;
 }
 
@@ -273,7 +271,7 @@ void RunTasks(const Suite& suite, PluginRegistry& registry,
         failed = true;
         break;
       }
-      progress.Episode(line.record.status == EpisodeStatus::kSuccess);
+      progress.Episode(line.outcome.status == EpisodeStatus::kSuccess);
       (*done)[{line.row, line.episode}] = std::move(line);
     }
   };
@@ -314,11 +312,11 @@ void WriteRunFiles(const Suite& suite, const RunScope& scope, const EpisodeLines
   std::vector<const EpisodeLine*> lines;
   std::set<std::string> labels;
   for (const auto& row : suite.rows) {
-    std::vector<EpisodeRecord> records;
+    std::vector<EpisodeOutcome> records;
     for (int k = 0; k < scope.episodes; ++k) {
       const EpisodeLine& line = done.at({row.label, k});
       lines.push_back(&line);
-      records.push_back(line.record);
+      records.push_back(line.outcome);
     }
     labels.insert(row.label);
     summary->rows.push_back(TableRow{&row, Aggregate(records, suite.sim.time_limit)});

@@ -10,8 +10,8 @@
 namespace crowdsim {
 namespace {
 
-EpisodeRecord Rec(EpisodeStatus s, double time, int steps, int danger, double path = 0, double dmin = kInfinity) {
-  EpisodeRecord r;
+EpisodeOutcome Rec(EpisodeStatus s, double time, int steps, int danger, double path = 0, double dmin = kInfinity) {
+  EpisodeOutcome r;
   r.status = s;
   r.time = time;
   r.steps = steps;
@@ -24,7 +24,7 @@ EpisodeRecord Rec(EpisodeStatus s, double time, int steps, int danger, double pa
 }
 
 TEST(Metrics, PaperColumnsOnHandMadeEpisodes) {
-  const std::vector<EpisodeRecord> e = {
+  const std::vector<EpisodeOutcome> e = {
       Rec(EpisodeStatus::kSuccess, 10.0, 40, 4, 9.0, 0.3),
       Rec(EpisodeStatus::kSuccess, 12.0, 48, 0, 11.0, 0.5),
       Rec(EpisodeStatus::kCollisionHuman, 3.0, 12, 2, 3.0, -0.1),
@@ -46,13 +46,13 @@ TEST(Metrics, PaperColumnsOnHandMadeEpisodes) {
 }
 
 TEST(Metrics, NoSuccessGivesTimeLimitAsNavTime) {
-  const std::vector<EpisodeRecord> e = {Rec(EpisodeStatus::kTimeout, 25.0, 100, 0)};
+  const std::vector<EpisodeOutcome> e = {Rec(EpisodeStatus::kTimeout, 25.0, 100, 0)};
   EXPECT_DOUBLE_EQ(Aggregate(e, 25.0).nav_time, 25.0);  // CrowdNav's convention (paper row 7)
   EXPECT_EQ(Aggregate({}, 25.0).episodes, 0);
 }
 
 TEST(Metrics, CountsAndNavTimeStandardError) {
-  const std::vector<EpisodeRecord> e = {
+  const std::vector<EpisodeOutcome> e = {
       Rec(EpisodeStatus::kSuccess, 10.0, 40, 0), Rec(EpisodeStatus::kSuccess, 12.0, 48, 0),
       Rec(EpisodeStatus::kSuccess, 14.0, 56, 0), Rec(EpisodeStatus::kCollisionHuman, 3.0, 12, 0),
       Rec(EpisodeStatus::kTimeout, 25.0, 100, 0)};
@@ -63,7 +63,7 @@ TEST(Metrics, CountsAndNavTimeStandardError) {
   // Sample standard deviation of 10, 12, 14 is 2; over sqrt(3) successes.
   EXPECT_NEAR(m.nav_time_se, 2.0 / std::sqrt(3.0), 1e-12);
   // One success gives no standard error.
-  EXPECT_TRUE(std::isnan(Aggregate(std::vector<EpisodeRecord>{e[0], e[3]}, 25.0).nav_time_se));
+  EXPECT_TRUE(std::isnan(Aggregate(std::vector<EpisodeOutcome>{e[0], e[3]}, 25.0).nav_time_se));
 }
 
 TEST(Metrics, WilsonIntervalKnownValues) {
@@ -114,23 +114,23 @@ TEST(EpisodesCsv, RoundTripAndDamagedLastLine) {
   a.episode = 3;
   a.seed = 123456789012345ULL;
   a.layout = "rect1/test/003";
-  a.record = Rec(EpisodeStatus::kSuccess, 10.25, 41, 2, 9.5, 0.123456);
-  a.error = "";
+  a.outcome = Rec(EpisodeStatus::kSuccess, 10.25, 41, 2, 9.5, 0.123456);
+  a.outcome.error = "";
   EpisodeLine b = a;
   b.row = "plain";
-  b.record = Rec(EpisodeStatus::kPolicyError, 1.0, 4, 0);
-  b.error = "message with \"quotes\", commas";
+  b.outcome = Rec(EpisodeStatus::kPolicyError, 1.0, 4, 0);
+  b.outcome.error = "message with \"quotes\", commas";
   const std::string text = EpisodeCsvHeader() + "\n" + FormatEpisodeLine(a) + "\n" + FormatEpisodeLine(b) + "\nplain,4,1,x,succ";
   const auto file = dir.Write("episodes.csv", text);
   const auto lines = ReadEpisodesCsv(file);
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0].row, a.row);
   EXPECT_EQ(lines[0].seed, a.seed);
-  EXPECT_EQ(lines[0].record.status, EpisodeStatus::kSuccess);
-  EXPECT_DOUBLE_EQ(lines[0].record.time, 10.25);
-  EXPECT_NEAR(lines[0].record.min_human_distance, 0.123456, 1e-9);
-  EXPECT_EQ(lines[1].error, b.error);
-  EXPECT_EQ(lines[1].record.min_human_distance, kInfinity);
+  EXPECT_EQ(lines[0].outcome.status, EpisodeStatus::kSuccess);
+  EXPECT_DOUBLE_EQ(lines[0].outcome.time, 10.25);
+  EXPECT_NEAR(lines[0].outcome.min_human_distance, 0.123456, 1e-9);
+  EXPECT_EQ(lines[1].outcome.error, b.outcome.error);
+  EXPECT_EQ(lines[1].outcome.min_human_distance, kInfinity);
 }
 
 EpisodeLine SomeLine(int episode) {
@@ -139,7 +139,7 @@ EpisodeLine SomeLine(int episode) {
   e.episode = episode;
   e.seed = 42;
   e.layout = "rect1/test/000";
-  e.record = Rec(EpisodeStatus::kTimeout, 25.0, 100, 3, 7.5);
+  e.outcome = Rec(EpisodeStatus::kTimeout, 25.0, 100, 3, 7.5);
   return e;
 }
 

@@ -50,8 +50,11 @@ struct EpisodeFrame {
   std::vector<AgentState> humans;
 };
 
-/// Per-episode metrics (CrowdNav's and the paper's, plus ours).
-struct EpisodeResult {
+/// What an episode ended with: its status and per-episode metrics (CrowdNav's and the paper's,
+/// plus ours). This is what episodes.csv stores of an episode and what a table row aggregates;
+/// its columns, their formats and row means are listed once, in kEpisodeColumns
+/// (episode_columns.h).
+struct EpisodeOutcome {
   EpisodeStatus status = EpisodeStatus::kRunning;
   double time = 0.0;             ///< s at the end
   int steps = 0;
@@ -62,6 +65,11 @@ struct EpisodeResult {
   double decision_time_us = 0.0;   ///< mean wall time of the robot's Decide
   int humans_at_goal = 0;          ///< humans that reached their (first) goal
   std::string error;               ///< policy_error message
+};
+
+/// An episode's outcome with what only a live episode knows (not stored in episodes.csv):
+/// whom it hit and, when recording, the trajectory (rendering, tests).
+struct EpisodeResult : EpisodeOutcome {
   int collided_human = -1;         ///< collision_human: which human (index into the scenario's)
   int collided_rect = -1;          ///< collision_obstacle: which rectangle of the map
   std::vector<EpisodeFrame> trajectory;  ///< when recording

@@ -19,6 +19,7 @@ struct RowMetrics {
   double policy_error_rate = 0.0;
   double nav_time = 0.0;        ///< mean time of successful episodes (time_limit if none, CrowdNav)
   double danger_frequency = 0.0;  ///< danger steps / all steps
+  // Row means of episode columns (kEpisodeColumns says which mean each is).
   double path_length = 0.0;     ///< mean over successful episodes (0 if none)
   double min_human_distance = 0.0;  ///< mean over episodes with humans of the episode minimum
   double discounted_return = 0.0;   ///< mean
@@ -41,21 +42,10 @@ struct Interval {
 /// n = 0 gives [0, 1].
 Interval WilsonInterval95(int k, int n);
 
-/// Compact record of an episode as stored in episodes.csv (what the table needs).
-struct EpisodeRecord {
-  EpisodeStatus status = EpisodeStatus::kRunning;
-  double time = 0.0;
-  int steps = 0;
-  int danger_steps = 0;
-  double path_length = 0.0;
-  double min_human_distance = kInfinity;
-  double discounted_return = 0.0;
-  double decision_time_us = 0.0;
-};
-
-EpisodeRecord ToRecord(const EpisodeResult& r);
-
-RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit);
+/// The row's numbers over its episodes: the rates and nav. time from the statuses and times,
+/// danger_frequency from the steps, and each row mean that kEpisodeColumns names
+/// (episode_columns.h).
+RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit);
 
 /// A summary row over several rows (e.g. Table 2's average of easy, medium and hard): every
 /// metric is the unweighted mean of the rows' values, as the paper averages; the counts and

@@ -1,5 +1,6 @@
 // Result files of a suite run: episodes.csv (one line per finished episode, appended as they
-// finish, so a crash loses nothing), table.md / table.csv (the paper's columns), manifest.json.
+// finish, so a crash loses nothing; its columns are episode_columns.h's), table.md / table.csv
+// (the paper's columns), manifest.json.
 #pragma once
 
 #include <cstdint>
@@ -8,26 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "crowdsim/episode_columns.h"
 #include "crowdsim/metrics.h"
 #include "crowdsim/suite.h"
 
 namespace crowdsim {
 
-/// One line of episodes.csv.
-struct EpisodeLine {
-  std::string row;        ///< row label
-  int episode = 0;
-  std::uint64_t seed = 0;
-  std::string layout;
-  EpisodeRecord record;
-  int humans_at_goal = 0;
-  std::string error;
-};
-
-/// Header line of episodes.csv.
-std::string EpisodeCsvHeader();
-/// One CSV line (no newline).
-std::string FormatEpisodeLine(const EpisodeLine& e);
 /// What reading an episodes.csv found.
 struct EpisodesCsvRead {
   std::vector<EpisodeLine> lines;

@@ -46,7 +46,7 @@ std::vector<Pick> PickEpisodes(const std::vector<EpisodeLine>& lines, const std:
   std::vector<Pick> picks = {{"success", {}}, {"collision", {}}, {"timeout", {}}};
   for (const EpisodeLine& l : lines) {
     if (l.row != label) continue;
-    const EpisodeStatus s = l.record.status;
+    const EpisodeStatus s = l.outcome.status;
     Pick* p = s == EpisodeStatus::kSuccess ? &picks[0]
               : (s == EpisodeStatus::kCollisionHuman || s == EpisodeStatus::kCollisionObstacle)
                   ? &picks[1]
@@ -238,8 +238,8 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
       const Drawing drawing = DrawEpisode(fig);
       const std::string anchor =
           "fig-r" + std::to_string(*suite_row + 1) + "-e" + std::to_string(pick.line->episode);
-      const std::string recorded = EpisodeStatusName(pick.line->record.status);
-      const bool differs = replay.result.status != pick.line->record.status;
+      const std::string recorded = EpisodeStatusName(pick.line->outcome.status);
+      const bool differs = replay.result.status != pick.line->outcome.status;
       html << " · episode " << pick.line->episode << "<a href=\"#" << anchor << "\"><img alt=\""
            << XmlEscape(label) << " episode " << pick.line->episode << "\" src=\"data:image/png;base64,"
            << Base64(PngBytes(drawing, options.thumbnail_scale)) << "\"></a>";

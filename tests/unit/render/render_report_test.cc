@@ -89,7 +89,7 @@ TEST_F(ReportTest, ShowsTheFirstOfEachOutcome) {
   const auto lines = ReadEpisodesCsv(Results() / "episodes.csv");
   int first_success = -1;
   for (const EpisodeLine& l : lines) {
-    if (l.row == "orca" && l.record.status == EpisodeStatus::kSuccess && first_success < 0)
+    if (l.row == "orca" && l.outcome.status == EpisodeStatus::kSuccess && first_success < 0)
       first_success = l.episode;
   }
   ASSERT_GE(first_success, 0) << "ORCA succeeds in quick.yaml";
