@@ -626,20 +626,16 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   os << "  \"started_utc\": " << JsonString(facts.started_utc) << ",\n";
   os << "  \"finished_utc\": " << JsonString(facts.finished_utc) << ",\n";
   os << "  \"wall_seconds\": " << JsonNumber(facts.wall_seconds) << ",\n";
-  const SimConfig& s = suite.sim;
-  os << "  \"sim\": {\"time_step\": " << JsonNumber(s.time_step)
-     << ", \"time_limit\": " << JsonNumber(s.time_limit)
-     << ", \"goal_radius\": " << JsonNumber(s.goal_radius)
-     << ", \"discomfort_dist\": " << JsonNumber(s.discomfort_dist)
-     << ", \"robot_radius\": " << JsonNumber(s.robot_radius)
-     << ", \"robot_v_pref\": " << JsonNumber(s.robot_v_pref)
-     << ", \"human_radius\": " << JsonNumber(s.human_radius)
-     << ", \"human_v_pref\": " << JsonNumber(s.human_v_pref)
-     << ", \"robot_visible\": " << (s.robot_visible ? "true" : "false")
-     << ", \"success_reward\": " << JsonNumber(s.success_reward)
-     << ", \"collision_penalty\": " << JsonNumber(s.collision_penalty)
-     << ", \"discomfort_penalty_factor\": " << JsonNumber(s.discomfort_penalty_factor)
-     << ", \"gamma\": " << JsonNumber(s.gamma) << "},\n";
+  os << "  \"sim\": {";
+  for (const SimField& f : kSimFields) {
+    os << (&f == kSimFields ? "" : ", ") << JsonString(f.key) << ": ";
+    if (const auto* number = std::get_if<double SimConfig::*>(&f.member)) {
+      os << JsonNumber(suite.sim.**number);
+    } else {
+      os << (suite.sim.*std::get<bool SimConfig::*>(f.member) ? "true" : "false");
+    }
+  }
+  os << "},\n";
   std::vector<const TableRow*> row_lines, summary_lines;
   for (const TableRow& row : rows) (row.spec ? row_lines : summary_lines).push_back(&row);
   os << "  \"rows\": [\n";

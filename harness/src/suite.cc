@@ -8,6 +8,7 @@
 #include <functional>
 #include <set>
 #include <sstream>
+#include <variant>
 
 #include "crowdsim/rng.h"
 #include "suite_reader.h"
@@ -50,38 +51,17 @@ namespace suite_internal {
 
 void ReadSim(Reader& r, const YAML::Node& n, SimConfig* sim) {
   if (!r.IsMap(n, "sim", "simulation settings")) return;
-  struct Field {
-    const char* key;
-    double* target;
-    double lo, hi;
-    bool lo_open;
-  };
-  const double inf = kInfinity;
-  std::vector<Field> fields = {
-      {"time_step", &sim->time_step, 0.0, 10.0, true},
-      {"time_limit", &sim->time_limit, 0.0, 1e6, true},
-      {"goal_radius", &sim->goal_radius, 0.0, 10.0, true},
-      {"discomfort_dist", &sim->discomfort_dist, 0.0, 10.0, false},
-      {"robot_radius", &sim->robot_radius, 0.0, 10.0, true},
-      {"robot_v_pref", &sim->robot_v_pref, 0.0, 100.0, true},
-      {"human_radius", &sim->human_radius, 0.0, 10.0, true},
-      {"human_v_pref", &sim->human_v_pref, 0.0, 100.0, true},
-      {"success_reward", &sim->success_reward, -inf, inf, false},
-      {"collision_penalty", &sim->collision_penalty, -inf, inf, false},
-      {"discomfort_penalty_factor", &sim->discomfort_penalty_factor, 0.0, inf, false},
-      {"gamma", &sim->gamma, 0.0, 1.0, true},
-  };
   std::vector<std::string> keys;
-  for (const auto& f : fields) keys.push_back(f.key);
-  keys.push_back("robot_visible");
+  for (const SimField& f : kSimFields) keys.push_back(f.key);
   r.CheckKeys(n, "sim", keys);
-  for (const auto& f : fields) {
-    if (n[f.key]) {
-      if (auto v = r.Number(n[f.key], Reader::Child("sim", f.key), f.lo, f.hi, f.lo_open)) *f.target = *v;
+  for (const SimField& f : kSimFields) {
+    if (!n[f.key]) continue;
+    const std::string path = Reader::Child("sim", f.key);
+    if (const auto* number = std::get_if<double SimConfig::*>(&f.member)) {
+      if (auto v = r.Number(n[f.key], path, f.lo, f.hi, f.lo_open)) sim->**number = *v;
+    } else if (auto b = r.Bool(n[f.key], path)) {
+      sim->*std::get<bool SimConfig::*>(f.member) = *b;
     }
-  }
-  if (n["robot_visible"]) {
-    if (auto b = r.Bool(n["robot_visible"], "sim.robot_visible")) sim->robot_visible = *b;
   }
   // A step count beyond any real episode is a typo (time_step: 1e-300 ran forever).
   constexpr double kMaxSteps = 1e6;
@@ -131,11 +111,12 @@ void ReadSensors(Reader& r, const YAML::Node& n, const std::string& path, const 
 }
 
 void CanonicalSim(const SimConfig& sim, std::ostream& os) {
-  os << "sim=" << sim.time_step << "," << sim.time_limit << "," << sim.goal_radius << ","
-     << sim.discomfort_dist << "," << sim.robot_radius << "," << sim.robot_v_pref << ","
-     << sim.human_radius << "," << sim.human_v_pref << "," << sim.robot_visible << ","
-     << sim.success_reward << "," << sim.collision_penalty << ","
-     << sim.discomfort_penalty_factor << "," << sim.gamma << "\n";
+  os << "sim=";
+  for (const SimField& f : kSimFields) {
+    os << (&f == kSimFields ? "" : ",");
+    std::visit([&](auto member) { os << sim.*member; }, f.member);  // a bool as 0 or 1
+  }
+  os << "\n";
 }
 
 namespace {

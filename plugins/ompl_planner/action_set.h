@@ -7,15 +7,16 @@
 #include <vector>
 
 #include "crowdsim/collision_world.h"
+#include "crowdsim/sim_config.h"
 #include "orca/solver.h"
 
 namespace crowdsim::ompl_planner {
 
 /// Settings of one choice.
 struct ActionSetParams {
-  double v_pref = 1.0;      ///< m/s; the speeds are v_pref and v_pref / 2
-  double radius = 0.3;      ///< m, the robot's
-  double time_step = 0.25;  ///< s the action is held
+  double v_pref = SimConfig{}.robot_v_pref;  ///< m/s; the speeds are v_pref and v_pref / 2
+  double radius = SimConfig{}.robot_radius;  ///< m, the robot's
+  double time_step = SimConfig{}.time_step;  ///< s the action is held
   double horizon = 1.0;     ///< s of prediction checked (at least one time step)
   double clearance = 0.1;   ///< m of surface distance to keep from every prediction
 };

@@ -62,8 +62,8 @@ class OmplPlannerPolicy final : public Policy {
 
   // Per episode.
   Rng rng_{0};
-  double time_step_ = 0.25;
-  double robot_radius_ = 0.3;
+  double time_step_ = SimConfig{}.time_step;
+  double robot_radius_ = SimConfig{}.robot_radius;
   PathFollower follower_;
   Vec2 planned_goal_ = Vec2::Zero();
   double path_margin_ = 0.0;  // m, the margin the current path keeps

@@ -50,7 +50,7 @@ class OrcaPolicy final : public Policy {
 
   // Episode state.
   const StaticMap* ctx_map_ = nullptr;
-  double ctx_time_step_ = 0.25;
+  double ctx_time_step_ = SimConfig{}.time_step;
   const StaticMap* map_ = nullptr;  // the map the obstacles below were built from
   std::vector<Rect> map_rects_;     // its rectangles, to notice a new map at the same address
   double map_radius_ = -1.0;        // radius the roadmap was built for

@@ -34,7 +34,7 @@ struct SensorReading {
 /// Everything one policy receives at one decision.
 struct Observation {
   double time = 0.0;                  ///< s since the episode start
-  double time_step = 0.25;            ///< s until the next decision
+  double time_step = SimConfig{}.time_step;  ///< s until the next decision
   AgentState self;                    ///< own state, world frame
   Frame frame;                        ///< sensor frame (robot: x towards the goal)
   std::vector<SensorReading> readings;  ///< robot only: one per configured sensor, in order
