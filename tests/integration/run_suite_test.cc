@@ -2,15 +2,13 @@
 // errors recorded without stopping, and the CLI's contract.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <regex>
 #include <fstream>
 #include <sstream>
 
 #include "crowdsim/results.h"
 #include "crowdsim/runner.h"
+#include "shell.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -19,6 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::ReadText;
+using testing::Shell;
 using testing::TempDir;
 
 constexpr const char* kSuite = R"(name: determinism
@@ -32,16 +31,6 @@ rows:
   - {label: linear, policy: linear}
   - {label: orca, policy: orca}
 )";
-
-/// Runs a shell command; returns exit status and output.
-std::pair<int, std::string> Shell(const std::string& cmd) {
-  std::string out;
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  char buf[4096];
-  while (p && fgets(buf, sizeof(buf), p)) out += buf;
-  const int status = p ? pclose(p) : -1;
-  return {WEXITSTATUS(status), out};
-}
 
 class RunSuiteTest : public ::testing::Test {
  protected:

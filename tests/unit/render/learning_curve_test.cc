@@ -2,14 +2,13 @@
 // training folder's files, written as SVG and PNG by `train` (end to end, with --seed), and
 // `report` on a training folder.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <string>
 #include <tuple>
 #include <utility>
 
 #include "crowdsim/render/learning_curve.h"
+#include "shell.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -18,14 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::pair<int, std::string> Shell(const std::string& cmd) {
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  std::string text;
-  char buf[4096];
-  while (p && fgets(buf, sizeof(buf), p)) text += buf;
-  const int status = p ? pclose(p) : -1;
-  return {WEXITSTATUS(status), text};
-}
+using testing::Shell;
 
 const char* kEpisodesHeader =
     "phase,index,epsilon,outcome,return,steps,loss,memory,mem_imitation,mem_success,"

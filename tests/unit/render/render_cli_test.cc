@@ -1,13 +1,12 @@
 // `crowdsim-bench render` and `report` end to end: files written, and bad arguments rejected
 // with the value and the valid range or choices (exit status 2).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <fstream>
 #include <string>
 #include <utility>
 
+#include "shell.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -17,14 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::TempDir;
 
-std::pair<int, std::string> Shell(const std::string& cmd) {
-  std::string out;
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  char buf[4096];
-  while (p && fgets(buf, sizeof(buf), p)) out += buf;
-  const int status = p ? pclose(p) : -1;
-  return {WEXITSTATUS(status), out};
-}
+using testing::Shell;
 
 std::string Exe() { return (testing::BinaryDir() / "bin" / "crowdsim-bench").string(); }
 std::string Quick() { return (testing::SourceDir() / "suites" / "quick.yaml").string(); }
