@@ -225,7 +225,10 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
 
 std::string EpisodeCsvHeader() {
   std::string header;
-  for (const EpisodeColumn& c : kEpisodeColumns) header += (header.empty() ? "" : ",") + std::string(c.name);
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (!header.empty()) header += ',';
+    header += c.name;
+  }
   return header;
 }
 
@@ -258,7 +261,10 @@ std::string FormatCell(const EpisodeColumn& c, const EpisodeLine& e) {
 
 std::string FormatEpisodeLine(const EpisodeLine& e) {
   std::string line;
-  for (const EpisodeColumn& c : kEpisodeColumns) line += (&c == kEpisodeColumns ? "" : ",") + FormatCell(c, e);
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (&c != kEpisodeColumns) line += ',';
+    line += FormatCell(c, e);
+  }
   return line;
 }
 
@@ -271,7 +277,8 @@ std::string WithoutTimingColumns(const std::string& episodes_csv) {
     for (size_t k = 0; k < fields.size(); ++k) {
       // A line of another width keeps every field (it differs anyway).
       if (fields.size() == std::size(kEpisodeColumns) && kEpisodeColumns[k].timing) continue;
-      out += (first ? "" : ",") + CsvField(fields[k]);
+      if (!first) out += ',';
+      out += CsvField(fields[k]);
       first = false;
     }
     out += "\n";
