@@ -55,6 +55,9 @@ fi
 # at exit must not hide the stacks.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:fast_unwind_on_malloc=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
+# Inputs (and corpus files) of at most 4 KB: a suite's structure fits, and the committed corpus
+# stays a few hundred KB.
+max_len=4096
 failed=()
 for t in "${targets[@]}"; do
   fuzzer="$build/fuzz/${t}_fuzz"
@@ -64,12 +67,12 @@ for t in "${targets[@]}"; do
   artifacts="$build/fuzz-artifacts/$t"
   mkdir -p "$committed" "$work" "$artifacts" "$build/fuzz-logs"
   if [[ $reseed -eq 1 ]]; then
-    "$fuzzer" -merge=1 -timeout=10 "$committed" "$build/fuzz-seeds/$t" 2>&1 | tail -n 2
+    "$fuzzer" -merge=1 -timeout=10 -max_len="$max_len" "$committed" "$build/fuzz-seeds/$t" 2>&1 | tail -n 1
   fi
   echo "== $t: ${seconds} s over $(ls "$committed" | wc -l) committed inputs"
   rc=0
   nice -n "${FUZZ_NICE:-10}" "$fuzzer" "$work" "$committed" -max_total_time="$seconds" -timeout=10 \
-    -rss_limit_mb=2048 -max_len=8192 -dict="$root/tests/fuzz/yaml.dict" -artifact_prefix="$artifacts/" \
+    -rss_limit_mb=2048 -max_len="$max_len" -dict="$root/tests/fuzz/yaml.dict" -artifact_prefix="$artifacts/" \
     -print_final_stats=1 >"$build/fuzz-logs/$t.log" 2>&1 || rc=$?
   grep -E '^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)' \
     "$build/fuzz-logs/$t.log" || true
@@ -78,7 +81,7 @@ for t in "${targets[@]}"; do
     echo "   FOUND A PROBLEM (exit $rc): $build/fuzz-logs/$t.log; input(s): $(ls "$artifacts")"
     grep -m1 -E 'ERROR: |runtime error|broke its contract|terminate called' "$build/fuzz-logs/$t.log" || true
   elif [[ $update -eq 1 ]]; then
-    "$fuzzer" -merge=1 -timeout=10 -max_len=8192 "$committed" "$work" 2>&1 | tail -n 1
+    "$fuzzer" -merge=1 -timeout=10 -max_len="$max_len" "$committed" "$work" 2>&1 | tail -n 1
   fi
 done
 
