@@ -398,7 +398,8 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   if (const auto robot = root["robot"]) {
     if (r.IsMap(robot, "robot", "sensors")) {
       r.CheckKeys(robot, "robot", {"sensors"});
-      d.sensors = robot["sensors"];
+      // Assigning yaml-cpp's placeholder for a missing key throws InvalidNode (`robot: {}`).
+      if (robot["sensors"]) d.sensors = robot["sensors"];
     }
   }
   if (const auto cols = root["columns"]) {
