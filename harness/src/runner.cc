@@ -307,8 +307,8 @@ void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
       }
       std::lock_guard<std::mutex> lock(mutex);
       std::string why;
-      if (!failed && !sink.Add(std::move(line), &why)) {
-        failure = why;
+      if (!sink.Add(std::move(line), &why)) {
+        if (!failed) failure = why;
         failed = true;
         break;
       }
@@ -321,17 +321,22 @@ void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
   sink.Finish(failure);
 }
 
-/// The plugins a crash of `row` is laid to: those not of the harness (loaded by path or from
-/// CROWDSIM_PLUGIN_PATH), or the robot's policy when all are the harness's own.
-std::string Suspects(const RowSpec& row) {
+/// Every plugin a row's episodes call, with its role there.
+std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row) {
   std::vector<std::pair<std::string, const PluginUse*>> uses = {
       {"policy", &row.policy}, {"humans' policy", &row.humans.policy}, {"world", &row.world}};
   for (const auto& s : row.sensors) uses.push_back({"sensor", &s});
-  std::string named;
+  return uses;
+}
+
+/// The plugins a crash of `row` is laid to: those not of the harness (loaded by path or from
+/// CROWDSIM_PLUGIN_PATH), or the robot's policy when all are the harness's own.
+std::string Suspects(const RowSpec& row) {
   auto name = [](const std::string& role, const PluginUse& u) {
     return role + " '" + std::string(u.loaded->descriptor->name) + "' (" + u.loaded->path.string() + ")";
   };
-  for (const auto& [role, use] : uses) {
+  std::string named;
+  for (const auto& [role, use] : RowPlugins(row)) {
     if (!PluginRegistry::IsHarnessPlugin(*use->loaded)) named += (named.empty() ? "" : ", ") + name(role, *use);
   }
   return named.empty() ? name("policy", row.policy) : named;
@@ -366,7 +371,9 @@ void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
     try {
       auto& inst = instances[task.row];
       if (!inst) inst = std::make_unique<RowInstance>(row, registry);
-      return "L" + EncodeEpisodeLine(RunEpisode(suite, row, *worlds[task.row], *inst, task.episode));
+      std::string bytes = "L";
+      bytes += EncodeEpisodeLine(RunEpisode(suite, row, *worlds[task.row], *inst, task.episode));
+      return bytes;
     } catch (const std::exception& e) {
       return "E" + Where(row, task.episode) + ": " + e.what();
     }
@@ -406,16 +413,17 @@ void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
 bool Isolated(const Suite& suite, const RunOptions& options) {
   const IsolationMode mode = options.isolation.value_or(suite.isolation);
   if (mode == IsolationMode::kOff && suite.episode_timeout_s > 0) {
-    throw RunError("suite '" + suite.name + "' sets episode_timeout_s " + std::to_string(suite.episode_timeout_s) +
-                   " but isolation is off; a timeout needs isolated episodes: set isolation to auto or on");
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%g", suite.episode_timeout_s);
+    throw RunError("suite '" + suite.name + "' (" + suite.file.string() + ") sets episode_timeout_s " + seconds +
+                   " but the run's isolation is off; a timeout needs isolated episodes: drop the "
+                   "isolation override or the timeout");
   }
   if (mode != IsolationMode::kAuto) return mode == IsolationMode::kOn;
   if (suite.episode_timeout_s > 0) return true;
   for (const RowSpec& row : suite.rows) {
-    std::vector<const PluginUse*> uses = {&row.policy, &row.humans.policy, &row.world};
-    for (const auto& s : row.sensors) uses.push_back(&s);
-    for (const PluginUse* u : uses) {
-      if (!PluginRegistry::IsHarnessPlugin(*u->loaded)) return true;
+    for (const auto& [role, use] : RowPlugins(row)) {
+      if (!PluginRegistry::IsHarnessPlugin(*use->loaded)) return true;
     }
   }
   return false;

@@ -45,10 +45,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-bool WriteAll(int fd, const void* data, size_t n) {
-  const char* p = static_cast<const char*>(data);
+/// Moves exactly n bytes through `call` (::read or ::write), again after a signal; false at
+/// the end of the file (the other side died) or on an error.
+template <typename Byte, typename Call>
+bool Exactly(Call call, int fd, Byte* p, size_t n) {
   while (n > 0) {
-    const ssize_t k = ::write(fd, p, n);
+    const ssize_t k = call(fd, p, n);
     if (k < 0 && errno == EINTR) continue;
     if (k <= 0) return false;
     p += k;
@@ -57,18 +59,8 @@ bool WriteAll(int fd, const void* data, size_t n) {
   return true;
 }
 
-/// Exactly n bytes; false at end of file (the writer died) or on an error.
-bool ReadAll(int fd, void* data, size_t n) {
-  char* p = static_cast<char*>(data);
-  while (n > 0) {
-    const ssize_t k = ::read(fd, p, n);
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) return false;
-    p += k;
-    n -= static_cast<size_t>(k);
-  }
-  return true;
-}
+bool WriteAll(int fd, const void* data, size_t n) { return Exactly(::write, fd, static_cast<const char*>(data), n); }
+bool ReadAll(int fd, void* data, size_t n) { return Exactly(::read, fd, static_cast<char*>(data), n); }
 
 /// A worker's loop: task numbers in, [length][bytes] out, until its task pipe closes. An
 /// exception escaping `run` ends the worker through std::terminate (noexcept), which the

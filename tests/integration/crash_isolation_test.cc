@@ -4,27 +4,28 @@
 // and isolated runs give the same episodes as threaded ones.
 #include <gtest/gtest.h>
 
-#include <numeric>
-#include <sstream>
+#include <map>
+#include <optional>
 
 #include "crowdsim/results.h"
 #include "crowdsim/runner.h"
+#include "episodes_text.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
 namespace crowdsim {
 namespace {
 
-namespace fs = std::filesystem;
 using testing::ReadText;
 using testing::TempDir;
+using testing::WithoutWallTime;
 
 /// Every row's robot misbehaves in its instance's third episode (episode 2 with one worker);
 /// the replacement worker's fresh instance runs episode 3 normally.
 std::string MisbehavingSuite() {
-  const std::string plugin = (testing::FixturePluginDir() / "crowdsim_misbehaving_policy.so").string();
+  const std::string plugin = (testing::FixturePluginDir() / "crowdsim_throwing_policy.so").string();
   auto row = [&](const std::string& mode) {
-    return "  - {label: " + mode + ", policy: " + plugin + ", params: {mode: " + mode + "}}\n";
+    return "  - {label: " + mode + ", policy: " + plugin + ", params: {mode: " + mode + ", fail_after_steps: 0, good_episodes: 2}}\n";
   };
   return "name: misbehaving\nepisodes: 4\nseed: 5\nepisode_timeout_s: 1\n"
          "world: {source: random_rect, obstacles: 1}\nhumans: {count: 2, policy: linear}\nrows:\n" +
@@ -32,34 +33,17 @@ std::string MisbehavingSuite() {
          "  - {label: good, policy: linear}\n";
 }
 
+/// Built-in plugins only, in CrowdNav's circle crossing and a 3-obstacle room.
 constexpr const char* kPlainSuite = R"(name: plain
-episodes: 12
-seed: 11
-world: {source: random_rect, obstacles: 3, split: test}
-humans: {count: 5, policy: orca}
-robot:
-  sensors: [person, {type: lidar2d, beams: 45}]
+episodes: 10
+seed: 3
+humans: {count: 4, policy: orca, goal_mode: new_goal}
+robot: {sensors: [person]}
+world: {source: crowdnav, scenario: circle_crossing, circle_radius: 4}
 rows:
-  - {label: linear, policy: linear}
   - {label: orca, policy: orca}
-  - {label: planner, policy: ompl_planner}
+  - {label: planner, policy: ompl_planner, world: {source: random_rect, obstacles: 3}}
 )";
-
-/// episodes.csv without the wall-time column (decision_time_us, the 12th).
-std::string WithoutWallTime(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string line, out;
-  while (std::getline(in, line)) {
-    std::vector<std::string> f;
-    std::string cell;
-    std::istringstream ls(line);
-    while (std::getline(ls, cell, ',')) f.push_back(cell);
-    if (f.size() > 11) f.erase(f.begin() + 11);
-    for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
-    out += "\n";
-  }
-  return out;
-}
 
 class CrashIsolationTest : public ::testing::Test {
  protected:
@@ -79,12 +63,7 @@ class CrashIsolationTest : public ::testing::Test {
   }
   RunSummary Run(const Suite& s, const std::string& out, int jobs,
                  std::optional<IsolationMode> isolation = std::nullopt) {
-    RunOptions o;
-    o.out_dir = dir_.path() / out;
-    o.jobs = jobs;
-    o.progress = false;
-    o.isolation = isolation;
-    return RunSuite(s, registry_, o);
+    return RunSuite(s, registry_, {.out_dir = dir_.path() / out, .jobs = jobs, .isolation = isolation, .progress = false});
   }
   std::string Manifest(const std::string& out) { return ReadText(dir_.path() / out / "manifest.json"); }
 
@@ -125,8 +104,8 @@ TEST_F(CrashIsolationTest, CrashesAndHangsCostTheirEpisodeNotTheRun) {
       ASSERT_NE(at, std::string::npos) << err;
       const std::string message = err.substr(at, err.find('\n', at) - at);
       EXPECT_NE(message.find(signal.at(label)), std::string::npos) << message;
-      EXPECT_NE(message.find("policy 'misbehaving_policy'"), std::string::npos) << message;
-      EXPECT_NE(message.find("crowdsim_misbehaving_policy.so"), std::string::npos) << message;
+      EXPECT_NE(message.find("policy 'throwing_policy'"), std::string::npos) << message;
+      EXPECT_NE(message.find("crowdsim_throwing_policy.so"), std::string::npos) << message;
       EXPECT_NE(message.find("recorded as " + status), std::string::npos) << message;
     }
   }
@@ -174,7 +153,7 @@ TEST_F(CrashIsolationTest, AutoIsolatesOnlyPluginsFromOutsideTheHarness) {
   Run(LoadOrDie(kPlainSuite), "own", 1);
   EXPECT_NE(Manifest("own").find("\"isolated\": false"), std::string::npos);
   // A fixture plugin (not in the harness's plugin folder) turns isolation on, off overrides.
-  const std::string outside = std::string(kPlainSuite) + "  - {label: fine, policy: misbehaving_policy, params: {good_episodes: 1000}}\n";
+  const std::string outside = std::string(kPlainSuite) + "  - {label: fine, policy: throwing_policy, params: {good_episodes: 1000}}\n";
   Run(LoadOrDie(outside), "outside", 1);
   EXPECT_NE(Manifest("outside").find("\"isolated\": true"), std::string::npos);
   Run(LoadOrDie(outside, {"isolation=off"}), "off", 1);
