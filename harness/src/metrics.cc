@@ -16,7 +16,7 @@ RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit)
   RowMetrics m;
   m.episodes = static_cast<int>(episodes.size());
   if (episodes.empty()) return m;
-  int success = 0, coll_h = 0, coll_o = 0, timeout = 0, error = 0;
+  int success = 0, coll_h = 0, coll_o = 0, timeout = 0, error = 0, crash = 0, hang = 0;
   long long steps = 0, danger = 0;
   double nav_time = 0.0, nav_time_sq = 0.0, path = 0.0, ret = 0.0, decision = 0.0, min_dist = 0.0;
   int with_humans = 0;
@@ -31,6 +31,8 @@ RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit)
       case EpisodeStatus::kCollisionHuman: ++coll_h; break;
       case EpisodeStatus::kCollisionObstacle: ++coll_o; break;
       case EpisodeStatus::kTimeout: ++timeout; break;
+      case EpisodeStatus::kPolicyCrash: ++crash; break;
+      case EpisodeStatus::kPolicyTimeout: ++hang; break;
       default: ++error; break;
     }
     steps += e.steps;
@@ -49,6 +51,8 @@ RowMetrics Aggregate(std::span<const EpisodeRecord> episodes, double time_limit)
   m.collision_rate = (coll_h + coll_o) / n;
   m.timeout_rate = timeout / n;
   m.policy_error_rate = error / n;
+  m.policy_crash_rate = crash / n;
+  m.policy_timeout_rate = hang / n;
   m.nav_time = success > 0 ? nav_time / success : time_limit;
   m.path_length = success > 0 ? path / success : 0.0;
   m.danger_frequency = steps > 0 ? static_cast<double>(danger) / static_cast<double>(steps) : 0.0;
@@ -91,6 +95,7 @@ RowMetrics SummarizeRows(std::span<const RowMetrics> rows) {
     for (auto field : {&RowMetrics::success_rate, &RowMetrics::collision_rate,
                        &RowMetrics::collision_human_rate, &RowMetrics::collision_obstacle_rate,
                        &RowMetrics::timeout_rate, &RowMetrics::policy_error_rate,
+                       &RowMetrics::policy_crash_rate, &RowMetrics::policy_timeout_rate,
                        &RowMetrics::nav_time, &RowMetrics::danger_frequency,
                        &RowMetrics::path_length, &RowMetrics::min_human_distance,
                        &RowMetrics::discounted_return, &RowMetrics::decision_time_us}) {

@@ -32,7 +32,8 @@ std::string Fixed(double x, int digits) {
 EpisodeStatus ParseStatus(const std::string& s) {
   for (auto st : {EpisodeStatus::kSuccess, EpisodeStatus::kCollisionHuman,
                   EpisodeStatus::kCollisionObstacle, EpisodeStatus::kTimeout,
-                  EpisodeStatus::kPolicyError}) {
+                  EpisodeStatus::kPolicyError, EpisodeStatus::kPolicyCrash,
+                  EpisodeStatus::kPolicyTimeout}) {
     if (s == EpisodeStatusName(st)) return st;
   }
   return EpisodeStatus::kRunning;
@@ -181,6 +182,15 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
   cols.push_back(metric("return", &RowMetrics::discounted_return, 4));
   cols.push_back(metric("decision µs", &RowMetrics::decision_time_us, 1));
   cols.push_back({"errors", [](const TableRow& r) { return Fixed(r.metrics.policy_error_rate, 4); }});
+  // Crashed and hung episodes (isolated runs) get columns only when a line has some, so the
+  // tables of runs without any keep their columns.
+  const auto any = [&](double RowMetrics::*field) {
+    return std::any_of(rows.begin(), rows.end(), [field](const TableRow& r) { return r.metrics.*field > 0; });
+  };
+  if (any(&RowMetrics::policy_crash_rate) || any(&RowMetrics::policy_timeout_rate)) {
+    cols.push_back(metric("crashes", &RowMetrics::policy_crash_rate, 4));
+    cols.push_back(metric("hangs", &RowMetrics::policy_timeout_rate, 4));
+  }
   cols.push_back({"episodes", [](const TableRow& r) { return std::to_string(r.metrics.episodes); }});
   if (!with_uncertainty) return cols;
   for (size_t i = 0; i < kCompared.size(); ++i) {
@@ -269,7 +279,8 @@ std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e
   e->layout = v[3];
   e->record.status = ParseStatus(v[4]);
   if (e->record.status == EpisodeStatus::kRunning) {
-    return not_a(4, "success, collision_human, collision_obstacle, timeout or policy_error");
+    return not_a(4, "success, collision_human, collision_obstacle, timeout, policy_error, "
+                       "policy_crash or policy_timeout");
   }
   if (!ParseReal(v[5], &e->record.time)) return not_a(5, "a number");
   if (!ParseWhole(v[6], &e->record.steps)) return not_a(6, "a whole number");
@@ -506,6 +517,8 @@ std::string JsonLineTail(const TableRow& line) {
      << ", \"collision_obstacle_rate\": " << JsonNumber(m.collision_obstacle_rate)
      << ", \"timeout_rate\": " << JsonNumber(m.timeout_rate)
      << ", \"policy_error_rate\": " << JsonNumber(m.policy_error_rate)
+     << ", \"policy_crash_rate\": " << JsonNumber(m.policy_crash_rate)
+     << ", \"policy_timeout_rate\": " << JsonNumber(m.policy_timeout_rate)
      << ", \"nav_time\": " << JsonNumber(m.nav_time)
      << ", \"danger_frequency\": " << JsonNumber(m.danger_frequency)
      << ", \"path_length\": " << JsonNumber(m.path_length)
@@ -561,6 +574,7 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   os << "  \"episodes\": " << facts.episodes << ",\n";
   if (!facts.shard.empty()) os << "  \"shard\": " << JsonString(facts.shard) << ",\n";
   os << "  \"jobs\": " << facts.jobs << ",\n";
+  os << "  \"isolated\": " << (facts.isolated ? "true" : "false") << ",\n";
   os << "  \"started_utc\": " << JsonString(facts.started_utc) << ",\n";
   os << "  \"finished_utc\": " << JsonString(facts.finished_utc) << ",\n";
   os << "  \"wall_seconds\": " << JsonNumber(facts.wall_seconds) << ",\n";

@@ -11,6 +11,7 @@
 
 #include "crowdsim/results.h"
 #include "crowdsim/runner.h"
+#include "episodes_text.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -19,6 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::ReadText;
+using testing::WithoutWallTime;
 using testing::TempDir;
 
 constexpr const char* kSuite = R"(name: determinism
@@ -32,22 +34,6 @@ rows:
   - {label: linear, policy: linear}
   - {label: orca, policy: orca}
 )";
-
-/// episodes.csv without the wall-time column (decision_time_us).
-std::string WithoutWallTime(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string line, out;
-  while (std::getline(in, line)) {
-    std::vector<std::string> f;
-    std::string cell;
-    std::istringstream ls(line);
-    while (std::getline(ls, cell, ',')) f.push_back(cell);
-    if (f.size() > 11) f.erase(f.begin() + 11);
-    for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
-    out += "\n";
-  }
-  return out;
-}
 
 class RunSuiteTest : public ::testing::Test {
  protected:
