@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages crowdsim-bench needs. Idempotent: installs only what is
 # missing, runs `apt-get update` at most once, and does nothing when all is present.
-# Usage: scripts/install_deps.sh [--no-torch]
+# Usage: scripts/install_deps.sh [--no-torch] [--fuzz]
+#   --fuzz  also clang and libFuzzer (libclang-rt-dev), for scripts/fuzz.sh
 set -euo pipefail
 
 packages=(
@@ -15,7 +16,19 @@ packages=(
   libopenmpi-dev openmpi-bin
   python3-dev python3-pybind11 python3-numpy
 )
-if [[ "${1:-}" != "--no-torch" ]]; then
+with_torch=1
+with_fuzz=0
+for arg in "$@"; do
+  case "$arg" in
+    --no-torch) with_torch=0 ;;
+    --fuzz) with_fuzz=1 ;;
+    *) echo "install_deps: unknown option '$arg' (valid: --no-torch, --fuzz)" >&2; exit 2 ;;
+  esac
+done
+if [[ $with_fuzz -eq 1 ]]; then
+  packages+=(clang libclang-rt-dev)
+fi
+if [[ $with_torch -eq 1 ]]; then
   # python3-torch: the torchscript plugin's test scripts and saves tiny TorchScript modules
   # with it (and examples/python/ train and export policies); the C++ side needs only libtorch.
   packages+=(libtorch-dev libopenblas0-pthread zlib1g-dev python3-torch)

@@ -28,7 +28,10 @@ const std::vector<Command>& Commands() {
       written only with an explicit --out); rerunning resumes finished episodes;
       --shard K/N runs only the K-th of N disjoint slices of the episodes (a cluster job array);
       --set changes one key of the suite (humans.count=10, rows[orca].params.safety_space=0.1,
-      robot.sensors[lidar2d].beams=90; recorded in manifest.json), as validate, render, train
+      robot.sensors[lidar2d].beams=90; recorded in manifest.json), as validate, render, train;
+      --set isolation=on|off|auto runs episodes in worker processes (auto: when a plugin is
+      not the harness's own or episode_timeout_s is set), so a crash or a hang past
+      episode_timeout_s costs one episode (policy_crash / policy_timeout), not the run
 )"},
     {"merge", crowdsim::cli::MergeCommand, R"(  crowdsim-bench merge SHARD_DIR... --out DIR [--suite SUITE.yaml] [--allow-mixed-commits]
       joins the output folders of `run --shard K/N` into the tables of a single run, after

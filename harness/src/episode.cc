@@ -9,6 +9,14 @@
 
 namespace crowdsim {
 
+namespace {
+// A plugin that throws something not derived from std::exception (`throw 42;`) gets the same
+// policy_error as any other throw, instead of std::terminate ending the whole run.
+constexpr const char* kNonStandardException =
+    "a policy threw an exception not derived from std::exception (e.g. `throw 42;`); throw a "
+    "std::runtime_error with a message instead";
+}  // namespace
+
 const char* EpisodeStatusName(EpisodeStatus s) {
   switch (s) {
     case EpisodeStatus::kRunning: return "running";
@@ -17,6 +25,8 @@ const char* EpisodeStatusName(EpisodeStatus s) {
     case EpisodeStatus::kCollisionObstacle: return "collision_obstacle";
     case EpisodeStatus::kTimeout: return "timeout";
     case EpisodeStatus::kPolicyError: return "policy_error";
+    case EpisodeStatus::kPolicyCrash: return "policy_crash";
+    case EpisodeStatus::kPolicyTimeout: return "policy_timeout";
   }
   return "unknown";
 }
@@ -152,6 +162,9 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
   } catch (const std::exception& e) {
     result_.error = std::string("Reset failed: ") + e.what();
     Finish(EpisodeStatus::kPolicyError);
+  } catch (...) {
+    result_.error = std::string("Reset failed: ") + kNonStandardException;
+    Finish(EpisodeStatus::kPolicyError);
   }
   Record();
 }
@@ -241,6 +254,10 @@ StepInfo Episode::Step() {
     CheckSpeed(info.robot_action.velocity, robot_.v_pref, "the robot's policy");
   } catch (const std::exception& e) {
     result_.error = e.what();
+    Finish(EpisodeStatus::kPolicyError);
+    return info;
+  } catch (...) {
+    result_.error = kNonStandardException;
     Finish(EpisodeStatus::kPolicyError);
     return info;
   }

@@ -32,7 +32,7 @@ RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit
   RowMetrics m;
   m.episodes = static_cast<int>(episodes.size());
   if (episodes.empty()) return m;
-  int success = 0, coll_h = 0, coll_o = 0, timeout = 0, error = 0;
+  int success = 0, coll_h = 0, coll_o = 0, timeout = 0, error = 0, crash = 0, hang = 0;
   long long steps = 0, danger = 0;
   double nav_time = 0.0, nav_time_sq = 0.0;
   for (const auto& e : episodes) {
@@ -45,6 +45,8 @@ RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit
       case EpisodeStatus::kCollisionHuman: ++coll_h; break;
       case EpisodeStatus::kCollisionObstacle: ++coll_o; break;
       case EpisodeStatus::kTimeout: ++timeout; break;
+      case EpisodeStatus::kPolicyCrash: ++crash; break;
+      case EpisodeStatus::kPolicyTimeout: ++hang; break;
       default: ++error; break;
     }
     steps += e.steps;
@@ -57,6 +59,8 @@ RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit
   m.collision_rate = (coll_h + coll_o) / n;
   m.timeout_rate = timeout / n;
   m.policy_error_rate = error / n;
+  m.policy_crash_rate = crash / n;
+  m.policy_timeout_rate = hang / n;
   m.nav_time = success > 0 ? nav_time / success : time_limit;
   m.danger_frequency = steps > 0 ? static_cast<double>(danger) / static_cast<double>(steps) : 0.0;
   for (const EpisodeColumn& c : kEpisodeColumns) {
@@ -98,6 +102,7 @@ RowMetrics SummarizeRows(std::span<const RowMetrics> rows) {
     for (auto field : {&RowMetrics::success_rate, &RowMetrics::collision_rate,
                        &RowMetrics::collision_human_rate, &RowMetrics::collision_obstacle_rate,
                        &RowMetrics::timeout_rate, &RowMetrics::policy_error_rate,
+                       &RowMetrics::policy_crash_rate, &RowMetrics::policy_timeout_rate,
                        &RowMetrics::nav_time, &RowMetrics::danger_frequency}) {
       m.*field += r.*field / k;
     }

@@ -38,11 +38,7 @@ std::vector<fs::path> DefaultSearchDirs() {
       if (!item.empty()) dirs.emplace_back(item);
     }
   }
-  if (const auto lib = InstalledLibDir()) {
-    dirs.push_back(*lib / "crowdsim-bench" / "plugins");
-  } else {
-    dirs.push_back(PluginRegistry::BuildPluginDir());
-  }
+  dirs.push_back(PluginRegistry::HarnessPluginDir());
   return dirs;
 }
 
@@ -98,6 +94,18 @@ std::shared_ptr<T> Make(const LoadedPlugin& p, PluginKind kind, Factory factory,
 }  // namespace
 
 fs::path PluginRegistry::BuildPluginDir() { return CROWDSIM_BUILD_PLUGIN_DIR; }
+
+fs::path PluginRegistry::HarnessPluginDir() {
+  if (const auto lib = InstalledLibDir()) return *lib / "crowdsim-bench" / "plugins";
+  return BuildPluginDir();
+}
+
+bool PluginRegistry::IsHarnessPlugin(const LoadedPlugin& p) {
+  if (p.path.empty()) return false;  // made in memory (e.g. the Python module's policy)
+  std::error_code ec;
+  static const fs::path own = fs::weakly_canonical(HarnessPluginDir(), ec);
+  return fs::weakly_canonical(p.path, ec).parent_path() == own;
+}
 
 fs::path DataRoot() {
   if (const char* env = std::getenv("CROWDSIM_DATA_DIR"); env && *env) return env;

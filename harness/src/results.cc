@@ -34,7 +34,8 @@ std::string Fixed(double x, int digits) {
 /// The statuses an episode can end with, as episodes.csv names them.
 constexpr EpisodeStatus kEndStatuses[] = {EpisodeStatus::kSuccess, EpisodeStatus::kCollisionHuman,
                                           EpisodeStatus::kCollisionObstacle, EpisodeStatus::kTimeout,
-                                          EpisodeStatus::kPolicyError};
+                                          EpisodeStatus::kPolicyError, EpisodeStatus::kPolicyCrash,
+                                          EpisodeStatus::kPolicyTimeout};
 
 EpisodeStatus ParseStatus(const std::string& s) {
   for (auto st : kEndStatuses) {
@@ -195,6 +196,15 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
     if (c.mean != RowMean::kNone) cols.push_back(metric(c.table_header, c.row_mean, c.table_decimals));
   }
   cols.push_back({"errors", [](const TableRow& r) { return Fixed(r.metrics.policy_error_rate, 4); }});
+  // Crashed and hung episodes (isolated runs) get columns only when a line has some, so the
+  // tables of runs without any keep their columns.
+  const auto any = [&](double RowMetrics::*field) {
+    return std::any_of(rows.begin(), rows.end(), [field](const TableRow& r) { return r.metrics.*field > 0; });
+  };
+  if (any(&RowMetrics::policy_crash_rate) || any(&RowMetrics::policy_timeout_rate)) {
+    cols.push_back(metric("crashes", &RowMetrics::policy_crash_rate, 4));
+    cols.push_back(metric("hangs", &RowMetrics::policy_timeout_rate, 4));
+  }
   cols.push_back({"episodes", [](const TableRow& r) { return std::to_string(r.metrics.episodes); }});
   if (!with_uncertainty) return cols;
   for (size_t i = 0; i < kCompared.size(); ++i) {
@@ -234,20 +244,10 @@ std::string EpisodeCsvHeader() {
 
 namespace {
 
-/// The member a column names, in a line (an identity member) or in its outcome.
-template <typename T>
-const T& Value(const EpisodeLine& e, T EpisodeLine::*member) { return e.*member; }
-template <typename T>
-const T& Value(const EpisodeLine& e, T EpisodeOutcome::*member) { return e.outcome.*member; }
-template <typename T>
-T& Value(EpisodeLine& e, T EpisodeLine::*member) { return e.*member; }
-template <typename T>
-T& Value(EpisodeLine& e, T EpisodeOutcome::*member) { return e.outcome.*member; }
-
 std::string FormatCell(const EpisodeColumn& c, const EpisodeLine& e) {
   return std::visit(
       [&](auto member) -> std::string {
-        const auto& v = Value(e, member);
+        const auto& v = ColumnValue(e, member);
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, std::string>) return CsvField(v);
         else if constexpr (std::is_same_v<T, EpisodeStatus>) return EpisodeStatusName(v);
@@ -319,7 +319,7 @@ bool ParseWhole(const std::string& s, Int* out) {
 std::string ParseCell(const EpisodeColumn& c, const std::string& text, EpisodeLine* e) {
   return std::visit(
       [&](auto member) -> std::string {
-        auto& v = Value(*e, member);
+        auto& v = ColumnValue(*e, member);
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, std::string>) {
           v = text;
@@ -576,6 +576,8 @@ std::string JsonLineTail(const TableRow& line) {
      << ", \"collision_obstacle_rate\": " << JsonNumber(m.collision_obstacle_rate)
      << ", \"timeout_rate\": " << JsonNumber(m.timeout_rate)
      << ", \"policy_error_rate\": " << JsonNumber(m.policy_error_rate)
+     << ", \"policy_crash_rate\": " << JsonNumber(m.policy_crash_rate)
+     << ", \"policy_timeout_rate\": " << JsonNumber(m.policy_timeout_rate)
      << ", \"nav_time\": " << JsonNumber(m.nav_time)
      << ", \"danger_frequency\": " << JsonNumber(m.danger_frequency);
   for (const EpisodeColumn& c : kEpisodeColumns) {
@@ -630,6 +632,7 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   os << "  \"episodes\": " << facts.episodes << ",\n";
   if (!facts.shard.empty()) os << "  \"shard\": " << JsonString(facts.shard) << ",\n";
   os << "  \"jobs\": " << facts.jobs << ",\n";
+  os << "  \"isolated\": " << (facts.isolated ? "true" : "false") << ",\n";
   os << "  \"started_utc\": " << JsonString(facts.started_utc) << ",\n";
   os << "  \"finished_utc\": " << JsonString(facts.finished_utc) << ",\n";
   os << "  \"wall_seconds\": " << JsonNumber(facts.wall_seconds) << ",\n";

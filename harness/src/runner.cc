@@ -15,7 +15,9 @@
 #include "crowdsim/episode.h"
 #include "crowdsim/row_instance.h"
 #include "crowdsim/version.h"
+#include "episode_wire.h"
 #include "run_progress.h"
+#include "worker_process.h"
 
 namespace crowdsim {
 namespace fs = std::filesystem;
@@ -231,14 +233,54 @@ EpisodeLine RunEpisode(const Suite& suite, const RowSpec& row, const WorldSource
   return line;
 }
 
-/// Runs the tasks on `jobs` threads, each finished episode appended to episodes.csv at once (a
-/// crash loses at most the episodes running) and added to `done`. Throws RunError naming the
-/// row and episode of the first failure, or the reason an append failed.
-void RunTasks(const Suite& suite, PluginRegistry& registry,
-              const std::vector<std::shared_ptr<WorldSource>>& worlds, const std::vector<Task>& tasks,
-              int jobs, const fs::path& episodes_csv, Progress& progress, EpisodeLines* done) {
-  std::ofstream out(episodes_csv, std::ios::app);
-  if (!out) throw RunError("cannot append to " + episodes_csv.string());
+/// Where finished episodes go: appended to episodes.csv at once (a crash loses at most the
+/// episodes running), counted on the progress line and added to `done`. Not thread-safe.
+class EpisodeSink {
+ public:
+  EpisodeSink(const fs::path& episodes_csv, Progress& progress, EpisodeLines* done)
+      : path_(episodes_csv), out_(episodes_csv, std::ios::app), progress_(progress), done_(done) {
+    if (!out_) throw RunError("cannot append to " + path_.string());
+  }
+
+  /// False when the append failed (a full disk or a lost mount: the run stops, naming the
+  /// cause in *why; the lines written so far stay, a cut last line is skipped on resume).
+  bool Add(EpisodeLine line, std::string* why) {
+    out_ << FormatEpisodeLine(line) << "\n";
+    out_.flush();
+    if (!out_) {
+      *why = "cannot append to " + path_.string() + ": " + std::strerror(errno);
+      return false;
+    }
+    progress_.Episode(line.outcome.status == EpisodeStatus::kSuccess);
+    (*done_)[{line.row, line.episode}] = std::move(line);
+    return true;
+  }
+
+  /// Ends the progress line; throws RunError with `failure` when the run stopped early.
+  void Finish(const std::string& failure) {
+    progress_.Finish();
+    out_.close();
+    if (!failure.empty()) {
+      throw RunError(failure + " (finished episodes are kept in " + path_.string() + "; rerun to resume)");
+    }
+  }
+
+ private:
+  fs::path path_;
+  std::ofstream out_;
+  Progress& progress_;
+  EpisodeLines* done_;
+};
+
+std::string Where(const RowSpec& row, int episode) {
+  return "row '" + row.label + "', episode " + std::to_string(episode);
+}
+
+/// Runs the tasks on `jobs` threads, each with its own plugin instances. Throws RunError
+/// naming the row and episode of the first failure, or the reason an append failed.
+void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
+                       const std::vector<std::shared_ptr<WorldSource>>& worlds,
+                       const std::vector<Task>& tasks, int jobs, EpisodeSink& sink) {
   std::mutex mutex;
   std::atomic<size_t> next{0};
   std::atomic<bool> failed{false};
@@ -257,31 +299,132 @@ void RunTasks(const Suite& suite, PluginRegistry& registry,
         line = RunEpisode(suite, row, *worlds[task.row], *inst, task.episode);
       } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(mutex);
-        if (!failed) failure = "row '" + row.label + "', episode " + std::to_string(task.episode) + ": " + e.what();
+        if (!failed) failure = Where(row, task.episode) + ": " + e.what();
         failed = true;
         break;
       }
       std::lock_guard<std::mutex> lock(mutex);
-      out << FormatEpisodeLine(line) << "\n";
-      out.flush();
-      if (!out) {
-        // A full disk or a lost mount: stop at once, naming the cause (the lines written so
-        // far stay; a cut last line is skipped when the run resumes).
-        if (!failed) failure = "cannot append to " + episodes_csv.string() + ": " + std::strerror(errno);
+      std::string why;
+      if (!sink.Add(std::move(line), &why)) {
+        if (!failed) failure = why;
         failed = true;
         break;
       }
-      progress.Episode(line.outcome.status == EpisodeStatus::kSuccess);
-      (*done)[{line.row, line.episode}] = std::move(line);
     }
   };
   std::vector<std::thread> threads;
   for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
   worker();
   for (auto& th : threads) th.join();
-  progress.Finish();
-  out.close();
-  if (failed) throw RunError(failure + " (finished episodes are kept in " + episodes_csv.string() + "; rerun to resume)");
+  sink.Finish(failure);
+}
+
+/// Every plugin a row's episodes call, with its role there.
+std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row) {
+  std::vector<std::pair<std::string, const PluginUse*>> uses = {
+      {"policy", &row.policy}, {"humans' policy", &row.humans.policy}, {"world", &row.world}};
+  for (const auto& s : row.sensors) uses.push_back({"sensor", &s});
+  return uses;
+}
+
+/// The plugins a crash of `row` is laid to: those not of the harness (loaded by path or from
+/// CROWDSIM_PLUGIN_PATH), or the robot's policy when all are the harness's own.
+std::string Suspects(const RowSpec& row) {
+  auto name = [](const std::string& role, const PluginUse& u) {
+    return role + " '" + std::string(u.loaded->descriptor->name) + "' (" + u.loaded->path.string() + ")";
+  };
+  std::string named;
+  for (const auto& [role, use] : RowPlugins(row)) {
+    if (!PluginRegistry::IsHarnessPlugin(*use->loaded)) named += (named.empty() ? "" : ", ") + name(role, *use);
+  }
+  return named.empty() ? name("policy", row.policy) : named;
+}
+
+/// The line of an episode whose worker died or was killed: no result, its own status.
+EpisodeLine LostEpisodeLine(const Suite& suite, const RowSpec& row, const WorldSource& world,
+                            int episode, const WorkerLoss& loss) {
+  EpisodeLine line;
+  line.row = row.label;
+  line.episode = episode;
+  line.seed = MakeEpisodeRequest(suite, row, world, episode).seed;
+  line.outcome.status =
+      loss.kind == WorkerLoss::Kind::kTimeout ? EpisodeStatus::kPolicyTimeout : EpisodeStatus::kPolicyCrash;
+  line.outcome.error = "worker process " + loss.Describe() + " while running " + Suspects(row);
+  return line;
+}
+
+/// Runs the tasks in `jobs` worker processes (worker_process.h): an episode whose worker dies
+/// or runs past the suite's episode_timeout_s is recorded as policy_crash / policy_timeout,
+/// named on stderr, and the run goes on. Throws RunError as RunTasksInThreads does, and when a
+/// worker was stopped from outside (SIGINT, SIGTERM, SIGHUP).
+void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
+                         const std::vector<std::shared_ptr<WorldSource>>& worlds,
+                         const std::vector<Task>& tasks, int jobs, EpisodeSink& sink) {
+  std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());  // a worker's own
+  std::string failure;
+  WorkerPoolCallbacks callbacks;
+  callbacks.run = [&](size_t t) -> std::string {
+    const Task task = tasks[t];
+    const RowSpec& row = suite.rows[task.row];
+    try {
+      auto& inst = instances[task.row];
+      if (!inst) inst = std::make_unique<RowInstance>(row, registry);
+      std::string bytes = "L";
+      bytes += EncodeEpisodeLine(RunEpisode(suite, row, *worlds[task.row], *inst, task.episode));
+      return bytes;
+    } catch (const std::exception& e) {
+      return "E" + Where(row, task.episode) + ": " + e.what();
+    }
+  };
+  callbacks.done = [&](size_t, std::string bytes) {
+    if (bytes.starts_with("E")) {
+      failure = bytes.substr(1);
+      return false;
+    }
+    return sink.Add(DecodeEpisodeLine(std::string_view(bytes).substr(1)), &failure);
+  };
+  callbacks.lost = [&](size_t t, const WorkerLoss& loss) {
+    const Task task = tasks[t];
+    const RowSpec& row = suite.rows[task.row];
+    if (loss.Interrupted()) {
+      failure = Where(row, task.episode) + ": its worker process was " + loss.Describe() + " from outside the run";
+      return false;
+    }
+    EpisodeLine line = LostEpisodeLine(suite, row, *worlds[task.row], task.episode, loss);
+    std::fprintf(stderr, "%s (rows[%d]): %s; recorded as %s, the run goes on\n", Where(row, task.episode).c_str(),
+                 task.row, line.outcome.error.c_str(), EpisodeStatusName(line.outcome.status));
+    return sink.Add(std::move(line), &failure);
+  };
+  WorkerPoolOptions options;
+  options.workers = jobs;
+  options.task_timeout_s = suite.episode_timeout_s;
+  try {
+    RunInWorkerProcesses(tasks.size(), options, callbacks);
+  } catch (const std::runtime_error& e) {
+    failure = e.what();
+  }
+  sink.Finish(failure);
+}
+
+/// Whether this run's episodes run in worker processes: the suite's `isolation` (or the run's
+/// override); auto = when a timeout is set or a plugin is not one of the harness's own.
+bool Isolated(const Suite& suite, const RunOptions& options) {
+  const IsolationMode mode = options.isolation.value_or(suite.isolation);
+  if (mode == IsolationMode::kOff && suite.episode_timeout_s > 0) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%g", suite.episode_timeout_s);
+    throw RunError("suite '" + suite.name + "' (" + suite.file.string() + ") sets episode_timeout_s " + seconds +
+                   " but the run's isolation is off; a timeout needs isolated episodes: drop the "
+                   "isolation override or the timeout");
+  }
+  if (mode != IsolationMode::kAuto) return mode == IsolationMode::kOn;
+  if (suite.episode_timeout_s > 0) return true;
+  for (const RowSpec& row : suite.rows) {
+    for (const auto& [role, use] : RowPlugins(row)) {
+      if (!PluginRegistry::IsHarnessPlugin(*use->loaded)) return true;
+    }
+  }
+  return false;
 }
 
 /// A shard's files: its episodes in (row, episode) order and a manifest naming the shard; the
@@ -341,6 +484,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   facts.started_utc = NowUtc();
   facts.jobs = std::max(1, options.jobs);
   facts.episodes = scope.episodes;
+  facts.isolated = Isolated(suite, options);
   if (scope.shards > 1) facts.shard = std::to_string(scope.shard_index) + "/" + std::to_string(scope.shards);
 
   RunSummary summary;
@@ -356,7 +500,12 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   const std::vector<Task> tasks = PendingTasks(suite, scope, done, &summary.episodes_resumed);
   Progress progress(suite.name, static_cast<int>(tasks.size()) + summary.episodes_resumed,
                     summary.episodes_resumed, options.progress);
-  RunTasks(suite, registry, worlds, tasks, facts.jobs, summary.out_dir / "episodes.csv", progress, &done);
+  EpisodeSink sink(summary.out_dir / "episodes.csv", progress, &done);
+  if (facts.isolated) {
+    RunTasksInProcesses(suite, registry, worlds, tasks, facts.jobs, sink);
+  } else {
+    RunTasksInThreads(suite, registry, worlds, tasks, facts.jobs, sink);
+  }
   summary.episodes_run = static_cast<int>(tasks.size());
 
   facts.finished_utc = NowUtc();

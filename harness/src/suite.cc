@@ -49,6 +49,33 @@ std::string RowSpec::ConfigHash() const { return HashText(canonical); }
 
 namespace suite_internal {
 
+namespace {
+
+/// The top-level `isolation` (auto, on, off) and `episode_timeout_s`; a timeout needs
+/// isolation (only a worker process can be stopped mid-episode).
+void ReadIsolation(Reader& r, const YAML::Node& root, Suite* s) {
+  const YAML::Node mode = root["isolation"];
+  if (Present(mode)) {
+    if (auto v = r.String(mode, "isolation")) {
+      if (*v == "auto") s->isolation = IsolationMode::kAuto;
+      else if (*v == "on") s->isolation = IsolationMode::kOn;
+      else if (*v == "off") s->isolation = IsolationMode::kOff;
+      else r.Error(mode, "isolation", "unknown value '" + *v + "' (valid: auto, on, off)");
+    }
+  }
+  const YAML::Node timeout = root["episode_timeout_s"];
+  if (Present(timeout)) {
+    if (auto v = r.Number(timeout, "episode_timeout_s", 0.0, 1e7)) s->episode_timeout_s = *v;
+  }
+  if (s->episode_timeout_s > 0 && s->isolation == IsolationMode::kOff) {
+    r.Error(mode, "isolation", "episode_timeout_s " + timeout.Scalar() + " needs isolated episodes "
+            "(a thread cannot be stopped mid-episode); set isolation to auto or on, or remove "
+            "episode_timeout_s");
+  }
+}
+
+}  // namespace
+
 void ReadSim(Reader& r, const YAML::Node& n, SimConfig* sim) {
   if (!r.IsMap(n, "sim", "simulation settings")) return;
   std::vector<std::string> keys;
@@ -360,7 +387,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   s.file = file;
   s.overrides = overrides;
   const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  r.CheckKeys(root, "", {"name", "description", "episodes", "seed", "sim", "world", "humans", "robot", "columns", "rows", "summaries"});
+  r.CheckKeys(root, "", {"name", "description", "episodes", "seed", "isolation", "episode_timeout_s", "sim", "world", "humans", "robot", "columns", "rows", "summaries"});
   s.name = r.Name(root, "results/<name>/");
   if (root["description"]) s.description = root["description"].Scalar();
   if (root["episodes"]) {
@@ -369,6 +396,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   if (root["seed"]) {
     if (auto e = r.Integer(root["seed"], "seed", 0, std::numeric_limits<std::int64_t>::max())) s.seed = static_cast<std::uint64_t>(*e);
   }
+  ReadIsolation(r, root, &s);
   if (root["sim"]) ReadSim(r, root["sim"], &s.sim);
   Defaults d;
   d.world = root["world"];
@@ -379,7 +407,8 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   if (const auto robot = root["robot"]) {
     if (r.IsMap(robot, "robot", "sensors")) {
       r.CheckKeys(robot, "robot", {"sensors"});
-      d.sensors = robot["sensors"];
+      // Assigning yaml-cpp's placeholder for a missing key throws InvalidNode (`robot: {}`).
+      if (robot["sensors"]) d.sensors = robot["sensors"];
     }
   }
   if (const auto cols = root["columns"]) {

@@ -25,21 +25,32 @@ std::string Where(const std::string& file, const YAML::Node& n) {
   throw WorldFileError(Where(file, n) + ": " + what);
 }
 
+// A scalar's text: names, keys and format. A list or map there is an error, never yaml-cpp's
+// exception (which would name neither the file nor the key).
+std::string Text(const std::string& file, const YAML::Node& n, const std::string& key) {
+  if (!n.IsScalar()) Fail(file, n, "'" + key + "' must be a single text value, not a list or map");
+  return n.Scalar();
+}
+
+double Number(const std::string& file, const YAML::Node& x, const std::string& key) {
+  double v = 0.0;
+  try {
+    v = x.as<double>();
+  } catch (const YAML::Exception&) {
+    Fail(file, x, "'" + key + "' holds a value that is not a number");
+  }
+  // .inf or .nan would silently drop out of every geometric test.
+  if (!std::isfinite(v)) Fail(file, x, "'" + key + "' holds '" + x.Scalar() + "', not a finite number");
+  return v;
+}
+
 std::vector<double> Numbers(const std::string& file, const YAML::Node& n, size_t count,
                             const std::string& key) {
   if (!n.IsSequence() || n.size() != count) {
     Fail(file, n, "'" + key + "' must be a list of " + std::to_string(count) + " numbers");
   }
   std::vector<double> v;
-  for (const auto& x : n) {
-    try {
-      v.push_back(x.as<double>());
-    } catch (const YAML::Exception&) {
-      Fail(file, x, "'" + key + "' holds a value that is not a number");
-    }
-    // .inf or .nan would silently drop out of every geometric test.
-    if (!std::isfinite(v.back())) Fail(file, x, "'" + key + "' holds '" + x.Scalar() + "', not a finite number");
-  }
+  for (const auto& x : n) v.push_back(Number(file, x, key));
   return v;
 }
 
@@ -76,6 +87,10 @@ int PositiveInt(const std::string& file, const YAML::Node& parent, const char* k
   if (v < 1) Fail(file, n, "'" + path + "' must be a whole number >= 1, got " + std::to_string(v));
   return v;
 }
+
+// The largest mask read (cells): 10,000 x 10,000, a 500 m building at 5 cm; a larger width or
+// height is a typo that would otherwise allocate gigabytes before the rows disagree.
+constexpr long kMaxMaskCells = 100'000'000;
 
 // One run-length row (world_file.h): appends its `width` cells to `cells`.
 void ParseMaskRow(const std::string& file, const YAML::Node& n, int row, int width,
@@ -124,7 +139,7 @@ std::shared_ptr<const NavigableMask> ParseMask(const std::string& file, const YA
     Fail(file, n, "'mask' must be a map with resolution, origin, width, height, rows");
   }
   for (const auto& kv : n) {
-    const std::string key = kv.first.as<std::string>();
+    const std::string key = Text(file, kv.first, "mask key");
     if (key != "resolution" && key != "origin" && key != "width" && key != "height" &&
         key != "rows") {
       Fail(file, kv.first,
@@ -147,6 +162,11 @@ std::shared_ptr<const NavigableMask> ParseMask(const std::string& file, const YA
   m->origin = Vec2(origin[0], origin[1]);
   m->width = PositiveInt(file, n, "width", "mask.width");
   m->height = PositiveInt(file, n, "height", "mask.height");
+  if (static_cast<long>(m->width) * m->height > kMaxMaskCells) {
+    Fail(file, n, "'mask' of " + std::to_string(m->width) + " x " + std::to_string(m->height) +
+                      " cells is larger than " + std::to_string(kMaxMaskCells) +
+                      " cells; check mask.width and mask.height (or use a coarser resolution)");
+  }
   const YAML::Node rows = n["rows"];
   if (!rows || !rows.IsSequence() || rows.size() != static_cast<size_t>(m->height)) {
     Fail(file, rows ? rows : n, "'mask.rows' must be a list of " + std::to_string(m->height) +
@@ -167,7 +187,7 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
   static const char* kKeys[] = {"format", "name", "attribution", "bounds", "rectangles",
                                 "robot_pairs", "free_points", "stats", "mask"};
   for (const auto& kv : root) {
-    const std::string key = kv.first.as<std::string>();
+    const std::string key = Text(file, kv.first, "key");
     bool known = false;
     for (const char* k : kKeys) known = known || key == k;
     if (!known) {
@@ -176,8 +196,8 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
     }
   }
   WorldFile w;
-  if (root["name"]) w.name = root["name"].as<std::string>();
-  if (root["attribution"]) w.attribution = root["attribution"].as<std::string>();
+  if (root["name"]) w.name = Text(file, root["name"], "name");
+  if (root["attribution"]) w.attribution = Text(file, root["attribution"], "attribution");
   if (!root["bounds"]) Fail(file, root, "missing key 'bounds' ([xmin, ymin, xmax, ymax])");
   w.bounds = ToRect(file, root["bounds"], "bounds");
   if (const auto rects = root["rectangles"]) {
@@ -185,18 +205,22 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
     for (const auto& r : rects) w.rectangles.push_back(ToRect(file, r, "rectangles"));
   }
   if (const auto pairs = root["robot_pairs"]) {
+    if (!pairs.IsMap()) Fail(file, pairs, "'robot_pairs' must be a map {train: [...], test: [...]}");
     w.train_pairs = Pairs(file, pairs["train"], "robot_pairs.train");
     w.test_pairs = Pairs(file, pairs["test"], "robot_pairs.test");
   }
   if (const auto pts = root["free_points"]) {
+    if (!pts.IsSequence()) Fail(file, pts, "'free_points' must be a list of [x, y]");
     for (const auto& p : pts) {
       auto v = Numbers(file, p, 2, "free_points");
       w.free_points.emplace_back(v[0], v[1]);
     }
   }
   if (const auto stats = root["stats"]) {
+    if (!stats.IsMap()) Fail(file, stats, "'stats' must be a map of names to numbers");
     for (const auto& kv : stats) {
-      w.stats.emplace_back(kv.first.as<std::string>(), kv.second.as<double>());
+      const std::string key = Text(file, kv.first, "stats key");
+      w.stats.emplace_back(key, Number(file, kv.second, "stats." + key));
     }
   }
   if (const auto mask = root["mask"]) w.mask = ParseMask(file, mask);
@@ -320,8 +344,9 @@ StaticMap WorldFile::ToStaticMap() const {
 WorldFile ReadWorldFile(const std::filesystem::path& path) {
   const std::string file = path.string();
   YAML::Node root = LoadYaml(path);
-  if (root["format"] && root["format"].as<std::string>() != "crowdsim-world/1") {
-    Fail(file, root["format"], "unsupported format '" + root["format"].as<std::string>() +
+  if (!root.IsMap()) Fail(file, root, "a world must be a map with bounds and rectangles");
+  if (root["format"] && Text(file, root["format"], "format") != "crowdsim-world/1") {
+    Fail(file, root["format"], "unsupported format '" + root["format"].Scalar() +
                                    "' (expected crowdsim-world/1)");
   }
   return ParseWorld(file, root);

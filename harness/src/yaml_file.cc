@@ -8,26 +8,65 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void FindDuplicateKeys(const YAML::Node& n, const std::string& file, std::vector<SuiteError>* errors) {
-  if (n.IsMap()) {
-    std::map<std::string, YAML::Mark> seen;
-    for (const auto& kv : n) {
-      if (kv.first.IsScalar()) {
-        const auto [first, inserted] = seen.emplace(kv.first.Scalar(), kv.first.Mark());
-        if (!inserted) {
-          const YAML::Mark at = kv.first.Mark();
-          errors->push_back({file, at.line + 1, at.column + 1, "",
-                             "key '" + kv.first.Scalar() + "' is given twice in this map (first at line " +
-                                 std::to_string(first->second.line + 1) +
-                                 "); only one value would count: remove or rename one"});
-        }
-      }
-      FindDuplicateKeys(kv.second, file, errors);
-    }
-  } else if (n.IsSequence()) {
-    for (const auto& item : n) FindDuplicateKeys(item, file, errors);
+// The most values a document may hold with its aliases expanded: ten times our largest world
+// set; more is a document whose aliases nest aliases (a few lines can stand for billions).
+constexpr std::size_t kMaxNodes = 1'000'000;
+
+// One walk over the document before any reader sees it: duplicate keys, and the two shapes of
+// alias (`*name`) that no reader could walk: a map or list that contains itself, and an
+// expansion beyond kMaxNodes. `open` holds the maps and lists being walked (the current path).
+struct Walk {
+  Walk(const std::string& file, std::vector<SuiteError>* errors) : file(file), errors(errors) {}
+
+  const std::string& file;
+  std::vector<SuiteError>* errors;
+  std::vector<YAML::Node> open;
+  std::size_t visited = 0;
+  bool stopped = false;
+
+  void Error(const YAML::Node& at, const std::string& message) {
+    const YAML::Mark m = at.Mark();
+    errors->push_back({file, m.line + 1, m.column + 1, "", message});
   }
-}
+
+  void Visit(const YAML::Node& n) {
+    if (stopped) return;
+    if (++visited > kMaxNodes) {
+      Error(n, "the document holds more than " + std::to_string(kMaxNodes) +
+                   " values once its aliases (*name) are expanded; write fewer aliases of aliases");
+      stopped = true;
+      return;
+    }
+    if (!n.IsMap() && !n.IsSequence()) return;
+    for (const YAML::Node& outer : open) {
+      if (outer.is(n)) {
+        Error(n, "this map or list contains an alias (*name) of itself, so it never ends; "
+                 "remove the alias");
+        stopped = true;
+        return;
+      }
+    }
+    open.push_back(n);
+    if (n.IsMap()) {
+      std::map<std::string, YAML::Mark> seen;
+      for (const auto& kv : n) {
+        if (kv.first.IsScalar()) {
+          const auto [first, inserted] = seen.emplace(kv.first.Scalar(), kv.first.Mark());
+          if (!inserted) {
+            Error(kv.first, "key '" + kv.first.Scalar() + "' is given twice in this map (first at line " +
+                                std::to_string(first->second.line + 1) +
+                                "); only one value would count: remove or rename one");
+          }
+        }
+        Visit(kv.first);
+        Visit(kv.second);
+      }
+    } else {
+      for (const auto& item : n) Visit(item);
+    }
+    open.pop_back();
+  }
+};
 
 }  // namespace
 
@@ -52,7 +91,8 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what, std::vect
     return YAML::Node(YAML::NodeType::Null);
   }
   const std::size_t before = errors->size();
-  FindDuplicateKeys(root, file.string(), errors);
+  const std::string name = file.string();
+  Walk(name, errors).Visit(root);
   return errors->size() == before ? root : YAML::Node(YAML::NodeType::Null);
 }
 

@@ -1,6 +1,8 @@
 // Internal to the core: loading a YAML document for the suite, training-file and world-file
 // readers, with every problem located: a missing file, a folder given as a file, a syntax
-// error, and a key given twice in one map (yaml-cpp would silently keep one of the values).
+// error, a key given twice in one map (yaml-cpp would silently keep one of the values), and
+// aliases no reader could walk (a map or list holding an alias of itself, which overflowed the
+// stack, or aliases of aliases expanding past a million values).
 #pragma once
 
 #include <yaml-cpp/yaml.h>

@@ -1,7 +1,6 @@
 #include "observation_tensors.h"
 
 #include <ATen/ops/full.h>
-#include <ATen/ops/scalar_tensor.h>
 #include <ATen/ops/zeros.h>
 
 #include <algorithm>
@@ -13,47 +12,99 @@ namespace {
 constexpr int kRobotValues = 9;
 constexpr int kHumanValues = 5;
 
-at::Tensor RobotTensor(const AgentState& s) {
-  at::Tensor robot = at::zeros({kRobotValues}, at::kDouble);
-  double* r = robot.data_ptr<double>();
-  const double values[kRobotValues] = {s.position.x(), s.position.y(), s.velocity.x(),
-                                       s.velocity.y(), s.goal.x(),     s.goal.y(),
-                                       s.radius,       s.v_pref,       s.heading};
-  std::copy(values, values + kRobotValues, r);
-  return robot;
+size_t PeopleSeen(std::span<const SensorReading> readings) {
+  size_t seen = 0;
+  for (const SensorReading& reading : readings) seen += reading.people.size();
+  return seen;
+}
+
+/// The first range sensor's reading (the `lidar` key), or null.
+const SensorReading* RangeReading(std::span<const SensorReading> readings) {
+  for (const SensorReading& reading : readings) {
+    if (!reading.ranges.empty()) return &reading;
+  }
+  return nullptr;
+}
+
+/// `count` observations as tensors with a leading dimension of `count`, filled row by row.
+class ObservationStack {
+ public:
+  ObservationStack(int64_t count, int64_t human_rows, int64_t beams)
+      : robot_(at::zeros({count, kRobotValues}, at::kDouble)),
+        humans_(at::zeros({count, human_rows, kHumanValues}, at::kDouble)),
+        mask_(at::zeros({count, human_rows}, at::kBool)),
+        time_(at::zeros({count}, at::kDouble)),
+        human_rows_(human_rows),
+        beams_(beams) {
+    if (beams > 0) lidar_ = at::zeros({count, beams}, at::kDouble);
+  }
+
+  void Put(int64_t i, const AgentState& s, std::span<const SensorReading> readings, double time) {
+    const double robot[kRobotValues] = {s.position.x(), s.position.y(), s.velocity.x(),
+                                        s.velocity.y(), s.goal.x(),     s.goal.y(),
+                                        s.radius,       s.v_pref,       s.heading};
+    std::copy(robot, robot + kRobotValues, robot_.data_ptr<double>() + i * kRobotValues);
+    double* h = humans_.data_ptr<double>() + i * human_rows_ * kHumanValues;
+    bool* m = mask_.data_ptr<bool>() + i * human_rows_;
+    for (const SensorReading& reading : readings) {
+      for (const PersonObservation& p : reading.people) {
+        const double values[kHumanValues] = {p.position.x(), p.position.y(), p.velocity.x(),
+                                             p.velocity.y(), p.radius};
+        h = std::copy(values, values + kHumanValues, h);
+        *m++ = true;
+      }
+    }
+    time_.data_ptr<double>()[i] = time;
+    if (const SensorReading* lidar = RangeReading(readings); lidar != nullptr && beams_ > 0) {
+      std::copy(lidar->ranges.begin(), lidar->ranges.end(), lidar_.data_ptr<double>() + i * beams_);
+    }
+  }
+
+  /// The stacked tensors; `single` drops the leading dimension (one observation).
+  ObservationDict Dict(bool single) const {
+    auto shaped = [single](const at::Tensor& t) { return single ? t.select(0, 0) : t; };
+    ObservationDict dict;
+    dict.insert("robot", shaped(robot_));
+    dict.insert("time", shaped(time_));
+    dict.insert("humans", shaped(humans_));
+    dict.insert("humans_mask", shaped(mask_));
+    if (lidar_.defined()) dict.insert("lidar", shaped(lidar_));
+    return dict;
+  }
+
+ private:
+  at::Tensor robot_, humans_, mask_, time_, lidar_;
+  int64_t human_rows_;
+  int64_t beams_;
+};
+
+int64_t BeamsOf(std::span<const SensorReading> readings) {
+  const SensorReading* lidar = RangeReading(readings);
+  return lidar != nullptr ? static_cast<int64_t>(lidar->ranges.size()) : 0;
 }
 
 }  // namespace
 
 ObservationDict MakeObservationDict(const Observation& obs, int humans) {
-  size_t seen = 0;
-  for (const SensorReading& reading : obs.readings) seen += reading.people.size();
-  const int64_t rows = std::max<int64_t>(humans, static_cast<int64_t>(seen));
-  at::Tensor people = at::zeros({rows, kHumanValues}, at::kDouble);
-  at::Tensor mask = at::zeros({rows}, at::kBool);
-  double* h = people.data_ptr<double>();
-  bool* m = mask.data_ptr<bool>();
-  for (const SensorReading& reading : obs.readings) {
-    for (const PersonObservation& p : reading.people) {
-      const double values[kHumanValues] = {p.position.x(), p.position.y(), p.velocity.x(),
-                                           p.velocity.y(), p.radius};
-      h = std::copy(values, values + kHumanValues, h);
-      *m++ = true;
-    }
+  const int64_t rows = std::max<int64_t>(humans, static_cast<int64_t>(PeopleSeen(obs.readings)));
+  ObservationStack stack(1, rows, BeamsOf(obs.readings));
+  stack.Put(0, obs.self, obs.readings, obs.time);
+  return stack.Dict(/*single=*/true);
+}
+
+ObservationDict MakeLookaheadDict(std::span<const LookaheadOutcome> outcomes, double time,
+                                  int humans) {
+  int64_t rows = humans;
+  int64_t beams = 0;
+  for (const LookaheadOutcome& o : outcomes) {
+    rows = std::max<int64_t>(rows, static_cast<int64_t>(PeopleSeen(o.readings)));
+    beams = std::max(beams, BeamsOf(o.readings));
   }
-  ObservationDict dict;
-  dict.insert("robot", RobotTensor(obs.self));
-  dict.insert("time", at::scalar_tensor(obs.time, at::kDouble));
-  dict.insert("humans", people);
-  dict.insert("humans_mask", mask);
-  for (const SensorReading& reading : obs.readings) {
-    if (reading.ranges.empty()) continue;
-    at::Tensor lidar = at::zeros({static_cast<int64_t>(reading.ranges.size())}, at::kDouble);
-    std::copy(reading.ranges.begin(), reading.ranges.end(), lidar.data_ptr<double>());
-    dict.insert("lidar", lidar);
-    break;
+  ObservationStack stack(static_cast<int64_t>(outcomes.size()), rows, beams);
+  for (size_t i = 0; i < outcomes.size(); ++i) {
+    stack.Put(static_cast<int64_t>(i), outcomes[i].robot, outcomes[i].readings, time);
   }
-  return dict;
+  return stack.Dict(/*single=*/false);
 }
 
 ObservationDict ProbeObservationDict(int humans, int lidar_beams) {
@@ -63,6 +114,18 @@ ObservationDict ProbeObservationDict(int humans, int lidar_beams) {
   obs.self.radius = 0.3;
   ObservationDict dict = MakeObservationDict(obs, humans);
   if (lidar_beams > 0) dict.insert("lidar", at::full({lidar_beams}, 5.0, at::kDouble));
+  return dict;
+}
+
+ObservationDict ProbeLookaheadDict(int actions, int humans, int lidar_beams) {
+  std::vector<LookaheadOutcome> outcomes(static_cast<size_t>(actions));
+  for (LookaheadOutcome& o : outcomes) {
+    o.robot.goal = Vec2(4.0, 0.0);
+    o.robot.v_pref = 1.0;
+    o.robot.radius = 0.3;
+  }
+  ObservationDict dict = MakeLookaheadDict(outcomes, 0.0, humans);
+  if (lidar_beams > 0) dict.insert("lidar", at::full({actions, lidar_beams}, 5.0, at::kDouble));
   return dict;
 }
 

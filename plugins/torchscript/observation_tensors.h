@@ -6,14 +6,19 @@
 //   humans_mask (H,) bool: true for real rows
 //   lidar (beams,) float64: the first range sensor's ranges (only when there is one)
 //   time () float64: s since the episode start
+// The lookahead form (`output: values`) stacks one such observation per candidate action on a
+// leading dimension A: robot (A, 9), humans (A, H, 5), humans_mask (A, H), lidar (A, beams),
+// time (A,): what the robot would observe after each action (harness lookahead).
 // Includes libtorch: only the policy's .cc files include this header.
 #pragma once
 
 #include <ATen/core/Dict.h>
 #include <ATen/core/Tensor.h>
 
+#include <span>
 #include <string>
 
+#include "crowdsim/lookahead.h"
 #include "crowdsim/observation.h"
 
 namespace crowdsim::torchscript {
@@ -26,5 +31,13 @@ ObservationDict MakeObservationDict(const Observation& obs, int humans);
 /// A stand-in observation for the load-time check of a module's output: robot at the origin,
 /// goal 4 m ahead, v_pref 1, nobody seen, `lidar_beams` ranges of 5 m (none when 0).
 ObservationDict ProbeObservationDict(int humans, int lidar_beams);
+
+/// The observations after each lookahead outcome, stacked (humans padded to at least `humans`
+/// rows; `time` is theirs: the current observation's plus one time step).
+ObservationDict MakeLookaheadDict(std::span<const LookaheadOutcome> outcomes, double time,
+                                  int humans);
+
+/// The stand-in of ProbeObservationDict for `actions` candidates (the `values` load-time check).
+ObservationDict ProbeLookaheadDict(int actions, int humans, int lidar_beams);
 
 }  // namespace crowdsim::torchscript

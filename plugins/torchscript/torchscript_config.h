@@ -11,14 +11,16 @@ namespace crowdsim::torchscript {
 /// What the module returns.
 enum class Output {
   kVelocity,  ///< 2 numbers: vx, vy in m/s, world frame
-  kAction,    ///< an index into, or one score per action of, CrowdNav's 81 holonomic actions
+  kAction,    ///< an index into, or one score per action of, the action set
+  /// V(s') of each action's lookahead state, batched (a value network such as CADRL's or
+  /// SARL's): the plugin acts on the best r + gamma^(dt v_pref) V(s')
+  kValues,
 };
 
-/// CrowdNav's holonomic action set (crowdsim_bench.holonomic_actions()): stop, then 16
-/// directions x 5 exponentially spaced speeds up to v_pref, direction the outer loop.
-inline constexpr int kSpeeds = 5;
-inline constexpr int kDirections = 16;
-inline constexpr int kActionCount = kSpeeds * kDirections + 1;
+/// CrowdNav's holonomic action set (crowdsim_bench.holonomic_actions()), the default: stop,
+/// then 16 directions x 5 exponentially spaced speeds up to v_pref, direction the outer loop.
+inline constexpr int kCrowdNavSpeeds = 5;
+inline constexpr int kCrowdNavDirections = 16;
 
 /// Everything the policy is built from.
 struct TorchScriptConfig {
@@ -27,10 +29,16 @@ struct TorchScriptConfig {
   int humans = 5;               ///< rows of `humans` / `humans_mask` (more when more are seen)
   int lidar_beams = 45;         ///< size of `lidar` (must equal the lidar2d sensor's beams)
   Output output = Output::kVelocity;
+  /// The action set of `action` and `values` (value_rl's BuildActionSpace, as cadrl and sarl).
+  int speed_samples = kCrowdNavSpeeds;
+  int rotation_samples = kCrowdNavDirections;
+  bool stop_action = true;
   int torch_threads = 1;        ///< libtorch intra-op threads
 
   bool UsesPerson() const { return sensors != "lidar"; }
   bool UsesLidar() const { return sensors != "person"; }
+  bool UsesLookahead() const { return output == Output::kValues; }
+  int ActionCount() const { return speed_samples * rotation_samples + (stop_action ? 1 : 0); }
 };
 
 /// The plugin parameters.
@@ -43,7 +51,7 @@ TorchScriptConfig ConfigFromParams(const Params& params);
 /// Plugin names of the sensors the configuration reads (checked against the row's sensors).
 std::vector<std::string> SensorPlugins(const TorchScriptConfig& config);
 
-/// "velocity" | "action".
+/// "velocity" | "action" | "values".
 const char* OutputName(Output output);
 
 }  // namespace crowdsim::torchscript

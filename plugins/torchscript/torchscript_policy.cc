@@ -3,11 +3,13 @@
 #include <ATen/Parallel.h>
 #include <c10/core/InferenceMode.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "value_rl/action_space.h"
+#include "value_rl/value_policy.h"
 #include "module_file.h"
 #include "module_output.h"
 #include "observation_tensors.h"
@@ -19,15 +21,26 @@ struct TorchScriptPolicy::Impl {
   torch::jit::Module module;
   double actions_v_pref = -1.0;  ///< v_pref of `actions`
   std::vector<Action> actions;   ///< CrowdNav's holonomic actions at actions_v_pref
+  double gamma = 0.9;            ///< the episode's discount (`values` mode)
+  std::vector<LookaheadOutcome> outcomes;
 
   c10::IValue Forward(ObservationDict obs) {
     c10::InferenceMode guard;
     try {
       return module.forward({c10::IValue(std::move(obs))});
     } catch (const c10::Error& e) {
-      throw std::runtime_error("torchscript: forward of '" + config.weights +
-                               "' failed: " + e.what_without_backtrace());
+      throw std::runtime_error(Failed(e.what_without_backtrace()));
+    } catch (const std::exception& e) {  // torch::jit::JITException: an error raised in forward
+      throw std::runtime_error(Failed(e.what()));
     }
+  }
+
+  std::string Failed(const std::string& what) const {
+    const char* input = config.UsesLookahead()
+                            ? "the stacked lookahead observations (output: values: robot (A, 9), "
+                              "humans (A, H, 5), ...; one row per action)"
+                            : "the observation";
+    return "torchscript: forward of '" + config.weights + "' failed on " + input + ": " + what;
   }
 
   void CheckLidar(const Observation& obs) const {
@@ -46,10 +59,30 @@ struct TorchScriptPolicy::Impl {
 
   const std::vector<Action>& ActionsAt(double v_pref) {
     if (v_pref != actions_v_pref) {
-      actions = value_rl::BuildActionSpace(kSpeeds, kDirections, /*stop_action=*/true, v_pref);
+      actions = value_rl::BuildActionSpace(config.speed_samples, config.rotation_samples,
+                                           config.stop_action, v_pref);
       actions_v_pref = v_pref;
     }
     return actions;
+  }
+
+  /// `values` mode: the earliest action whose r + gamma^(dt v_pref) V(s') is within
+  /// ValuePolicy's tie tolerance of the best, as the built-in cadrl and sarl decide.
+  Action DecideByValues(const Observation& obs) {
+    if (obs.lookahead == nullptr) {
+      throw std::runtime_error("torchscript: output: values needs the lookahead (robot policies only)");
+    }
+    const std::vector<Action>& candidates = ActionsAt(obs.self.v_pref);
+    obs.lookahead->Evaluate(candidates, &outcomes);
+    const std::vector<double> next = ValuesFromOutput(
+        Forward(MakeLookaheadDict(outcomes, obs.time + obs.time_step, config.humans)),
+        config.ActionCount(), config.weights);
+    const double discount = std::pow(gamma, obs.time_step * obs.self.v_pref);
+    std::vector<float> values(next.size());
+    for (size_t k = 0; k < next.size(); ++k) {
+      values[k] = static_cast<float>(outcomes[k].reward + discount * next[k]);
+    }
+    return candidates[value_rl::EarliestBest(values)];
   }
 };
 
@@ -64,8 +97,10 @@ TorchScriptPolicy::TorchScriptPolicy(const TorchScriptConfig& config)
   // The output is checked once on a stand-in observation: a module that returns the wrong
   // thing is refused before the first episode, naming the file and what `output` expects.
   const int beams = config.UsesLidar() ? config.lidar_beams : 0;
-  CheckOutput(impl_->Forward(ProbeObservationDict(config.humans, beams)), config.output,
-              config.weights);
+  const ObservationDict probe = config.UsesLookahead()
+                                    ? ProbeLookaheadDict(config.ActionCount(), config.humans, beams)
+                                    : ProbeObservationDict(config.humans, beams);
+  CheckOutput(impl_->Forward(probe), config.output, config.ActionCount(), config.weights);
 }
 
 TorchScriptPolicy::~TorchScriptPolicy() = default;
@@ -73,11 +108,15 @@ TorchScriptPolicy::~TorchScriptPolicy() = default;
 PolicyNeeds TorchScriptPolicy::Needs() const {
   PolicyNeeds needs;
   needs.sensors = SensorPlugins(impl_->config);
+  needs.lookahead = impl_->config.UsesLookahead();
   return needs;
 }
 
+void TorchScriptPolicy::Reset(const EpisodeContext& ctx) { impl_->gamma = ctx.sim.gamma; }
+
 Action TorchScriptPolicy::Decide(const Observation& obs) {
   impl_->CheckLidar(obs);
+  if (impl_->config.UsesLookahead()) return impl_->DecideByValues(obs);
   const c10::IValue out = impl_->Forward(MakeObservationDict(obs, impl_->config.humans));
   return ActionFromOutput(out, impl_->config.output, impl_->ActionsAt(obs.self.v_pref),
                           impl_->config.weights);

@@ -19,6 +19,7 @@ class TorchScriptPolicy final : public Policy {
   ~TorchScriptPolicy() override;
 
   PolicyNeeds Needs() const override;
+  void Reset(const EpisodeContext& ctx) override;
   Action Decide(const Observation& obs) override;
 
  private:

@@ -43,6 +43,8 @@ py::dict RowDict(const TableRow& r) {
   d["collision_obstacle"] = m.collision_obstacle_rate;
   d["timeout"] = m.timeout_rate;
   d["policy_error"] = m.policy_error_rate;
+  d["policy_crash"] = m.policy_crash_rate;
+  d["policy_timeout"] = m.policy_timeout_rate;
   d["nav_time"] = m.nav_time;
   d["danger"] = m.danger_frequency;
   d["path_length"] = m.path_length;
@@ -195,6 +197,7 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
   RunOptions options;
   options.out_dir = out.empty() ? DefaultRunDir(suite) : std::filesystem::path(out);
   options.jobs = 1;  // one Python interpreter: episodes one after another
+  options.isolation = IsolationMode::kOff;  // the policy lives in this interpreter: no fork
   options.episodes = episodes;
   options.fresh = fresh;
   options.progress = progress;
@@ -255,7 +258,7 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("humans", &VectorEnv::humans)
       .def_property_readonly("beams", &VectorEnv::beams);
   py::list status_names;
-  for (int s = 0; s <= static_cast<int>(crowdsim::EpisodeStatus::kPolicyError); ++s)
+  for (int s = 0; s <= static_cast<int>(crowdsim::EpisodeStatus::kPolicyTimeout); ++s)
     status_names.append(crowdsim::EpisodeStatusName(static_cast<crowdsim::EpisodeStatus>(s)));
   m.attr("STATUS_NAMES") = status_names;
   m.def("_time_fixed_velocity_steps", &TimeFixedVelocitySteps, py::arg("suite"), py::arg("row"),

@@ -16,5 +16,13 @@ if(CROWDSIM_BUILD_TESTS AND TARGET crowdsim_plugin_torchscript)
     set_tests_properties(torchscript_plugin PROPERTIES LABELS integration TIMEOUT 300
       SKIP_RETURN_CODE 77
       ENVIRONMENT "CROWDSIM_BENCH=$<TARGET_FILE:crowdsim-bench>;PYTHONPATH=${CROWDSIM_PYTHON_DIR}")
+    # The committed CADRL/SARL weights exported to TorchScript (crowdsim_bench.torchscript_export)
+    # decide as the built-in plugins; skipped (77) without python3-torch or the Python package.
+    add_test(NAME torchscript_export
+      COMMAND "${_torchscript_python}" tests/python/test_torchscript_export.py
+      WORKING_DIRECTORY "${CMAKE_SOURCE_DIR}")
+    set_tests_properties(torchscript_export PROPERTIES LABELS integration TIMEOUT 300
+      SKIP_RETURN_CODE 77
+      ENVIRONMENT "CROWDSIM_BENCH=$<TARGET_FILE:crowdsim-bench>;PYTHONPATH=${CROWDSIM_PYTHON_DIR}")
   endif()
 endif()

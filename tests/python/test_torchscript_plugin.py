@@ -112,6 +112,19 @@ class ThreeNumbers(torch.nn.Module):
         return torch.zeros(3)
 
 
+class NearerToGoalIsBetter(torch.nn.Module):
+    """`values` mode: V(s') = minus the distance to the goal of each stacked lookahead state,
+    with every key's batch size checked against the robot's."""
+
+    def forward(self, obs: Dict[str, torch.Tensor]) -> torch.Tensor:
+        r = obs["robot"]
+        a = r.size(0)
+        if obs["humans"].size(0) != a or obs["humans_mask"].size(0) != a or obs["time"].size(0) != a:
+            raise RuntimeError("batch sizes differ")
+        d = r[:, 4:6] - r[:, 0:2]
+        return -torch.sqrt((d * d).sum(1)).float()
+
+
 class NoForward(torch.nn.Module):
     @torch.jit.export
     def act(self, obs: Dict[str, torch.Tensor]) -> torch.Tensor:
@@ -186,6 +199,23 @@ class TorchScriptPlugin(unittest.TestCase):
         self.assertEqual(got["goal_index"], got["goal_scores"])
         self.assertNotEqual(got["goal_index"], got["velocity"])
         self.assertTrue(all(float(e[7]) > 0 for e in got["goal_index"].values()))
+
+    def test_values_mode_acts_on_the_best_lookahead_value(self):
+        pt = save(NearerToGoalIsBetter(), self.path("values.pt"))
+        got = run(quick_with_rows(self.dir, [
+            f"{{label: values, policy: torchscript, weights: {pt}, params: {{output: values}}}}",
+        ]), self.path("out"))
+        statuses = [e[3] for e in got["values"].values()]
+        self.assertNotIn("policy_error", statuses)
+        self.assertIn("success", statuses)
+        self.assertTrue(all(float(e[7]) > 0 for e in got["values"].values()))
+
+    def test_values_mode_refuses_a_module_without_one_value_per_action(self):
+        pt = save(ConstantIndex(), self.path("i.pt"))
+        err = self.validate_error(
+            f"{{label: ts, policy: torchscript, weights: {pt}, params: {{output: values, "
+            "speed_samples: 2, rotation_samples: 8, stop_action: false}}")
+        self.assertIn("output: values expects 16 floating-point values", err)
 
     def test_observation_layout_equals_the_python_envs(self):
         try:

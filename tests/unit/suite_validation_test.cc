@@ -2,6 +2,8 @@
 // the offending value and the valid choices.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include "crowdsim/suite.h"
 #include "temp_dir.h"
 #include "test_paths.h"
@@ -206,6 +208,44 @@ TEST_F(SuiteValidation, DuplicateKeysAreErrorsNotSilentChoices) {
   ASSERT_FALSE(r.suite);
   EXPECT_NE(Find(r, "suite.yaml:3:1: key 'episodes' is given twice in this map (first at line 2)"), "") << All(r);
   EXPECT_NE(Find(r, "suite.yaml:8:5: key 'policy' is given twice in this map (first at line 7)"), "") << All(r);
+}
+
+// Found while writing the fuzz targets (tests/fuzz): an alias of a map or list inside itself made the
+// duplicate-key walk recurse until the stack overflowed (every reader: suites, world files,
+// training files); aliases of aliases could stand for billions of values.
+TEST_F(SuiteValidation, SelfContainingAndExplodingAliasesAreErrors) {
+  for (const char* text : {"name: &a [*a]\n", "&a {x: *a}\n", "rows:\n  - &r {policy: linear, humans: [*r]}\n"}) {
+    auto r = Load(text);
+    ASSERT_FALSE(r.suite) << text;
+    EXPECT_NE(Find(r, "contains an alias (*name) of itself, so it never ends"), "") << text << All(r);
+  }
+  // Eight levels of ten aliases each: 10^8 values in nine lines.
+  std::ostringstream bomb;
+  bomb << "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i <= 7; ++i) {
+    bomb << "a" << i << ": &a" << i << " [*a" << i - 1;
+    for (int k = 1; k < 10; ++k) bomb << ", *a" << i - 1;
+    bomb << "]\n";
+  }
+  auto r = Load(bomb.str() + "name: t\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "more than 1000000 values once its aliases (*name) are expanded"), "") << All(r);
+  // An alias that is only a shared value is fine.
+  auto shared = Load(std::string("defaults: &d {count: 2, policy: linear}\n") + kGood);
+  EXPECT_NE(Find(shared, "unknown key 'defaults'"), "") << All(shared);
+  EXPECT_EQ(Find(shared, "alias"), "") << All(shared);
+}
+
+// Found by the suite_reader fuzz target (tests/fuzz): a `robot:` map without `sensors` threw
+// yaml-cpp's InvalidNode out of LoadSuite (the CLI ended with "terminate called").
+TEST_F(SuiteValidation, RobotMapWithoutSensorsIsAnErrorNotACrash) {
+  auto r = Load("name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+                "robot: {sensor: [person]}\nrows:\n  - {label: a, policy: linear}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "suite.yaml:4:9: robot.sensor: unknown key 'sensor' (valid keys: sensors)"), "") << All(r);
+  auto empty = Load("name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+                    "robot: {}\nrows:\n  - {label: a, policy: linear}\n");
+  EXPECT_TRUE(empty.suite) << All(empty);
 }
 
 TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {

@@ -192,5 +192,41 @@ TEST(WorldFileMask, MalformedMasksNameTheFileLineAndKey) {
   }
 }
 
+// Found by the world_reader fuzz target (tests/fuzz): a list or map where a name, key or number
+// belongs made yaml-cpp's own exception escape (no file, no key) and ended the CLI; a mask of
+// absurd width allocated gigabytes. Each is now a WorldFileError at the offending line.
+TEST(WorldFileValues, WrongKindsOfValuesAreLocatedErrors) {
+  TempDir dir;
+  const std::string head = "format: crowdsim-world/1\nbounds: [0, 0, 1, 1]\n";
+  // {file text, line of the error, text the message must hold}
+  const std::tuple<std::string, int, std::string> cases[] = {
+      {head + "stats: {free_area_m2: [1]}\n", 3, "'stats.free_area_m2' holds a value that is not a number"},
+      {head + "stats: {free_area_m2: .nan}\n", 3, "'stats.free_area_m2' holds '.nan', not a finite number"},
+      {head + "stats: [1, 2]\n", 3, "'stats' must be a map of names to numbers"},
+      {head + "stats: {[a]: 1}\n", 3, "'stats key' must be a single text value"},
+      {head + "name: [a, b]\n", 3, "'name' must be a single text value"},
+      {head + "attribution: {by: me}\n", 3, "'attribution' must be a single text value"},
+      {head + "? [bounds]\n: 1\n", 3, "'key' must be a single text value"},
+      {head + "robot_pairs: 5\n", 3, "'robot_pairs' must be a map"},
+      {head + "free_points: {a: 1}\n", 3, "'free_points' must be a list of [x, y]"},
+      {"format: [crowdsim-world/1]\nbounds: [0, 0, 1, 1]\n", 1, "'format' must be a single text value"},
+      {"just text\n", 1, "a world must be a map"},
+      {head + "mask: {resolution: 1, origin: [0, 0], width: 2000000000, height: 1, rows: [\"2000000000\"]}\n", 3,
+       "'mask' of 2000000000 x 1 cells is larger than 100000000 cells"},
+  };
+  int k = 0;
+  for (const auto& [text, line, hint] : cases) {
+    const auto path = dir.Write("bad" + std::to_string(k++) + ".yaml", text);
+    try {
+      ReadWorldFile(path);
+      ADD_FAILURE() << "no error for\n" << text;
+    } catch (const WorldFileError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(path.string() + ":" + std::to_string(line) + ":"), std::string::npos) << what;
+      EXPECT_NE(what.find(hint), std::string::npos) << what;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace crowdsim

@@ -16,7 +16,13 @@
 
 namespace crowdsim {
 
-enum class EpisodeStatus { kRunning, kSuccess, kCollisionHuman, kCollisionObstacle, kTimeout, kPolicyError };
+/// kPolicyCrash / kPolicyTimeout are never set by an Episode: the suite runner records them for
+/// an episode whose isolated worker process died (a signal, an exit) or ran past the suite's
+/// episode_timeout_s (worker_process.h).
+enum class EpisodeStatus {
+  kRunning, kSuccess, kCollisionHuman, kCollisionObstacle, kTimeout, kPolicyError,
+  kPolicyCrash, kPolicyTimeout
+};
 
 const char* EpisodeStatusName(EpisodeStatus s);
 

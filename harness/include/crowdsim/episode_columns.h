@@ -1,5 +1,6 @@
-// episodes.csv's columns, listed once. The header, writer and reader of episodes.csv, a table
-// row's per-episode means (their table.md / table.csv columns, manifest.json keys and summary
+// episodes.csv's columns, listed once. The header, writer and reader of episodes.csv, the
+// exact bytes an isolated worker sends of an episode (episode_wire.cc), a table row's
+// per-episode means (their table.md / table.csv columns, manifest.json keys and summary
 // lines) and the timing columns that comparisons of runs leave out all follow kEpisodeColumns,
 // so a new per-episode metric is an EpisodeOutcome field, its computation in the episode and
 // one line here (plus a RowMetrics field when a table row shows its mean).
@@ -30,6 +31,17 @@ using EpisodeField =
     std::variant<std::string EpisodeLine::*, int EpisodeLine::*, std::uint64_t EpisodeLine::*,
                  EpisodeStatus EpisodeOutcome::*, int EpisodeOutcome::*, double EpisodeOutcome::*,
                  std::string EpisodeOutcome::*>;
+
+/// The member a column names, in a line (an identity member) or in its outcome
+/// (std::visit over EpisodeColumn::field).
+template <typename T>
+const T& ColumnValue(const EpisodeLine& e, T EpisodeLine::*member) { return e.*member; }
+template <typename T>
+const T& ColumnValue(const EpisodeLine& e, T EpisodeOutcome::*member) { return e.outcome.*member; }
+template <typename T>
+T& ColumnValue(EpisodeLine& e, T EpisodeLine::*member) { return e.*member; }
+template <typename T>
+T& ColumnValue(EpisodeLine& e, T EpisodeOutcome::*member) { return e.outcome.*member; }
 
 /// How a table row averages a column over its episodes.
 enum class RowMean {

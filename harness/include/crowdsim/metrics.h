@@ -17,6 +17,11 @@ struct RowMetrics {
   double collision_obstacle_rate = 0.0;
   double timeout_rate = 0.0;
   double policy_error_rate = 0.0;
+  /// Episodes whose isolated worker process died (policy_crash) or was killed at the suite's
+  /// episode_timeout_s (policy_timeout): no result, so they count as failures in every rate's
+  /// denominator, never as successes, collisions or timeouts (docs/metrics.md).
+  double policy_crash_rate = 0.0;
+  double policy_timeout_rate = 0.0;
   double nav_time = 0.0;        ///< mean time of successful episodes (time_limit if none, CrowdNav)
   double danger_frequency = 0.0;  ///< danger steps / all steps
   // Row means of episode columns (kEpisodeColumns says which mean each is).

@@ -62,6 +62,13 @@ class PluginRegistry {
 
   /// Folder with the plugins built with this harness.
   static std::filesystem::path BuildPluginDir();
+  /// The harness's own plugins: the installed copy's plugin folder, or BuildPluginDir() in a
+  /// build tree (the last of the default search folders).
+  static std::filesystem::path HarnessPluginDir();
+  /// Whether `p` is one of the harness's own plugins (its file lies in HarnessPluginDir()),
+  /// not one loaded by path or from CROWDSIM_PLUGIN_PATH: suites run the others isolated in
+  /// worker processes by default (isolation: auto).
+  static bool IsHarnessPlugin(const LoadedPlugin& p);
 
  private:
   std::filesystem::path Resolve(const std::string& name_or_path) const;

@@ -56,6 +56,7 @@ struct RunFacts {
   std::string started_utc;
   std::string finished_utc;
   int jobs = 1;
+  bool isolated = false;  ///< episodes ran in worker processes (Suite::isolation)
   int episodes = 0;
   double wall_seconds = 0.0;
   std::map<std::string, std::string> world_identities;  ///< per row label

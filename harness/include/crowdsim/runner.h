@@ -1,9 +1,11 @@
 // Runs a suite: every (row, episode) in parallel worker threads with their own plugin
-// instances, results written as episodes finish, resumable.
+// instances, or in worker processes that a crashing or hanging plugin cannot take down with the
+// run (isolation), results written as episodes finish, resumable.
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,7 +22,10 @@ class RunError : public std::runtime_error {
 
 struct RunOptions {
   std::filesystem::path out_dir;  ///< default: DefaultRunDir(suite)
-  int jobs = 1;                   ///< worker threads
+  int jobs = 1;                   ///< worker threads, or worker processes when isolated
+  /// Overrides the suite's `isolation` when set (e.g. off for a policy that lives in this
+  /// process's Python interpreter, which a forked worker must not run).
+  std::optional<IsolationMode> isolation;
   int episodes = -1;              ///< overrides the suite's count when > 0
   bool fresh = false;             ///< discard stored episodes instead of resuming
   bool progress = true;           ///< progress line on stderr

@@ -74,6 +74,11 @@ struct SummarySpec {
   std::optional<PublishedReference> reference;
 };
 
+/// Whether a run's episodes run in worker processes that a crashing or hanging plugin can
+/// take down without the run (worker_process.h). kAuto: isolated when a plugin of the suite is
+/// not one of the harness's own (PluginRegistry::IsHarnessPlugin) or episode_timeout_s is set.
+enum class IsolationMode { kAuto, kOn, kOff };
+
 struct Suite {
   std::string name;
   std::string description;
@@ -85,6 +90,11 @@ struct Suite {
   std::vector<RowSpec> rows;
   std::vector<SummarySpec> summaries;  ///< shown after the rows; not part of the config hash
   std::vector<std::string> overrides;  ///< `--set key.path=value` applied to the file, in order
+  /// How episodes run (`isolation:`), and the wall-clock seconds an isolated episode may take
+  /// before its worker is killed and it is recorded as policy_timeout (`episode_timeout_s:`,
+  /// 0 = no limit). Neither decides an episode's result, so neither is in the config hash.
+  IsolationMode isolation = IsolationMode::kAuto;
+  double episode_timeout_s = 0.0;
   /// Canonical text of everything that decides the results (not the episode count); its
   /// hash tells whether stored results can be resumed.
   std::string canonical;

@@ -164,17 +164,18 @@ Action ValuePolicy::Decide(const Observation& obs) {
   const std::vector<float> next = m.Evaluate(*m.model, m.candidate_ptrs);
   const double discount = std::pow(m.gamma, obs.time_step * obs.self.v_pref);
   m.action_values.resize(next.size());
-  float top = -std::numeric_limits<float>::infinity();
   for (size_t k = 0; k < next.size(); ++k) {
     m.action_values[k] = static_cast<float>(m.outcomes[k].reward + discount * next[k]);
-    top = std::max(top, m.action_values[k]);
   }
-  // The earliest action within kTieTolerance of the best: BLAS kernels give the rows of one
-  // batch (and different CPUs the same row) values that differ in the last bits, so exact
-  // comparison would let a CPU's kernel choice break ties.
+  return m.actions[EarliestBest(m.action_values)];
+}
+
+size_t EarliestBest(std::span<const float> values) {
+  float top = -std::numeric_limits<float>::infinity();
+  for (float v : values) top = std::max(top, v);
   size_t best = 0;
-  while (best + 1 < next.size() && m.action_values[best] < top - kTieTolerance) ++best;
-  return m.actions[best];
+  while (best + 1 < values.size() && values[best] < top - ValuePolicy::kTieTolerance) ++best;
+  return best;
 }
 
 std::string ValuePolicy::Describe() const {

@@ -57,6 +57,11 @@ class ValuePolicy final : public Policy, public Trainable {
   std::unique_ptr<Impl> impl_;
 };
 
+/// Index of the earliest of `values` within ValuePolicy::kTieTolerance of the largest: BLAS
+/// kernels give the rows of one batch (and different CPUs the same row) values that differ in
+/// the last bits, so exact comparison would let a CPU's kernel choice break ties.
+size_t EarliestBest(std::span<const float> values);
+
 /// The plugin factory of both plugins.
 std::unique_ptr<Policy> MakeValuePolicy(Model model, const Params& params);
 

@@ -1,0 +1,181 @@
+// Crash isolation: a plugin that segfaults, aborts, exits or hangs in Decide costs its episode
+// (policy_crash / policy_timeout, named on stderr with row, episode, plugin and signal), not
+// the run; a resume does not run it again; a throw of a non-std exception is a policy_error;
+// and isolated runs give the same episodes as threaded ones.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <optional>
+
+#include "crowdsim/results.h"
+#include "crowdsim/runner.h"
+#include "temp_dir.h"
+#include "test_paths.h"
+
+namespace crowdsim {
+namespace {
+
+using testing::ReadText;
+using testing::TempDir;
+
+/// Every row's robot misbehaves in its instance's third episode (episode 2 with one worker);
+/// the replacement worker's fresh instance runs episode 3 normally.
+std::string MisbehavingSuite() {
+  const std::string plugin = (testing::FixturePluginDir() / "crowdsim_throwing_policy.so").string();
+  auto row = [&](const std::string& mode) {
+    return "  - {label: " + mode + ", policy: " + plugin + ", params: {mode: " + mode + ", fail_after_steps: 0, good_episodes: 2}}\n";
+  };
+  return "name: misbehaving\nepisodes: 4\nseed: 5\nepisode_timeout_s: 1\n"
+         "world: {source: random_rect, obstacles: 1}\nhumans: {count: 2, policy: linear}\nrows:\n" +
+         row("segfault") + row("abort") + row("exit") + row("hang") + row("throw_int") +
+         "  - {label: good, policy: linear}\n";
+}
+
+/// Built-in plugins only, in CrowdNav's circle crossing and a 3-obstacle room.
+constexpr const char* kPlainSuite = R"(name: plain
+episodes: 10
+seed: 3
+humans: {count: 4, policy: orca, goal_mode: new_goal}
+robot: {sensors: [person]}
+world: {source: crowdnav, scenario: circle_crossing, circle_radius: 4}
+rows:
+  - {label: orca, policy: orca}
+  - {label: planner, policy: ompl_planner, world: {source: random_rect, obstacles: 3}}
+)";
+
+class CrashIsolationTest : public ::testing::Test {
+ protected:
+  Suite LoadOrDie(const std::string& yaml, const std::vector<std::string>& set = {}) {
+    const auto file = dir_.Write("suite.yaml", yaml);
+    SuiteLoadResult r = LoadSuite(file, registry_, set);
+    std::string errors;
+    for (const auto& e : r.errors) errors += e.Format() + "\n";
+    EXPECT_TRUE(r.suite) << errors;
+    return r.suite ? *r.suite : Suite{};
+  }
+  std::string LoadErrors(const std::string& yaml) {
+    SuiteLoadResult r = LoadSuite(dir_.Write("bad.yaml", yaml), registry_);
+    std::string errors;
+    for (const auto& e : r.errors) errors += e.Format() + "\n";
+    return errors;
+  }
+  RunSummary Run(const Suite& s, const std::string& out, int jobs,
+                 std::optional<IsolationMode> isolation = std::nullopt) {
+    return RunSuite(s, registry_, {.out_dir = dir_.path() / out, .jobs = jobs, .isolation = isolation, .progress = false});
+  }
+  std::string Manifest(const std::string& out) { return ReadText(dir_.path() / out / "manifest.json"); }
+
+  TempDir dir_;
+  PluginRegistry registry_{{testing::PluginDir(), testing::FixturePluginDir()}};
+};
+
+TEST_F(CrashIsolationTest, CrashesAndHangsCostTheirEpisodeNotTheRun) {
+  const Suite s = LoadOrDie(MisbehavingSuite());
+  ::testing::internal::CaptureStderr();
+  const RunSummary r = Run(s, "out", 1);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(r.rows.size(), 6u);
+  EXPECT_EQ(r.episodes_run, 24);
+  EXPECT_NE(Manifest("out").find("\"isolated\": true"), std::string::npos);
+
+  const std::map<std::string, const char*> signal = {
+      {"segfault", "signal SIGSEGV"}, {"abort", "signal SIGABRT"}, {"exit", "exited with status 3"},
+      {"hang", "killed at the episode_timeout_s of 1 s"}};
+  for (const TableRow& row : r.rows) {
+    const RowMetrics& m = row.metrics;
+    SCOPED_TRACE(row.Label());
+    EXPECT_EQ(m.episodes, 4);
+    // Every episode is counted exactly once, the lost ones in their own column.
+    EXPECT_NEAR(m.success_rate + m.collision_rate + m.timeout_rate + m.policy_error_rate +
+                    m.policy_crash_rate + m.policy_timeout_rate,
+                1.0, 1e-12);
+    const std::string label = row.Label();
+    EXPECT_DOUBLE_EQ(m.policy_crash_rate, label == "segfault" || label == "abort" || label == "exit" ? 0.25 : 0.0);
+    EXPECT_DOUBLE_EQ(m.policy_timeout_rate, label == "hang" ? 0.25 : 0.0);
+    // A thrown int is a policy error like any other throw, in every episode after the second.
+    EXPECT_DOUBLE_EQ(m.policy_error_rate, label == "throw_int" ? 0.5 : 0.0);
+    if (signal.count(label)) {
+      // The message names the row, the episode, the plugin (and its file) and the signal.
+      const std::string status = label == "hang" ? "policy_timeout" : "policy_crash";
+      const std::string expected = "row '" + label + "', episode 2 (rows[";
+      const size_t at = err.find(expected);
+      ASSERT_NE(at, std::string::npos) << err;
+      const std::string message = err.substr(at, err.find('\n', at) - at);
+      EXPECT_NE(message.find(signal.at(label)), std::string::npos) << message;
+      EXPECT_NE(message.find("policy 'throwing_policy'"), std::string::npos) << message;
+      EXPECT_NE(message.find("crowdsim_throwing_policy.so"), std::string::npos) << message;
+      EXPECT_NE(message.find("recorded as " + status), std::string::npos) << message;
+    }
+  }
+  const std::string csv = ReadText(dir_.path() / "out" / "episodes.csv");
+  EXPECT_NE(csv.find("segfault,2,"), std::string::npos);
+  EXPECT_NE(csv.find(",policy_crash,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",policy_timeout,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("not derived from std::exception"), std::string::npos) << csv;
+  const std::string table = ReadText(dir_.path() / "out" / "table.md");
+  EXPECT_NE(table.find("| crashes | hangs |"), std::string::npos) << table;
+
+  // The resume keeps the lost episodes: nothing runs (and crashes) again.
+  const RunSummary again = Run(s, "out", 1);
+  EXPECT_EQ(again.episodes_run, 0);
+  EXPECT_EQ(again.episodes_resumed, 24);
+  EXPECT_EQ(ReadText(dir_.path() / "out" / "episodes.csv"), csv);
+  EXPECT_DOUBLE_EQ(again.rows[0].metrics.policy_crash_rate, 0.25);
+}
+
+TEST_F(CrashIsolationTest, IsolatedRunsGiveTheSameEpisodesAsThreads) {
+  const Suite s = LoadOrDie(kPlainSuite);
+  const RunSummary threads = Run(s, "threads", 2);
+  const RunSummary processes = Run(s, "processes", 2, IsolationMode::kOn);
+  EXPECT_NE(Manifest("threads").find("\"isolated\": false"), std::string::npos);
+  EXPECT_NE(Manifest("processes").find("\"isolated\": true"), std::string::npos);
+  EXPECT_EQ(WithoutTimingColumns(ReadText(dir_.path() / "threads" / "episodes.csv")),
+            WithoutTimingColumns(ReadText(dir_.path() / "processes" / "episodes.csv")));
+  ASSERT_EQ(threads.rows.size(), processes.rows.size());
+  for (size_t i = 0; i < threads.rows.size(); ++i) {
+    const RowMetrics& a = threads.rows[i].metrics;
+    const RowMetrics& b = processes.rows[i].metrics;
+    // Exact: the workers send every value unrounded.
+    EXPECT_EQ(a.success_rate, b.success_rate);
+    EXPECT_EQ(a.nav_time, b.nav_time);
+    EXPECT_EQ(a.path_length, b.path_length);
+    EXPECT_EQ(a.min_human_distance, b.min_human_distance);
+    EXPECT_EQ(a.discounted_return, b.discounted_return);
+    EXPECT_EQ(a.danger_frequency, b.danger_frequency);
+  }
+  // No crash, no extra columns.
+  EXPECT_EQ(ReadText(dir_.path() / "processes" / "table.md").find("crashes"), std::string::npos);
+}
+
+TEST_F(CrashIsolationTest, AutoIsolatesOnlyPluginsFromOutsideTheHarness) {
+  Run(LoadOrDie(kPlainSuite), "own", 1);
+  EXPECT_NE(Manifest("own").find("\"isolated\": false"), std::string::npos);
+  // A fixture plugin (not in the harness's plugin folder) turns isolation on, off overrides.
+  const std::string outside = std::string(kPlainSuite) + "  - {label: fine, policy: throwing_policy, params: {good_episodes: 1000}}\n";
+  Run(LoadOrDie(outside), "outside", 1);
+  EXPECT_NE(Manifest("outside").find("\"isolated\": true"), std::string::npos);
+  Run(LoadOrDie(outside, {"isolation=off"}), "off", 1);
+  EXPECT_NE(Manifest("off").find("\"isolated\": false"), std::string::npos);
+  // A timeout needs isolation, so it turns auto on.
+  Run(LoadOrDie(kPlainSuite, {"episode_timeout_s=30"}), "timeout", 1);
+  EXPECT_NE(Manifest("timeout").find("\"isolated\": true"), std::string::npos);
+}
+
+TEST_F(CrashIsolationTest, SuiteKeysAreChecked) {
+  const std::string base = "name: k\nepisodes: 2\nworld: {source: random_rect}\nrows:\n  - {label: a, policy: linear}\n";
+  EXPECT_NE(LoadErrors("isolation: sometimes\n" + base).find("isolation: unknown value 'sometimes' (valid: auto, on, off)"),
+            std::string::npos)
+      << LoadErrors("isolation: sometimes\n" + base);
+  EXPECT_NE(LoadErrors("episode_timeout_s: -1\n" + base).find("episode_timeout_s: value -1 is out of range"),
+            std::string::npos)
+      << LoadErrors("episode_timeout_s: -1\n" + base);
+  const std::string both = LoadErrors("isolation: off\nepisode_timeout_s: 5\n" + base);
+  EXPECT_NE(both.find("episode_timeout_s 5 needs isolated episodes"), std::string::npos) << both;
+  // Neither key decides results: the config hash (what resume compares) is unchanged.
+  const Suite plain = LoadOrDie(base);
+  const Suite isolated = LoadOrDie("isolation: on\nepisode_timeout_s: 5\n" + base);
+  EXPECT_EQ(plain.ConfigHash(), isolated.ConfigHash());
+}
+
+}  // namespace
+}  // namespace crowdsim
