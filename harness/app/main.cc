@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "cli_args.h"
 #include "commands.h"
+#include "crowdsim/cli/args.h"
 #include "crowdsim/version.h"
-#include "process_group.h"
 #include "floorplan_cli.h"
+#include "process_group.h"
 
 namespace {
 
