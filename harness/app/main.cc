@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "cli_args.h"
 #include "commands.h"
+#include "crowdsim/cli/args.h"
 #include "crowdsim/version.h"
+#include "floorplan/floorplan_command.h"
 #include "process_group.h"
-#include "floorplan_cli.h"
 
 namespace {
 
@@ -58,11 +58,8 @@ const std::vector<Command>& Commands() {
       mpirun or srun, rank r of R takes files r, r+R, ... (one training per rank); alone, it
       trains them one after another (scripts/train_all.sh -j N runs N at a time on one machine)
 )"},
-    {"floorplan", crowdsim::floorplan::RunFloorplanCli, R"(  crowdsim-bench floorplan import IMAGE [--resolution M] [--kind navmesh|outline] [--max-rectangles 30] --out WORLD.yaml
-  crowdsim-bench floorplan preview WORLD.yaml [--image IMAGE] --out FILE.svg
-  crowdsim-bench floorplan dataset --source DIR --out worlds/floorplans
-      imports real floor plans into rectangle worlds (see worlds/floorplan/README.md)
-)"},
+    // A tool registered as a command (tools/floorplan): its entry point and usage are its own.
+    {"floorplan", crowdsim::floorplan::FloorplanCommand, crowdsim::floorplan::kFloorplanUsage},
     {"render", crowdsim::cli::RenderCommand, R"(  crowdsim-bench render SUITE.yaml --row R --episode K [--compare R2] [--sensors-at STEP]
                  [--animate] [--speed X] [--scale S] [--set KEY.PATH=VALUE]... --out FILE.{svg,png,pdf,gif,mp4}
       draws one episode (rows 1.. as in the table or by label, episodes 0..): trajectories,

@@ -2,8 +2,8 @@
 #include <iostream>
 #include <optional>
 
-#include "cli_args.h"
 #include "commands.h"
+#include "crowdsim/cli/args.h"
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/render/animation.h"
 #include "crowdsim/render/episode_replay.h"

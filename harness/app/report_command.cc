@@ -2,8 +2,8 @@
 // of a training folder (learning curve, validations, outcomes and replay memory by block).
 #include <iostream>
 
-#include "cli_args.h"
 #include "commands.h"
+#include "crowdsim/cli/args.h"
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/render/figure_output.h"
 #include "crowdsim/render/learning_curve.h"

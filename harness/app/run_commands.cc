@@ -9,13 +9,13 @@
 #include <iostream>
 #include <thread>
 
-#include "cli_args.h"
 #include "commands.h"
-#include "process_group.h"
+#include "crowdsim/cli/args.h"
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/runner.h"
 #include "crowdsim/suite.h"
 #include "crowdsim/training/train_spec.h"
+#include "process_group.h"
 
 namespace crowdsim::cli {
 namespace {

@@ -6,11 +6,11 @@
 #include <iostream>
 #include <optional>
 
+#include "commands.h"
+#include "crowdsim/cli/args.h"
 #include "crowdsim/render/learning_curve.h"
 #include "crowdsim/training/train_spec.h"
 #include "crowdsim/training/trainer.h"
-#include "cli_args.h"
-#include "commands.h"
 #include "process_group.h"
 
 namespace crowdsim::cli {

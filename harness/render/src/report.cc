@@ -12,6 +12,7 @@
 #include "crowdsim/render/palette.h"
 #include "crowdsim/render/results_folder.h"
 #include "crowdsim/render/svg_writer.h"
+#include "crowdsim/render/xml_escape.h"
 #include "crowdsim/results.h"
 #include "crowdsim/suite.h"
 

@@ -4,6 +4,7 @@
 
 #include "crowdsim/render/base64.h"
 #include "crowdsim/render/cairo_backend.h"
+#include "crowdsim/render/xml_escape.h"
 
 namespace crowdsim::render {
 namespace {
@@ -51,29 +52,6 @@ std::string Points(const std::vector<Vec2>& pts) {
 }
 
 }  // namespace
-
-std::string XmlEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string ToSvg(const Drawing& d, const SvgOptions& options) {
   std::string out;

@@ -10,6 +10,7 @@
 #include "crowdsim/render/report.h"
 #include "crowdsim/render/results_folder.h"
 #include "crowdsim/render/svg_writer.h"
+#include "crowdsim/render/xml_escape.h"
 
 namespace crowdsim::render {
 namespace fs = std::filesystem;

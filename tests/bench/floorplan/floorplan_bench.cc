@@ -1,7 +1,7 @@
 // Import time of the largest source floor plan (target: well under a second).
 #include <benchmark/benchmark.h>
 
-#include "floorplan_import.h"
+#include "floorplan/floorplan_import.h"
 #include "test_paths.h"
 
 namespace {

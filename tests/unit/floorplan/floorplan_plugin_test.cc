@@ -5,7 +5,7 @@
 
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/world_file.h"
-#include "floorplan_import.h"
+#include "floorplan/floorplan_import.h"
 #include "floorplan_test_util.h"
 #include "temp_dir.h"
 #include "test_paths.h"

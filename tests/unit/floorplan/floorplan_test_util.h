@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-#include "grid.h"
+#include "floorplan/grid.h"
 
 namespace crowdsim::floorplan::testing {
 
@@ -35,6 +35,15 @@ inline Grid OutlineRoom(int page, int top, int left, int size, int door) {
   const int mid = top + size / 2;
   if (door > 0) Fill(g, mid - door / 2, left, mid - door / 2 + door - 1, left, 1);
   return g;
+}
+
+/// An 8 x 8 m room with a 0.8 m door and a table, on a 12 x 12 m page: written as dir/room.pgm.
+inline std::filesystem::path WriteRoomPlan(const std::filesystem::path& dir) {
+  Grid g = OutlineRoom(120, 20, 20, 80, 8);
+  Fill(g, 40, 40, 49, 59, 0);  // a table
+  const auto path = dir / "room.pgm";
+  WritePgm(g, path);
+  return path;
 }
 
 }  // namespace crowdsim::floorplan::testing

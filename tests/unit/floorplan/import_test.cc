@@ -5,9 +5,8 @@
 #include <tuple>
 
 #include "crowdsim/world_file.h"
-#include "floorplan_cli.h"
-#include "floorplan_error.h"
-#include "floorplan_import.h"
+#include "floorplan/floorplan_error.h"
+#include "floorplan/floorplan_import.h"
 #include "floorplan_test_util.h"
 #include "temp_dir.h"
 #include "test_paths.h"
@@ -19,9 +18,9 @@ using crowdsim::testing::ReadText;
 using crowdsim::testing::SharedDir;
 using crowdsim::testing::SourceDir;
 using crowdsim::testing::TempDir;
-using testing::Fill;
 using testing::OutlineRoom;
 using testing::WritePgm;
+using testing::WriteRoomPlan;
 
 ImportOptions Small() {
   ImportOptions o;
@@ -31,15 +30,6 @@ ImportOptions Small() {
   o.train_pairs = 40;
   o.free_points = 25;
   return o;
-}
-
-// An 8 x 8 m room with a 0.8 m door, on a 12 x 12 m page.
-std::filesystem::path RoomPlan(const TempDir& dir) {
-  Grid g = OutlineRoom(120, 20, 20, 80, 8);
-  Fill(g, 40, 40, 49, 59, 0);  // a table
-  const auto path = dir.path() / "room.pgm";
-  WritePgm(g, path);
-  return path;
 }
 
 // Expects ImportFloorplan to throw a FloorplanError naming the file and containing `hint`.
@@ -57,7 +47,7 @@ void ExpectImportError(const std::filesystem::path& image, const ImportOptions& 
 
 TEST(ImportTest, OutlineRoomInteriorOnlyAndDoorDoesNotLeak) {
   TempDir dir;
-  const ImportResult r = ImportFloorplan(RoomPlan(dir), Small());
+  const ImportResult r = ImportFloorplan(WriteRoomPlan(dir.path()), Small());
   // Inside of the walls: 78 x 78 cells minus the 2 m2 table; the 1.6 km2 page outside is gone.
   EXPECT_NEAR(StatValue(r.world, "interior_free_area_m2"), 7.8 * 7.8 - 2.0, 0.5);
   EXPECT_LT(StatValue(r.world, "free_area_m2"), 7.8 * 7.8);
@@ -68,14 +58,14 @@ TEST(ImportTest, OutlineRoomInteriorOnlyAndDoorDoesNotLeak) {
   // Without door-gap closing the flood from the border runs through the door into the room.
   ImportOptions leaky = Small();
   leaky.door_gap = 0.2;
-  ExpectImportError(RoomPlan(dir), leaky, "no interior");
+  ExpectImportError(WriteRoomPlan(dir.path()), leaky, "no interior");
 }
 
 TEST(ImportTest, KeepsTheLargestRectanglesOnly) {
   TempDir dir;
   ImportOptions o = Small();
   o.max_rectangles = 3;
-  const ImportResult r = ImportFloorplan(RoomPlan(dir), o);
+  const ImportResult r = ImportFloorplan(WriteRoomPlan(dir.path()), o);
   ASSERT_EQ(r.world.rectangles.size(), 3u);
   EXPECT_GT(StatValue(r.world, "rectangles_total"), 3.0);
   EXPECT_EQ(StatValue(r.world, "rectangles_kept"), 3.0);
@@ -83,7 +73,7 @@ TEST(ImportTest, KeepsTheLargestRectanglesOnly) {
     EXPECT_LE(r.world.rectangles[k].Area(), r.world.rectangles[k - 1].Area() + 1e-9);
   }
   o.max_rectangles = 1000;
-  const ImportResult all = ImportFloorplan(RoomPlan(dir), o);
+  const ImportResult all = ImportFloorplan(WriteRoomPlan(dir.path()), o);
   EXPECT_EQ(all.world.rectangles.size(), StatValue(all.world, "rectangles_total"));
   EXPECT_NEAR(StatValue(all.world, "kept_coverage_pct"), 100.0, 1e-9);
   for (size_t k = 0; k < 3; ++k) EXPECT_EQ(all.world.rectangles[k], r.world.rectangles[k]);
@@ -93,7 +83,7 @@ TEST(ImportTest, PairsAreFreeFarApartReachableAndDisjoint) {
   TempDir dir;
   ImportOptions o = Small();
   o.max_rectangles = 1000;  // every blocked cell is a rectangle: the mask check is visible
-  const ImportResult r = ImportFloorplan(RoomPlan(dir), o);
+  const ImportResult r = ImportFloorplan(WriteRoomPlan(dir.path()), o);
   const double min_d = StatValue(r.world, "min_pair_distance_m");
   EXPECT_GT(min_d, 2.0);
   ASSERT_EQ(r.world.test_pairs.size(), 30u);
@@ -121,7 +111,7 @@ TEST(ImportTest, PairsAreFreeFarApartReachableAndDisjoint) {
 // The world file carries the mask the samples were drawn in, at the world's position.
 TEST(ImportTest, WorldCarriesTheNavigableMask) {
   TempDir dir;
-  const ImportResult r = ImportFloorplan(RoomPlan(dir), Small());
+  const ImportResult r = ImportFloorplan(WriteRoomPlan(dir.path()), Small());
   ASSERT_TRUE(r.world.mask);
   const NavigableMask& m = *r.world.mask;
   ASSERT_EQ(m.width, r.mask.width);
@@ -146,7 +136,7 @@ TEST(ImportTest, WorldCarriesTheNavigableMask) {
 
 TEST(ImportTest, SameInputSameFile) {
   TempDir dir;
-  const auto plan = RoomPlan(dir);
+  const auto plan = WriteRoomPlan(dir.path());
   WriteWorldFile(ImportFloorplan(plan, Small()).world, dir.path() / "a.yaml");
   WriteWorldFile(ImportFloorplan(plan, Small()).world, dir.path() / "b.yaml");
   EXPECT_EQ(ReadText(dir.path() / "a.yaml"), ReadText(dir.path() / "b.yaml"));
@@ -193,37 +183,15 @@ TEST(ImportTest, BadInputsSayWhatToFix) {
   ExpectImportError(tiny, o, "no place where a disc");
   ImportOptions unknown = o;
   unknown.source_resolution = 0.0;
-  ExpectImportError(RoomPlan(dir), unknown, "--resolution");
+  ExpectImportError(WriteRoomPlan(dir.path()), unknown, "--resolution");
   ImportOptions coarse = o;
   coarse.source_resolution = 5.0;
-  ExpectImportError(RoomPlan(dir), coarse, "out of range");
+  ExpectImportError(WriteRoomPlan(dir.path()), coarse, "out of range");
   const auto named = dir.path() / "scene_0.1m.png";
-  std::filesystem::copy_file(RoomPlan(dir), named);
+  std::filesystem::copy_file(WriteRoomPlan(dir.path()), named);
   ImportOptions wrong = o;
   wrong.source_resolution = 0.05;
   ExpectImportError(named, wrong, "file name says 0.1 m");
-}
-
-TEST(ImportTest, CliWritesNothingOnError) {
-  TempDir dir;
-  const auto out = dir.path() / "w.yaml";
-  const auto bad = dir.Write("bad.png", "not an image");
-  EXPECT_EQ(RunFloorplanCli({"import", bad.string(), "--out", out.string()}), 1);
-  EXPECT_FALSE(std::filesystem::exists(out));
-  EXPECT_EQ(RunFloorplanCli({"import", bad.string()}), 2);  // --out missing
-  EXPECT_EQ(RunFloorplanCli({"import", RoomPlan(dir).string(), "--resolution", "0.1",
-                             "--test-pairs", "10", "--train-pairs", "10", "--out", out.string()}),
-            0);
-  EXPECT_EQ(ReadWorldFile(out).test_pairs.size(), 10u);
-  const auto svg = dir.path() / "w.svg";
-  EXPECT_EQ(RunFloorplanCli({"preview", out.string(), "--out", svg.string()}), 0);
-  EXPECT_NE(ReadText(svg).find("<svg"), std::string::npos);
-  // The preview draws the world's own mask; no source image needed.
-  EXPECT_NE(ReadText(svg).find("<image "), std::string::npos);
-  // It writes SVG only: another extension is a usage error, and nothing is written.
-  const auto png = dir.path() / "w.png";
-  EXPECT_EQ(RunFloorplanCli({"preview", out.string(), "--out", png.string()}), 2);
-  EXPECT_FALSE(std::filesystem::exists(png));
 }
 
 // The committed easy/medium/hard worlds are exactly what the importer makes from the source.

@@ -5,13 +5,13 @@
 #include <cstring>
 #include <numeric>
 
-#include "floorplan_error.h"
+#include "floorplan/floorplan_error.h"
+#include "floorplan/image_io.h"
+#include "floorplan/morphology.h"
+#include "floorplan/navigable_component.h"
+#include "floorplan/rect_decomposition.h"
+#include "floorplan/resample.h"
 #include "floorplan_test_util.h"
-#include "image_io.h"
-#include "morphology.h"
-#include "navigable_component.h"
-#include "rect_decomposition.h"
-#include "resample.h"
 #include "temp_dir.h"
 
 namespace crowdsim::floorplan {

@@ -13,9 +13,6 @@ struct SvgOptions {
   bool standalone = true;  ///< XML declaration first (a .svg file); false to inline in HTML
 };
 
-/// `s` with &, <, > and " escaped for XML/HTML text and attribute values.
-std::string XmlEscape(const std::string& s);
-
 /// The drawing as SVG 1.1 text; the same drawing always gives the same bytes.
 std::string ToSvg(const Drawing& drawing, const SvgOptions& options = {});
 

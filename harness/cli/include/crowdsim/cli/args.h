@@ -1,6 +1,8 @@
-// Minimal command-line parsing for the crowdsim-bench subcommands.
+// Command-line parsing shared by the crowdsim-bench subcommands (harness/app/) and the tools
+// they register (tools/): positional arguments, --options, and the usage error main reports.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -29,7 +31,10 @@ struct Args {
   /// Every value of a repeatable option (e.g. --set), in order; empty when absent.
   std::vector<std::string> All(const std::string& name) const;
   /// Integer option within [lo, hi], or `fallback` when absent.
-  int GetInt(const std::string& name, int fallback, int lo, int hi) const;
+  std::int64_t GetInt(const std::string& name, std::int64_t fallback, std::int64_t lo,
+                      std::int64_t hi) const;
+  /// Number option (any decimal notation), or `fallback` when absent.
+  double GetNumber(const std::string& name, double fallback) const;
 };
 
 }  // namespace crowdsim::cli

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "crowdsim/render/base64.h"
+#include "crowdsim/render/xml_escape.h"
 #include "image_io.h"
 
 namespace crowdsim::floorplan {
@@ -11,40 +13,6 @@ namespace {
 
 constexpr double kPixelsPerMetre = 24.0;
 constexpr double kHeader = 44.0;  // px of text above the map
-
-std::string Base64(const std::string& bytes) {
-  static const char* kAlphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
-                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
-                       static_cast<unsigned char>(bytes[i + 2]);
-    for (int k = 3; k >= 0; --k) out += kAlphabet[(v >> (6 * k)) & 63];
-  }
-  if (i < bytes.size()) {
-    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
-    if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
-
-std::string Escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
 
 std::string Num(double x) {
   char buf[32];
@@ -77,7 +45,7 @@ std::string RenderPreviewSvg(const WorldFile& world, const PreviewMask& mask, in
   std::snprintf(line, sizeof(line), "%.1f x %.1f m, free %.1f m2, %zu rectangles covering %.1f%%",
                 b.Size().x(), b.Size().y(), Stat(world, "free_area_m2", 0.0),
                 world.rectangles.size(), Stat(world, "kept_coverage_pct", 0.0));
-  os << "<text x=\"4\" y=\"17\" font-size=\"15\">" << Escape(world.name) << "</text>\n";
+  os << "<text x=\"4\" y=\"17\" font-size=\"15\">" << render::XmlEscape(world.name) << "</text>\n";
   os << "<text x=\"4\" y=\"36\" font-size=\"12\">" << line << "</text>\n";
   // Grey: blocked in the plan; white: navigable (the mask), or everything when it is unknown.
   os << "<rect x=\"0\" y=\"" << Num(kHeader) << "\" width=\"" << Num(width) << "\" height=\""
@@ -90,7 +58,7 @@ std::string RenderPreviewSvg(const WorldFile& world, const PreviewMask& mask, in
        << L(m.width * cs) << "\" height=\"" << L(m.height * cs)
        << "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" "
           "href=\"data:image/png;base64,"
-       << Base64(EncodePng(m, 187)) << "\"/>\n";
+       << render::Base64(EncodePng(m, 187)) << "\"/>\n";
   }
   for (const Rect& r : world.rectangles) {
     os << "<rect x=\"" << X(r.min.x()) << "\" y=\"" << Y(r.max.y()) << "\" width=\""

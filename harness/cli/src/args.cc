@@ -1,4 +1,4 @@
-#include "cli_args.h"
+#include "crowdsim/cli/args.h"
 
 #include <algorithm>
 
@@ -51,18 +51,31 @@ std::vector<std::string> Args::All(const std::string& name) const {
   return it == repeated.end() ? std::vector<std::string>{} : it->second;
 }
 
-int Args::GetInt(const std::string& name, int fallback, int lo, int hi) const {
+std::int64_t Args::GetInt(const std::string& name, std::int64_t fallback, std::int64_t lo,
+                          std::int64_t hi) const {
   auto v = Get(name);
   if (!v) return fallback;
   try {
     size_t used = 0;
-    const long x = std::stol(*v, &used);
+    const long long x = std::stoll(*v, &used);
     if (used != v->size() || x < lo || x > hi) throw std::out_of_range("");
-    return static_cast<int>(x);
+    return x;
   } catch (const std::exception&) {
     throw UsageError(name + " must be a whole number in [" + std::to_string(lo) + ", " +
                      std::to_string(hi) + "], got '" + *v + "'");
   }
+}
+
+double Args::GetNumber(const std::string& name, double fallback) const {
+  auto v = Get(name);
+  if (!v) return fallback;
+  try {
+    size_t used = 0;
+    const double x = std::stod(*v, &used);
+    if (used == v->size()) return x;
+  } catch (const std::exception&) {
+  }
+  throw UsageError(name + " must be a number, got '" + *v + "'");
 }
 
 }  // namespace crowdsim::cli

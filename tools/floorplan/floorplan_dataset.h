@@ -1,5 +1,5 @@
 // The floor-plan dataset: import every source plan, index their statistics, keep a curated
-// set, and pick the easy / medium / hard worlds (README.md, "Dataset" and "Difficulty").
+// set, and pick the easy / medium / hard worlds (README.md, "Curation" and "Difficulty").
 #pragma once
 
 #include <filesystem>
