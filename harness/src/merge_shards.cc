@@ -1,7 +1,5 @@
 // `crowdsim-bench merge`: the shards of one suite run, checked and joined into the output a
 // single run writes (the tables are made by the runner's own resume of the joined episodes).
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <set>
 #include <string>
@@ -10,46 +8,36 @@
 
 #include "crowdsim/results.h"
 #include "crowdsim/runner.h"
+#include "json_file.h"
 
 namespace crowdsim {
 namespace fs = std::filesystem;
 
 namespace {
 
-/// A JSON string of plain text (commits, shard names, folder names).
-std::string Quoted(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 /// Adds to the merged manifest, after its own git_commit (the build that merged), the commit
 /// that made the shards ("mixed" when --allow-mixed-commits joined several) and each shard's
 /// ("COMMIT SHARD", as row_hashes are "HASH LABEL").
 void RecordShardCommits(const fs::path& manifest,
                         const std::vector<std::pair<std::string, std::string>>& shard_commits) {
-  std::string text;
-  {
-    std::ifstream f(manifest);
-    text.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
-  }
-  const auto field = text.find("\n  \"git_commit\": ");
-  const auto end = field == std::string::npos ? field : text.find('\n', field + 1);
-  if (end == std::string::npos) {
-    throw RunError("'" + manifest.string() + "' has no git_commit line: a bug, please report");
+  const nlohmann::ordered_json before = ReadJsonFile(manifest);
+  if (!before.contains("git_commit")) {
+    throw RunError("'" + manifest.string() + "' has no git_commit: a bug, please report");
   }
   bool mixed = false;
-  std::string list;
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const auto& [commit, shard] : shard_commits) {
     mixed = mixed || commit != shard_commits.front().first;
-    list += (list.empty() ? "" : ", ") + Quoted(commit + " " + shard);
+    list.push_back(commit + " " + shard);
   }
-  text.insert(end + 1, "  \"shards_git_commit\": " + Quoted(mixed ? "mixed" : shard_commits.front().first) +
-                           ",\n  \"shard_commits\": [" + list + "],\n");
-  WriteFileAtomically(manifest, text);
+  nlohmann::ordered_json after;
+  for (const auto& [key, value] : before.items()) {
+    after[key] = value;
+    if (key != "git_commit") continue;
+    after["shards_git_commit"] = mixed ? "mixed" : shard_commits.front().first;
+    after["shard_commits"] = list;
+  }
+  WriteFileAtomically(manifest, FormatJson(after));
 }
 
 }  // namespace
@@ -145,7 +133,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   std::string text = EpisodeCsvHeader() + "\n";
   for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
   WriteFileAtomically(out_dir / "episodes.csv", text);
-  WriteFileAtomically(out_dir / "manifest.json", "{\n  \"config_hash\": \"" + hash + "\"\n}\n");
+  WriteFileAtomically(out_dir / "manifest.json", FormatJson(nlohmann::ordered_json{{"config_hash", hash}}));
   RunOptions options;
   options.out_dir = out_dir;
   options.episodes = static_cast<int>(episodes);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "crowdsim/csv.h"
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/results.h"
@@ -118,11 +120,17 @@ TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
   EXPECT_EQ(lines[3][column("row")], "");
   EXPECT_EQ(lines[3][column("label")], "avg");
 
-  const std::string manifest = FormatManifestJson(*loaded.suite, rows, RunFacts{});
-  EXPECT_NE(manifest.find("\"summaries\": [\n    {\"label\": \"avg\",\n     \"rows\": [\"a\", \"b\"]"),
-            std::string::npos) << manifest;
-  EXPECT_NE(manifest.find("\"reference\": {\"success\": 0.7, \"collision\": 0.3, \"nav_time\": 12, "
-                          "\"source\": \"Paper, line 1\"}"), std::string::npos) << manifest;
+  const std::string text = FormatManifestJson(*loaded.suite, rows, RunFacts{});
+  const auto manifest = nlohmann::json::parse(text);
+  ASSERT_EQ(manifest["summaries"].size(), 1u) << text;
+  EXPECT_EQ(manifest["summaries"][0]["label"], "avg") << text;
+  EXPECT_EQ(manifest["summaries"][0]["rows"], nlohmann::json({"a", "b"})) << text;
+  // The published values as the suite gave them: only those given, and their source.
+  EXPECT_EQ(manifest["rows"][0]["reference"],
+            nlohmann::json({{"success", 0.7}, {"collision", 0.3}, {"nav_time", 12.0}, {"source", "Paper, line 1"}}))
+      << text;
+  EXPECT_FALSE(manifest["rows"][1].contains("reference")) << text;
+  EXPECT_NEAR(manifest["summaries"][0]["metrics"]["success_rate"].get<double>(), 0.648, 1e-12) << text;
 }
 
 TEST(ResultFiles, AFullDiskIsNamedAndLeavesNoTemporaryFile) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,13 +66,18 @@ struct RunFacts {
 std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& rows,
                                const RunFacts& facts);
 
-/// Reads a top-level string field (e.g. "config_hash", "git_commit") of a manifest.json
-/// ("" if absent or unreadable).
+// Readers of a JSON file the harness wrote (manifest.json, a training's summary.json). `key` is
+// a top-level key, or a JSON pointer when it starts with '/' ("/procedure/rl_episodes"). An
+// absent, unreadable or malformed file, a missing key or a value of another type reads as absent.
+
+/// A string field, e.g. "config_hash", "git_commit" ("" if absent).
 std::string ReadManifestField(const std::filesystem::path& path, const std::string& key);
-/// Reads a top-level list of strings (e.g. "overrides") of a manifest.json (empty if absent).
+/// A list of strings, e.g. "overrides" (empty if absent; non-strings in it are skipped).
 std::vector<std::string> ReadManifestStrings(const std::filesystem::path& path, const std::string& key);
-/// Reads a top-level whole-number field (e.g. "episodes") of a manifest.json (-1 if absent).
+/// A whole number, e.g. "episodes" (-1 if absent).
 long ReadManifestInteger(const std::filesystem::path& path, const std::string& key);
+/// A true/false field, e.g. a summary's "finished" (nullopt if absent).
+std::optional<bool> ReadManifestBool(const std::filesystem::path& path, const std::string& key);
 
 /// Writes text to `path` atomically (temporary file, then rename).
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);

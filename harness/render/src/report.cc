@@ -58,22 +58,22 @@ std::vector<Pick> PickEpisodes(const std::vector<EpisodeLine>& lines, const std:
   return picks;
 }
 
-fs::path FindSuiteFile(const fs::path& dir, const std::string& manifest,
+fs::path FindSuiteFile(const fs::path& dir, const fs::path& manifest,
                        const ReportOptions& options) {
   if (!options.suite_file.empty()) {
     if (!fs::exists(options.suite_file))
       throw ReportError("suite file '" + options.suite_file.string() + "' does not exist");
     return options.suite_file;
   }
-  const auto recorded = JsonStringField(manifest, "suite_file");
-  if (!recorded || recorded->empty()) {
+  const std::string recorded = ReadManifestField(manifest, "suite_file");
+  if (recorded.empty()) {
     throw ReportError((dir / "manifest.json").string() +
                       " names no suite_file: pass the suite with --suite FILE");
   }
-  const fs::path p(*recorded);
+  const fs::path p(recorded);
   if (fs::exists(p)) return p;
   throw ReportError(
-      "the suite file '" + *recorded + "' named in " + (dir / "manifest.json").string() +
+      "the suite file '" + recorded + "' named in " + (dir / "manifest.json").string() +
       " was not found from " + fs::current_path().string() +
       " (run the report from the folder the suite was run from, or pass --suite FILE)");
 }
@@ -109,9 +109,9 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
                         "table.csv, episodes.csv)");
     }
   }
-  const std::string manifest = ReadTextFile(dir / "manifest.json");
+  const fs::path manifest = dir / "manifest.json";
   const fs::path suite_file = FindSuiteFile(dir, manifest, options);
-  SuiteLoadResult loaded = LoadSuite(suite_file, registry, ReadManifestStrings(dir / "manifest.json", "overrides"));
+  SuiteLoadResult loaded = LoadSuite(suite_file, registry, ReadManifestStrings(manifest, "overrides"));
   if (!loaded.suite) {
     std::string msg = "cannot load the suite " + suite_file.string() + ":";
     for (const SuiteError& e : loaded.errors) msg += "\n  " + e.Format();
@@ -139,7 +139,7 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
     throw ReportError(e.what());
   }
   episodes = std::move(read.lines);
-  const std::string recorded_hash = JsonStringField(manifest, "config_hash").value_or("");
+  const std::string recorded_hash = ReadManifestField(manifest, "config_hash");
 
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
@@ -152,7 +152,8 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
        << " · suite file: " << XmlEscape(suite_file.string()) << " · " << episodes.size()
        << " episodes recorded";
   for (const char* key : {"git_commit", "finished_utc", "config_hash"}) {
-    if (auto v = JsonStringField(manifest, key)) html << " · " << key << " " << XmlEscape(*v);
+    const std::string v = ReadManifestField(manifest, key);
+    if (!v.empty()) html << " · " << key << " " << XmlEscape(v);
   }
   html << "</p>\n";
   if (read.damaged > 0) {

@@ -11,6 +11,7 @@
 #include "crowdsim/render/results_folder.h"
 #include "crowdsim/render/svg_writer.h"
 #include "crowdsim/render/xml_escape.h"
+#include "crowdsim/results.h"
 
 namespace crowdsim::render {
 namespace fs = std::filesystem;
@@ -63,7 +64,8 @@ std::string BuildTrainingReport(const fs::path& dir) {
                       "or training_log.csv): give the --out of `crowdsim-bench train`");
   }
   const std::string summary = ReadTextFileIfExists(dir / "summary.json");
-  const std::string name = JsonStringField(summary, "name").value_or(dir.filename().string());
+  std::string name = ReadManifestField(dir / "summary.json", "name");
+  if (name.empty()) name = dir.filename().string();
   const std::string episodes = ReadTextFileIfExists(dir / "training_episodes.csv");
   const std::string validation = ReadTextFileIfExists(dir / "training_log.csv");
   std::ostringstream html;

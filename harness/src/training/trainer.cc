@@ -18,6 +18,7 @@
 #include "crowdsim/trainable.h"
 #include "crowdsim/version.h"
 #include "episode_log.h"
+#include "json_file.h"
 #include "replay_memory.h"
 #include "training_checkpoint.h"
 #include "training_progress.h"
@@ -464,7 +465,7 @@ void Trainer::AcceptNewRlLength(const fs::path& dir) {
   // The RL length the checkpoint ran toward: recorded in it (v4), else in the folder's
   // summary.json (written when the run stopped).
   int before = state_.rl_episodes;
-  if (before < 0) before = static_cast<int>(ReadManifestInteger(Out("summary.json"), "rl_episodes"));
+  if (before < 0) before = static_cast<int>(ReadManifestInteger(Out("summary.json"), "/procedure/rl_episodes"));
   if (before < 0 || spec_.ConfigHashWithRlEpisodes(before) != state_.config_hash) {
     throw TrainError("--resume: the checkpoint in '" + dir.string() + "' belongs to another "
                      "configuration (config hash " + state_.config_hash + ", the training file now " +
@@ -527,31 +528,38 @@ void Trainer::WriteLearningCurve() {
 void Trainer::WriteSummaryJson() const {
   const TrainTimes& t = summary_.times;
   const TrainingSettings& p = t_;
-  std::ostringstream os;
-  os.precision(6);
-  os << "{\n  \"name\": \"" << spec_.name << "\",\n  \"config_hash\": \"" << spec_.ConfigHash()
-     << "\",\n  \"seed\": " << spec_.seed
-     << ",\n  \"procedure\": {\"il_episodes\": " << p.il_episodes << ", \"il_epochs\": " << p.il_epochs
-     << ", \"rl_episodes\": " << p.rl_episodes << ", \"epsilon_start\": " << p.epsilon_start
-     << ", \"epsilon_end\": " << p.epsilon_end << ", \"epsilon_decay_episodes\": " << p.epsilon_decay_episodes
-     << ", \"store_timeouts\": \"" << ToString(p.store_timeouts) << "\", \"exploration\": \"" << ToString(p.exploration)
-     << "\", \"train_batches\": "
-     << p.train_batches << ", \"validation_interval\": " << p.validation_interval
-     << ", \"validation_episodes\": " << p.validation_episodes << "}"
-     << ",\n  \"cpu\": \"" << CpuModel() << "\",\n  \"commit\": \"" << GitCommit() << "\""
-     << ",\n  \"finished\": " << (summary_.finished ? "true" : "false")
-     << ",\n  \"phase\": " << static_cast<int>(state_.phase) << ",\n  \"counter\": " << state_.counter
-     << ",\n  \"memory_size\": " << memory_.size()
-     << ",\n  \"episodes_this_run\": " << summary_.episodes_run
-     << ",\n  \"wall_seconds_this_run\": " << summary_.wall_seconds
-     << ",\n  \"seconds\": {\"demonstrations\": " << t.demonstrations << ", \"imitation\": " << t.imitation
-     << ", \"rl_episodes\": " << t.rl_episodes << ", \"rl_targets\": " << t.rl_targets
-     << ", \"rl_updates\": " << t.rl_updates << ", \"validation\": " << t.validation
-     << ", \"checkpoints\": " << t.checkpoints << "},\n  \"best_validation_success\": "
-     << std::max(0.0, state_.best_success) << ",\n  \"best_validation_episode\": " << state_.best_episode
-     << ",\n  \"best_weights\": \"best.pt: the weights after " << state_.best_episode
-     << " RL episodes (-1: no validation ran)\"\n}\n";
-  WriteFileAtomically(Out("summary.json"), os.str());
+  nlohmann::ordered_json j;
+  j["name"] = spec_.name;
+  j["config_hash"] = spec_.ConfigHash();
+  j["seed"] = spec_.seed;
+  j["procedure"] = {{"il_episodes", p.il_episodes},
+                    {"il_epochs", p.il_epochs},
+                    {"rl_episodes", p.rl_episodes},
+                    {"epsilon_start", p.epsilon_start},
+                    {"epsilon_end", p.epsilon_end},
+                    {"epsilon_decay_episodes", p.epsilon_decay_episodes},
+                    {"store_timeouts", ToString(p.store_timeouts)},
+                    {"exploration", ToString(p.exploration)},
+                    {"train_batches", p.train_batches},
+                    {"validation_interval", p.validation_interval},
+                    {"validation_episodes", p.validation_episodes}};
+  j["cpu"] = CpuModel();
+  j["commit"] = GitCommit();
+  j["finished"] = summary_.finished;
+  j["phase"] = static_cast<int>(state_.phase);
+  j["counter"] = state_.counter;
+  j["memory_size"] = memory_.size();
+  j["episodes_this_run"] = summary_.episodes_run;
+  j["wall_seconds_this_run"] = summary_.wall_seconds;
+  j["seconds"] = {{"demonstrations", t.demonstrations}, {"imitation", t.imitation},
+                  {"rl_episodes", t.rl_episodes},       {"rl_targets", t.rl_targets},
+                  {"rl_updates", t.rl_updates},         {"validation", t.validation},
+                  {"checkpoints", t.checkpoints}};
+  j["best_validation_success"] = std::max(0.0, state_.best_success);
+  j["best_validation_episode"] = state_.best_episode;
+  j["best_weights"] = "best.pt: the weights after " + std::to_string(state_.best_episode) +
+                      " RL episodes (-1: no validation ran)";
+  WriteFileAtomically(Out("summary.json"), FormatJson(j));
 }
 
 TrainSummary Trainer::Run() {
@@ -608,9 +616,7 @@ TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry, const 
 bool IsFinishedTraining(const fs::path& out_dir, const TrainSpec& spec) {
   const fs::path summary = out_dir / "summary.json";
   if (!fs::is_regular_file(summary) || !fs::is_regular_file(out_dir / "weights.pt")) return false;
-  std::ifstream f(summary);
-  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  return text.find("\"finished\": true") != std::string::npos &&
+  return ReadManifestBool(summary, "finished") == true &&
          ReadManifestField(summary, "config_hash") == spec.ConfigHash();
 }
 

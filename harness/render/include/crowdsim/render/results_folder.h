@@ -1,15 +1,12 @@
-// Reading a `crowdsim-bench run` output folder for the report: manifest fields and table.csv.
+// Reading a `crowdsim-bench run` output folder for the report: table.csv and text files (the
+// manifest's fields through crowdsim/results.h).
 #pragma once
 
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace crowdsim::render {
-
-/// The string value of a top-level key of a JSON object text (manifest.json), or nullopt.
-std::optional<std::string> JsonStringField(const std::string& json, const std::string& key);
 
 /// A CSV file: its header and rows of fields (quoted fields unquoted).
 struct CsvTable {
