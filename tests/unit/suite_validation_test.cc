@@ -248,6 +248,18 @@ TEST_F(SuiteValidation, RobotMapWithoutSensorsIsAnErrorNotACrash) {
   EXPECT_TRUE(empty.suite) << All(empty);
 }
 
+// Suites and training files share the row reader; a count range is a training file's (drawn
+// per episode), and a suite row that gives one is told what to write instead.
+TEST_F(SuiteValidation, AHumanCountRangeIsForTrainingFiles) {
+  auto r = Load("name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+                "rows:\n  - {label: a, policy: linear, humans: {count: [2, 4]}}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "suite.yaml:5:48: rows[0].humans.count: a range of counts is for training files "
+                    "(drawn per episode); a suite row runs one count: give one number, or "
+                    "`sweep: {humans.count: [...]}` for a row per count"), "") << All(r);
+  EXPECT_EQ(r.errors.size(), 1u) << All(r);
+}
+
 TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
   auto dotdot = Load("name: ..\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
                      "rows:\n  - {label: \"a\\nb\", policy: linear}\n  - {label: \"a\\tb\", policy: linear}\n");

@@ -2,71 +2,40 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <limits>
 #include <sstream>
 
+#include "../config_text.h"
+#include "../row_reader.h"
+#include "../spec_head_reader.h"
 #include "../suite_reader.h"
 #include "../yaml_edit.h"
 #include "../yaml_file.h"
-#include "crowdsim/rng.h"
 
 namespace crowdsim::training {
 namespace fs = std::filesystem;
 using suite_internal::Present;
 using suite_internal::Reader;
 
-std::string TrainSpec::ConfigHash() const {
-  Suite s;
-  s.canonical = canonical;
-  return s.ConfigHash();
-}
+std::string TrainSpec::ConfigHash() const { return suite_internal::HashConfigText(canonical); }
 
 namespace {
 
-const std::vector<std::string> kTopKeys = {"name", "description", "seed", "sim", "policy", "params",
-                                           "weights", "sensors", "world", "humans", "training"};
+/// A training file's top level is one row spec: its sensors and world must be given, and its
+/// humans may be a range drawn per episode.
+const suite_internal::RowRules kTrainingRowRules{
+    "the policy to train: cadrl or sarl",
+    "missing key 'world' (e.g. {source: random_rect, obstacles: 1, split: train})",
+    /*sensors_required=*/true, /*humans_range=*/true};
 
 /// The world trains on its train split: `split` defaults to train, test is refused.
-void ReadTrainWorld(Reader& r, const YAML::Node& n, const fs::path& base, PluginUse* out) {
-  suite_internal::ReadWorld(r, n, "world", base, out);
-  if (!out->loaded || !out->params.Has("split")) return;
+void UseTrainSplit(Reader& r, const YAML::Node& n, PluginUse* world) {
+  if (!world->loaded || !world->params.Has("split")) return;
   if (!Present(n["split"])) {
-    out->params.Set("split", std::string("train"));
-  } else if (out->params.GetString("split") != "train") {
+    world->params.Set("split", std::string("train"));
+  } else if (world->params.GetString("split") != "train") {
     r.Error(n["split"], "world.split",
             "training uses the world's train split (the test split is for suites); set split: train");
-  }
-}
-
-void ReadHumans(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpec* s) {
-  const bool map = Present(n) && r.IsMap(n, "humans", "count, policy, params");
-  if (map) {
-    r.CheckKeys(n, "humans", {"count", "policy", "params"});
-    if (const YAML::Node c = n["count"]; Present(c)) {
-      if (c.IsSequence()) {
-        if (c.size() != 2) {
-          r.Error(c, "humans.count", "a range is a list of two counts [min, max]");
-        } else {
-          auto lo = r.Integer(c[0], "humans.count[0]", 0, 1000);
-          auto hi = r.Integer(c[1], "humans.count[1]", 0, 1000);
-          if (lo && hi && *lo > *hi) r.Error(c, "humans.count", "min is larger than max");
-          if (lo && hi) {
-            s->humans_min = static_cast<int>(*lo);
-            s->humans_max = static_cast<int>(*hi);
-          }
-        }
-      } else if (auto k = r.Integer(c, "humans.count", 0, 1000)) {
-        s->humans_min = s->humans_max = static_cast<int>(*k);
-      }
-    }
-  }
-  const bool given = map && Present(n["policy"]);
-  const YAML::Node policy = given ? n["policy"] : YAML::Node("orca");
-  const YAML::Node params = map ? n["params"] : YAML::Node(YAML::NodeType::Undefined);
-  if (Present(params) && !r.IsMap(params, "humans.params", "policy parameters")) return;
-  s->human_policy.plugin = policy.Scalar();
-  s->human_policy.loaded = r.Plugin(policy, given ? "humans.policy" : "humans.policy (default)", PluginKind::kPolicy);
-  if (s->human_policy.loaded) {
-    s->human_policy.params = r.ParamsFor(*s->human_policy.loaded, params, {}, "humans.params", base);
   }
 }
 
@@ -163,17 +132,20 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
 }
 
 std::string Canonical(const TrainSpec& s) {
+  const RowSpec& row = s.row;
   std::ostringstream os;
   os << "seed=" << s.seed << "\n";
   suite_internal::CanonicalSim(s.sim, os);
   os << "policy:";
-  suite_internal::Canonical(s.policy, os);
+  suite_internal::Canonical(row.policy, os);
   os << "\nsensors:";
-  for (const auto& sen : s.sensors) suite_internal::Canonical(sen, os);
+  for (const auto& sen : row.sensors) suite_internal::Canonical(sen, os);
   os << "\nworld:";
-  suite_internal::Canonical(s.world, os);
-  os << "\nhumans:" << s.humans_min << "-" << s.humans_max << ",";
-  suite_internal::Canonical(s.human_policy, os);
+  suite_internal::Canonical(row.world, os);
+  os << "\nhumans:" << row.humans.count << "-" << row.humans.count_max << ",";
+  // Written only when not the default, so that the hashes of earlier trainings stay valid.
+  if (row.humans.goal_mode != HumanGoalMode::kStay) os << "goal_mode=new_goal,";
+  suite_internal::Canonical(row.humans.policy, os);
   os << "\nteacher:";
   suite_internal::Canonical(s.teacher, os);
   const TrainingSettings& t = s.training;
@@ -249,42 +221,18 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
   TrainSpec s;
   s.file = file;
   const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  r.CheckKeys(root, "", kTopKeys);
-  s.name = r.Name(root, "results/train/<name>/");
-  if (Present(root["description"])) s.description = root["description"].Scalar();
-  if (Present(root["seed"])) {
-    if (auto v = r.Integer(root["seed"], "seed", 0, std::numeric_limits<std::int64_t>::max())) s.seed = static_cast<std::uint64_t>(*v);
-  }
-  if (Present(root["sim"])) suite_internal::ReadSim(r, root["sim"], &s.sim);
-  if (!Present(root["policy"])) {
-    r.Error(root, "policy", "missing key 'policy' (the policy to train: cadrl or sarl)");
-  } else {
-    s.policy.plugin = root["policy"].Scalar();
-    s.policy.loaded = r.Plugin(root["policy"], "policy", PluginKind::kPolicy);
-  }
-  if (Present(root["params"]) && !r.IsMap(root["params"], "params", "policy parameters")) {
-    // reported
-  } else if (s.policy.loaded) {
-    s.policy.params = r.ParamsFor(*s.policy.loaded, root["params"], {}, "params", base);
-    if (Present(root["weights"])) {
-      if (!s.policy.params.Has("weights")) {
-        r.Error(root["weights"], "weights", "policy '" + s.policy.plugin + "' takes no weights");
-      } else if (auto w = r.String(root["weights"], "weights")) {
-        s.policy.params.Set("weights", *w);
-      }
-    }
-  }
-  if (!Present(root["sensors"])) {
-    r.Error(root, "sensors", "missing key 'sensors' (e.g. [person, {type: lidar2d, beams: 45}])");
-  } else {
-    suite_internal::ReadSensors(r, root["sensors"], "sensors", base, &s.sensors);
-  }
-  if (!Present(root["world"])) {
-    r.Error(root, "world", "missing key 'world' (e.g. {source: random_rect, obstacles: 1, split: train})");
-  } else {
-    ReadTrainWorld(r, root["world"], base, &s.world);
-  }
-  ReadHumans(r, root["humans"], base, &s);
+  std::vector<std::string> keys = suite_internal::kSpecHeadKeys;
+  keys.insert(keys.end(), suite_internal::kRowSpecKeys.begin(), suite_internal::kRowSpecKeys.end());
+  keys.push_back("training");
+  r.CheckKeys(root, "", keys);
+  suite_internal::SpecHead head = suite_internal::ReadSpecHead(r, root, "results/train/<name>/");
+  s.name = std::move(head.name);
+  s.description = std::move(head.description);
+  s.seed = head.seed;
+  s.sim = head.sim;
+  suite_internal::ReadRowSpec(r, root, "", suite_internal::RowDefaults{}, kTrainingRowRules, base, &s.row);
+  s.row.label = s.name;
+  UseTrainSplit(r, root["world"], &s.row.world);
   ReadTraining(r, root["training"], base, &s);
   if (!r.errors.empty()) {
     suite_internal::LocateOverrideErrors(overrides, &r.errors);
