@@ -38,8 +38,8 @@ void ReadHumanCount(Reader& r, const YAML::Node& n, const std::string& path, boo
 }
 
 void ReadHumans(Reader& r, const YAML::Node& file_level, const YAML::Node& row_level,
-                const std::string& path, const RowRules& rules, const fs::path& base,
-                HumansSpec* out) {
+                const std::string& path, const RowRules& rules, const SchemaDefaults& schema,
+                const fs::path& base, HumansSpec* out) {
   // Row keys override the file's keys one by one.
   auto pick = [&](const char* key) -> std::pair<YAML::Node, std::string> {
     if (Present(row_level) && row_level.IsMap() && Present(row_level[key])) return {row_level[key], Reader::Child(path, key)};
@@ -58,10 +58,12 @@ void ReadHumans(Reader& r, const YAML::Node& file_level, const YAML::Node& row_l
     }
   }
   auto [pn, pp] = pick("policy");
-  YAML::Node default_policy(out->count_max > 0 ? "orca" : "linear");
-  const YAML::Node policy_node = Present(pn) ? pn : default_policy;
+  const YAML::Node policy_node =
+      Present(pn) ? pn : YAML::Node(out->count_max > 0 ? schema.humans_policy : schema.humans_policy_without);
+  const std::string policy_path =
+      Present(pn) ? pp : "humans.policy (default, " + schema.file.string() + ")";
   out->policy.plugin = policy_node.Scalar();
-  out->policy.loaded = r.Plugin(policy_node, Present(pn) ? pp : std::string("humans.policy (default)"), PluginKind::kPolicy);
+  out->policy.loaded = r.Plugin(policy_node, policy_path, PluginKind::kPolicy);
   auto [params, params_path] = pick("params");
   if (Present(params) && !r.IsMap(params, params_path, "policy parameters")) return;
   if (out->policy.loaded) out->policy.params = r.ParamsFor(*out->policy.loaded, params, {}, params_path, base);
@@ -110,7 +112,8 @@ void ReadRowSpec(Reader& r, const YAML::Node& n, const std::string& path, const 
   } else {
     r.Error(n, Reader::Child(path, "world"), rules.missing_world);
   }
-  ReadHumans(r, d.humans, n["humans"], Reader::Child(path, "humans"), rules, base, &row->humans);
+  ReadHumans(r, d.humans, n["humans"], Reader::Child(path, "humans"), rules, d.schema, base,
+             &row->humans);
 }
 
 void ReadWorld(Reader& r, const YAML::Node& n, const std::string& path, const fs::path& base,

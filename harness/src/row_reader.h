@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "crowdsim/suite.h"
+#include "schema_defaults.h"
 #include "suite_reader.h"
 
 namespace crowdsim::suite_internal {
@@ -22,10 +23,11 @@ inline const std::vector<std::string> kRowSpecKeys = {"policy", "params", "weigh
 /// The keys of a `humans:` map.
 inline const std::vector<std::string> kHumansKeys = {"count", "policy", "params", "goal_mode"};
 
-/// The file-level sections a row uses for what it does not give itself: a suite's top-level
-/// `world`, `humans` (key by key) and `robot.sensors`. A training file has none (its top level
-/// is the row).
+/// What a row uses for what it does not give itself: a suite's top-level `world`, `humans` (key
+/// by key) and `robot.sensors` (a training file has none: its top level is the row), then the
+/// schema defaults (the humans' policy).
 struct RowDefaults {
+  const SchemaDefaults& schema;
   YAML::Node world{YAML::NodeType::Undefined};
   YAML::Node humans{YAML::NodeType::Undefined};
   YAML::Node sensors{YAML::NodeType::Undefined};

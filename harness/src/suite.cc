@@ -185,6 +185,8 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
 SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
                           const std::vector<std::string>& overrides) {
   SuiteLoadResult result;
+  const std::optional<SchemaDefaults> schema = LoadSchemaDefaults(&result.errors);
+  if (!schema) return result;
   Reader r(file.string(), registry);
   YAML::Node root = LoadYamlFile(file, "suite file", &result.errors);
   if (!result.errors.empty()) return result;
@@ -215,7 +217,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     if (auto e = r.Integer(root["episodes"], "episodes", 1, 10'000'000)) s.episodes = static_cast<int>(*e);
   }
   ReadIsolation(r, root, &s);
-  RowDefaults d;
+  RowDefaults d{*schema};
   d.world = root["world"];
   d.humans = root["humans"];
   if (Present(d.humans)) {

@@ -2,11 +2,13 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <limits>
 #include <sstream>
 
 #include "../config_text.h"
 #include "../row_reader.h"
+#include "../schema_defaults.h"
 #include "../spec_head_reader.h"
 #include "../suite_reader.h"
 #include "../yaml_edit.h"
@@ -58,7 +60,27 @@ void ReadChoice(Reader& r, const YAML::Node& training, const std::string& key,
   r.Error(node, "training." + key, "expected " + expected + ", got " + suite_internal::Scalar(node));
 }
 
-void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpec* s) {
+/// The teacher's parameters that the schema defaults give unless `il_params` does, where the
+/// teacher's plugin has them (CrowdNav: more clearance from an invisible robot).
+void DefaultTeacherParams(Reader& r, const YAML::Node& given,
+                          const suite_internal::SchemaDefaults& schema, TrainSpec* s) {
+  const YAML::Node& defaults =
+      s->sim.robot_visible ? schema.il_params_robot_visible : schema.il_params_robot_invisible;
+  const auto& specs = s->teacher.loaded->schema;
+  for (const auto& kv : defaults) {
+    const std::string key = kv.first.Scalar();
+    if (Present(given) && given.IsMap() && Present(given[key])) continue;
+    const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& p) { return p.name == key; });
+    if (spec == specs.end()) continue;
+    // A node without the defaults file's marks: an error names the key and that file.
+    const YAML::Node value = kv.second.IsScalar() ? YAML::Node(kv.second.Scalar()) : YAML::Node(kv.second);
+    const std::string path = "training.il_params." + key + " (default, " + schema.file.string() + ")";
+    if (auto v = r.Value(*spec, value, path)) s->teacher.params.Set(key, *v);
+  }
+}
+
+void ReadTraining(Reader& r, const YAML::Node& n, const suite_internal::SchemaDefaults& schema,
+                  const fs::path& base, TrainSpec* s) {
   TrainingSettings& t = s->training;
   struct IntField {
     const char* key;
@@ -116,19 +138,16 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
                &t.exploration);
   }
   const bool named = map && Present(n["il_policy"]);
-  const YAML::Node teacher = named ? n["il_policy"] : YAML::Node("orca");
-  const std::string teacher_path = named ? "training.il_policy" : "training.il_policy (default)";
+  const YAML::Node teacher = named ? n["il_policy"] : YAML::Node(schema.il_policy);
+  const std::string teacher_path =
+      named ? "training.il_policy" : "training.il_policy (default, " + schema.file.string() + ")";
   const YAML::Node teacher_params = map ? n["il_params"] : YAML::Node(YAML::NodeType::Undefined);
   if (Present(teacher_params) && !r.IsMap(teacher_params, "training.il_params", "policy parameters")) return;
   s->teacher.plugin = teacher.Scalar();
   s->teacher.loaded = r.Plugin(teacher, teacher_path, PluginKind::kPolicy);
   if (!s->teacher.loaded) return;
   s->teacher.params = r.ParamsFor(*s->teacher.loaded, teacher_params, {}, "training.il_params", base);
-  // CrowdNav: an invisible robot's teacher keeps 0.15 m more clearance, since nobody yields.
-  const bool given = Present(teacher_params) && teacher_params.IsMap() && Present(teacher_params["safety_space"]);
-  if (!given && s->teacher.params.Has("safety_space")) {
-    s->teacher.params.Set("safety_space", s->sim.robot_visible ? 0.0 : 0.15);
-  }
+  DefaultTeacherParams(r, teacher_params, schema, s);
 }
 
 std::string Canonical(const TrainSpec& s) {
@@ -217,6 +236,9 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
     result.errors.push_back({file.string(), 0, 0, "", "a training file is a YAML map with name, policy, sensors, world, humans and training"});
     return result;
   }
+  const std::optional<suite_internal::SchemaDefaults> schema =
+      suite_internal::LoadSchemaDefaults(&result.errors);
+  if (!schema) return result;
   Reader r(file.string(), registry);
   TrainSpec s;
   s.file = file;
@@ -230,10 +252,10 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
   s.description = std::move(head.description);
   s.seed = head.seed;
   s.sim = head.sim;
-  suite_internal::ReadRowSpec(r, root, "", suite_internal::RowDefaults{}, kTrainingRowRules, base, &s.row);
+  suite_internal::ReadRowSpec(r, root, "", suite_internal::RowDefaults{*schema}, kTrainingRowRules, base, &s.row);
   s.row.label = s.name;
   UseTrainSplit(r, root["world"], &s.row.world);
-  ReadTraining(r, root["training"], base, &s);
+  ReadTraining(r, root["training"], *schema, base, &s);
   if (!r.errors.empty()) {
     suite_internal::LocateOverrideErrors(overrides, &r.errors);
     result.errors = std::move(r.errors);
