@@ -36,7 +36,8 @@ class YieldingStraight final : public crowdsim::Policy {
     return needs;
   }
 
-  // No state between steps, so nothing to reset: Reset's default does nothing.
+  // No state between steps; Reset keeps the episode's constants (here the time step).
+  void Reset(const crowdsim::EpisodeContext& ctx) override { time_step_ = ctx.sim.time_step; }
 
   Action Decide(const Observation& obs) override {
     const Vec2 to_goal = obs.self.goal - obs.self.position;
@@ -53,13 +54,14 @@ class YieldingStraight final : public crowdsim::Policy {
     }
     const double factor = std::max(min_speed_factor_, nearest_ahead / std::max(slow_distance_, 1e-9));
     double speed = factor * obs.self.v_pref;
-    if (obs.time_step > 0.0) speed = std::min(speed, dist / obs.time_step);  // stop on the goal
+    if (time_step_ > 0.0) speed = std::min(speed, dist / time_step_);  // stop on the goal
     return Action{to_goal / dist * speed};
   }
 
  private:
   double slow_distance_;
   double min_speed_factor_;
+  double time_step_ = crowdsim::SimConfig{}.time_step;
 };
 
 extern "C++" const crowdsim::PluginDescriptor kDescriptor = crowdsim::PolicyPlugin<YieldingStraight>(

@@ -192,7 +192,7 @@ int ValidateCommand(const std::vector<std::string>& args) {
                   << " in " << file << "\n";
         status = 2;
       } else {
-        std::cout << file << ": ok (training file: " << loaded.spec->policy.plugin << ")\n";
+        std::cout << file << ": ok (training file: " << loaded.spec->row.policy.plugin << ")\n";
       }
       continue;
     }

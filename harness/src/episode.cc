@@ -151,9 +151,13 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
   for (size_t i = 0; i < humans_.size(); ++i) human_needs_.push_back(agents_.humans[i]->Needs());
 
   try {
-    EpisodeContext ctx{scenario_.map.get(), sim_, AgentRole::kRobot, SplitMix64(scenario_.seed), 0};
+    // The map reaches only the policies that declare they need it.
+    const StaticMap* map = scenario_.map.get();
+    EpisodeContext ctx{robot_needs_.map ? map : nullptr, sim_, AgentRole::kRobot,
+                       SplitMix64(scenario_.seed), 0};
     agents_.robot->Reset(ctx);
     for (size_t i = 0; i < humans_.size(); ++i) {
+      ctx.map = human_needs_[i].map ? map : nullptr;
       ctx.role = AgentRole::kHuman;
       ctx.agent_id = static_cast<int>(i) + 1;
       ctx.seed = SplitMix64(scenario_.seed + i + 1);
@@ -188,7 +192,6 @@ void Episode::DecideHumans() {
   if (sim_.robot_visible) human_view_.push_back(robot_);
   human_index_.Rebuild(human_view_);
   human_obs_.time = time_;
-  human_obs_.time_step = sim_.time_step;
   human_obs_.agents = &human_index_;
   for (size_t i = 0; i < humans_.size(); ++i) {
     // Next goal of a goal sequence once this one is reached.
@@ -201,7 +204,6 @@ void Episode::DecideHumans() {
     human_obs_.self = h;
     human_obs_.frame = Frame::Make(h.position, HeadingToGoal(h));
     human_obs_.self_index = static_cast<int>(i);
-    human_obs_.map = human_needs_[i].map ? scenario_.map.get() : nullptr;
     human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
     if (!human_actions_[i].velocity.allFinite()) {
       throw std::runtime_error("human " + std::to_string(i) + "'s policy returned a non-finite velocity");
@@ -213,11 +215,9 @@ void Episode::DecideHumans() {
 void Episode::FillRobotObservation() {
   robot_.heading = HeadingToGoal(robot_);
   robot_obs_.time = time_;
-  robot_obs_.time_step = sim_.time_step;
   robot_obs_.self = robot_;
   robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
   Sense(robot_, robot_obs_.frame, humans_, &robot_obs_.readings);
-  robot_obs_.map = robot_needs_.map ? scenario_.map.get() : nullptr;
   robot_obs_.lookahead = nullptr;
 }
 

@@ -1,5 +1,6 @@
 #include "crowdsim/row_instance.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "crowdsim/rng.h"
@@ -13,6 +14,16 @@ RowInstance::RowInstance(const RowSpec& row, PluginRegistry& registry) : row_(ro
     sensors_.push_back(registry_.MakeSensor(*s.loaded, s.params));
     agents_.sensors.push_back({s.loaded->descriptor->name, sensors_.back().get()});
   }
+}
+
+std::string RowInstance::UnmetSensorNeed() const {
+  for (const auto& needed : robot_->Needs().sensors) {
+    const bool have = std::any_of(row_.sensors.begin(), row_.sensors.end(), [&](const PluginUse& s) {
+      return s.loaded->descriptor->name == needed;
+    });
+    if (!have) return "policy '" + row_.policy.plugin + "' needs the sensor '" + needed + "'";
+  }
+  return "";
 }
 
 const EpisodeAgents& RowInstance::Agents(size_t humans) {

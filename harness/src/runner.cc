@@ -35,15 +35,8 @@ std::shared_ptr<WorldSource> PreflightRow(const Suite& suite, size_t r, PluginRe
     auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
     RowInstance probe(row, registry);
     probe.Agents(1);
-    const PolicyNeeds needs = probe.robot().Needs();
-    for (const auto& needed : needs.sensors) {
-      const bool have = std::any_of(row.sensors.begin(), row.sensors.end(), [&](const PluginUse& s) {
-        return s.loaded->descriptor->name == needed;
-      });
-      if (!have) {
-        throw RunError(where + ": policy '" + row.policy.plugin + "' needs the sensor '" + needed +
-                       "'; add it to the row's sensors list");
-      }
+    if (const std::string unmet = probe.UnmetSensorNeed(); !unmet.empty()) {
+      throw RunError(where + ": " + unmet + "; add it to the row's sensors list");
     }
     try {
       CheckScenario(world->Make(MakeEpisodeRequest(suite, row, *world, 0)), suite.sim);

@@ -2,15 +2,14 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <functional>
+#include <algorithm>
+#include <limits>
 #include <set>
 #include <sstream>
-#include <variant>
 
-#include "crowdsim/rng.h"
+#include "config_text.h"
+#include "row_reader.h"
+#include "spec_head_reader.h"
 #include "suite_reader.h"
 #include "yaml_edit.h"
 #include "yaml_file.h"
@@ -28,28 +27,13 @@ std::string SuiteError::Format() const {
   return os.str();
 }
 
-namespace {
+std::string Suite::ConfigHash() const { return suite_internal::HashConfigText(canonical); }
 
-std::string HashText(const std::string& text) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 0x100000001b3ULL;
-  }
-  char buf[17];
-  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(SplitMix64(h)));
-  return buf;
-}
-
-}  // namespace
-
-std::string Suite::ConfigHash() const { return HashText(canonical); }
-
-std::string RowSpec::ConfigHash() const { return HashText(canonical); }
-
-namespace suite_internal {
+std::string RowSpec::ConfigHash() const { return suite_internal::HashConfigText(canonical); }
 
 namespace {
+
+using namespace suite_internal;
 
 /// The top-level `isolation` (auto, on, off) and `episode_timeout_s`; a timeout needs
 /// isolation (only a worker process can be stopped mid-episode).
@@ -76,124 +60,13 @@ void ReadIsolation(Reader& r, const YAML::Node& root, Suite* s) {
 
 }  // namespace
 
-void ReadSim(Reader& r, const YAML::Node& n, SimConfig* sim) {
-  if (!r.IsMap(n, "sim", "simulation settings")) return;
-  std::vector<std::string> keys;
-  for (const SimField& f : kSimFields) keys.push_back(f.key);
-  r.CheckKeys(n, "sim", keys);
-  for (const SimField& f : kSimFields) {
-    if (!n[f.key]) continue;
-    const std::string path = Reader::Child("sim", f.key);
-    if (const auto* number = std::get_if<double SimConfig::*>(&f.member)) {
-      if (auto v = r.Number(n[f.key], path, f.lo, f.hi, f.lo_open)) sim->**number = *v;
-    } else if (auto b = r.Bool(n[f.key], path)) {
-      sim->*std::get<bool SimConfig::*>(f.member) = *b;
-    }
-  }
-  // A step count beyond any real episode is a typo (time_step: 1e-300 ran forever).
-  constexpr double kMaxSteps = 1e6;
-  if (sim->time_limit / sim->time_step > kMaxSteps) {
-    r.Error(n["time_step"] ? n["time_step"] : n, "sim.time_step",
-            "time_limit / time_step = " + std::to_string(sim->time_limit / sim->time_step) +
-                " steps per episode, more than 1,000,000; raise time_step or lower time_limit");
-  }
-}
-
-void ReadWorld(Reader& r, const YAML::Node& n, const std::string& path, const fs::path& base,
-               PluginUse* out) {
-  if (!r.IsMap(n, path, "source: <world plugin> and its parameters")) return;
-  if (!n["source"]) {
-    r.Error(n, path, "missing key 'source' (the world plugin, e.g. random_rect, floorplan, crowdnav)");
-    return;
-  }
-  out->plugin = n["source"].Scalar();
-  out->loaded = r.Plugin(n["source"], Reader::Child(path, "source"), PluginKind::kWorld);
-  if (out->loaded) out->params = r.ParamsFor(*out->loaded, n, {"source"}, path, base);
-}
-
-void ReadSensors(Reader& r, const YAML::Node& n, const std::string& path, const fs::path& base,
-                 std::vector<PluginUse>* out) {
-  if (!n.IsSequence()) {
-    r.Error(n, path, "must be a list of sensors, e.g. [person, {type: lidar2d, beams: 45}]");
-    return;
-  }
-  for (size_t i = 0; i < n.size(); ++i) {
-    const std::string p = Reader::Index(path, i);
-    const YAML::Node item = n[i];
-    PluginUse use;
-    YAML::Node type_node;
-    if (item.IsScalar()) {
-      type_node = item;
-    } else if (item.IsMap() && item["type"]) {
-      type_node = item["type"];
-    } else {
-      r.Error(item, p, "a sensor is a plugin name (person) or a map with 'type' and its parameters");
-      continue;
-    }
-    use.plugin = type_node.Scalar();
-    use.loaded = r.Plugin(type_node, item.IsMap() ? Reader::Child(p, "type") : p, PluginKind::kSensor);
-    if (use.loaded) use.params = r.ParamsFor(*use.loaded, item.IsMap() ? item : YAML::Node(YAML::NodeType::Undefined), {"type"}, p, base);
-    out->push_back(std::move(use));
-  }
-}
-
-void CanonicalSim(const SimConfig& sim, std::ostream& os) {
-  os << "sim=";
-  for (const SimField& f : kSimFields) {
-    os << (&f == kSimFields ? "" : ",");
-    std::visit([&](auto member) { os << sim.*member; }, f.member);  // a bool as 0 or 1
-  }
-  os << "\n";
-}
-
 namespace {
 
-/// FNV-1a of a file's bytes, as 16 hex digits ("unreadable" when it cannot be read).
-std::string FileContentHash(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return "unreadable";
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  char buf[1 << 16];
-  while (in.read(buf, sizeof(buf)) || in.gcount() > 0) {
-    for (std::streamsize i = 0; i < in.gcount(); ++i) {
-      h ^= static_cast<unsigned char>(buf[i]);
-      h *= 0x100000001b3ULL;
-    }
-  }
-  char out[17];
-  std::snprintf(out, sizeof(out), "%016llx", static_cast<unsigned long long>(h));
-  return out;
-}
-
-}  // namespace
-
-void Canonical(const PluginUse& u, std::ostream& os) {
-  os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
-  for (const auto& [k, v] : u.params.values()) {
-    os << k << "=" << FormatParamValue(v);
-    // A parameter that names a file (weights, a world file) counts with its content: replacing
-    // the file at the same path is another configuration, never resumed as the old one.
-    if (const auto* text = std::get_if<std::string>(&v); text && !text->empty()) {
-      std::error_code ec;
-      const fs::path file = u.params.ResolvePath(*text);
-      if (fs::is_regular_file(file, ec)) os << "#content:" << FileContentHash(file);
-    }
-    os << ";";
-  }
-  os << "}";
-}
-
-}  // namespace suite_internal
-
-namespace {
-
-using namespace suite_internal;
-
-struct Defaults {
-  YAML::Node world{YAML::NodeType::Undefined};
-  YAML::Node humans{YAML::NodeType::Undefined};
-  YAML::Node sensors{YAML::NodeType::Undefined};
-};
+/// A suite row is a row spec with a label, extra table columns and published values.
+const RowRules kSuiteRowRules{
+    "a policy plugin name such as linear or orca, or a .so path",
+    "no world: give 'world' at the top of the suite or in this row",
+    /*sensors_required=*/false, /*humans_range=*/false};
 
 /// A label names a row in episodes.csv and the tables: control characters (a line break, a tab)
 /// would be turned into spaces there and could make two rows one.
@@ -241,75 +114,17 @@ std::optional<PublishedReference> ReadReference(Reader& r, const YAML::Node& n, 
   return ref;
 }
 
-void ReadHumans(Reader& r, const YAML::Node& suite_level, const YAML::Node& row_level,
-                const std::string& path, const fs::path& base, HumansSpec* out) {
-  // Row keys override suite keys one by one.
-  const std::vector<std::string> keys = {"count", "policy", "params", "goal_mode"};
-  auto pick = [&](const char* key) -> std::pair<YAML::Node, std::string> {
-    if (Present(row_level) && row_level.IsMap() && Present(row_level[key])) return {row_level[key], Reader::Child(path, key)};
-    if (Present(suite_level) && suite_level.IsMap() && Present(suite_level[key])) return {suite_level[key], Reader::Child("humans", key)};
-    return {YAML::Node(YAML::NodeType::Undefined), ""};
-  };
-  if (Present(row_level)) {
-    if (r.IsMap(row_level, path, "count, policy, params, goal_mode")) r.CheckKeys(row_level, path, keys);
-  }
-  if (auto [n, p] = pick("count"); Present(n)) {
-    if (auto c = r.Integer(n, p, 0, 10000)) out->count = static_cast<int>(*c);
-  }
-  if (auto [n, p] = pick("goal_mode"); Present(n)) {
-    if (auto s = r.String(n, p)) {
-      if (*s == "stay") out->goal_mode = HumanGoalMode::kStay;
-      else if (*s == "new_goal") out->goal_mode = HumanGoalMode::kNewGoal;
-      else r.Error(n, p, "value '" + *s + "' is not valid; valid: stay, new_goal");
-    }
-  }
-  auto [pn, pp] = pick("policy");
-  YAML::Node default_policy(out->count > 0 ? "orca" : "linear");
-  const YAML::Node policy_node = Present(pn) ? pn : default_policy;
-  out->policy.plugin = policy_node.Scalar();
-  out->policy.loaded = r.Plugin(policy_node, Present(pn) ? pp : std::string("humans.policy (default)"), PluginKind::kPolicy);
-  auto [params, params_path] = pick("params");
-  if (Present(params) && !r.IsMap(params, params_path, "policy parameters")) return;
-  if (out->policy.loaded) out->policy.params = r.ParamsFor(*out->policy.loaded, params, {}, params_path, base);
-}
-
-void ReadRow(Reader& r, const YAML::Node& n, size_t index, const Defaults& d, const fs::path& base,
+void ReadRow(Reader& r, const YAML::Node& n, size_t index, const RowDefaults& d, const fs::path& base,
              RowSpec* row) {
   const std::string path = Reader::Index("rows", index);
   if (!r.IsMap(n, path, "policy, sensors, ...")) return;
-  r.CheckKeys(n, path, {"label", "policy", "params", "weights", "sensors", "world", "humans", "info", "reference"});
-  if (!n["policy"]) {
-    r.Error(n, path, "missing key 'policy' (a policy plugin name such as linear or orca, or a .so path)");
-  } else {
-    row->policy.plugin = n["policy"].Scalar();
-    row->policy.loaded = r.Plugin(n["policy"], Reader::Child(path, "policy"), PluginKind::kPolicy);
-  }
+  std::vector<std::string> keys = {"label"};
+  keys.insert(keys.end(), kRowSpecKeys.begin(), kRowSpecKeys.end());
+  keys.insert(keys.end(), {"info", "reference"});
+  r.CheckKeys(n, path, keys);
+  ReadRowSpec(r, n, path, d, kSuiteRowRules, base, row);
   row->label = n["label"] ? n["label"].Scalar() : row->policy.plugin;
   if (n["label"]) CheckLabel(r, n["label"], Reader::Child(path, "label"));
-  if (n["params"] && !r.IsMap(n["params"], Reader::Child(path, "params"), "policy parameters")) return;
-  if (row->policy.loaded) {
-    row->policy.params = r.ParamsFor(*row->policy.loaded, n["params"], {}, Reader::Child(path, "params"), base);
-    if (n["weights"]) {
-      const auto& schema = row->policy.loaded->schema;
-      const bool takes = std::any_of(schema.begin(), schema.end(), [](const ParamSpec& s) { return s.name == "weights"; });
-      if (!takes) {
-        r.Error(n["weights"], Reader::Child(path, "weights"),
-                "policy '" + row->policy.plugin + "' takes no weights (it has no 'weights' parameter)");
-      } else if (auto w = r.String(n["weights"], Reader::Child(path, "weights"))) {
-        row->policy.params.Set("weights", *w);
-      }
-    }
-  }
-  const YAML::Node sensors = n["sensors"] ? n["sensors"] : d.sensors;
-  if (Present(sensors)) ReadSensors(r, sensors, n["sensors"] ? Reader::Child(path, "sensors") : "robot.sensors", base, &row->sensors);
-  if (n["world"]) {
-    ReadWorld(r, n["world"], Reader::Child(path, "world"), base, &row->world);
-  } else if (Present(d.world)) {
-    ReadWorld(r, d.world, "world", base, &row->world);
-  } else {
-    r.Error(n, path, "no world: give 'world' at the top of the suite or in this row");
-  }
-  ReadHumans(r, d.humans, n["humans"], Reader::Child(path, "humans"), base, &row->humans);
   if (const auto info = n["info"]) ReadInfo(r, info, Reader::Child(path, "info"), &row->info);
   if (const auto ref = n["reference"]) row->reference = ReadReference(r, ref, Reader::Child(path, "reference"));
 }
@@ -370,6 +185,8 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
 SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
                           const std::vector<std::string>& overrides) {
   SuiteLoadResult result;
+  const std::optional<SchemaDefaults> schema = LoadSchemaDefaults(&result.errors);
+  if (!schema) return result;
   Reader r(file.string(), registry);
   YAML::Node root = LoadYamlFile(file, "suite file", &result.errors);
   if (!result.errors.empty()) return result;
@@ -387,22 +204,24 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   s.file = file;
   s.overrides = overrides;
   const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  r.CheckKeys(root, "", {"name", "description", "episodes", "seed", "isolation", "episode_timeout_s", "sim", "world", "humans", "robot", "columns", "rows", "summaries"});
-  s.name = r.Name(root, "results/<name>/");
-  if (root["description"]) s.description = root["description"].Scalar();
+  std::vector<std::string> keys = kSpecHeadKeys;
+  keys.insert(keys.end(), {"episodes", "isolation", "episode_timeout_s", "world", "humans", "robot",
+                           "columns", "rows", "summaries"});
+  r.CheckKeys(root, "", keys);
+  SpecHead spec_head = ReadSpecHead(r, root, "results/<name>/");
+  s.name = std::move(spec_head.name);
+  s.description = std::move(spec_head.description);
+  s.seed = spec_head.seed;
+  s.sim = spec_head.sim;
   if (root["episodes"]) {
     if (auto e = r.Integer(root["episodes"], "episodes", 1, 10'000'000)) s.episodes = static_cast<int>(*e);
   }
-  if (root["seed"]) {
-    if (auto e = r.Integer(root["seed"], "seed", 0, std::numeric_limits<std::int64_t>::max())) s.seed = static_cast<std::uint64_t>(*e);
-  }
   ReadIsolation(r, root, &s);
-  if (root["sim"]) ReadSim(r, root["sim"], &s.sim);
-  Defaults d;
+  RowDefaults d{*schema};
   d.world = root["world"];
   d.humans = root["humans"];
   if (Present(d.humans)) {
-    if (r.IsMap(d.humans, "humans", "count, policy, params, goal_mode")) r.CheckKeys(d.humans, "humans", {"count", "policy", "params", "goal_mode"});
+    if (r.IsMap(d.humans, "humans", "count, policy, params, goal_mode")) r.CheckKeys(d.humans, "humans", kHumansKeys);
   }
   if (const auto robot = root["robot"]) {
     if (r.IsMap(robot, "robot", "sensors")) {

@@ -15,17 +15,19 @@ ParamSchema Schema() {
 LinearPolicy::LinearPolicy(const Params& params)
     : speed_factor_(params.GetDouble("speed_factor")), slow_down_(params.GetBool("slow_down")) {}
 
-Action Decide_(const Observation& obs, double speed_factor, bool slow_down) {
+void LinearPolicy::Reset(const EpisodeContext& ctx) { time_step_ = ctx.sim.time_step; }
+
+Action Decide_(const Observation& obs, double speed_factor, bool slow_down, double time_step) {
   const Vec2 to_goal = obs.self.goal - obs.self.position;
   const double dist = to_goal.norm();
   if (dist < 1e-9) return Action{};
   double speed = speed_factor * obs.self.v_pref;
-  if (slow_down && obs.time_step > 0.0) speed = std::min(speed, dist / obs.time_step);
+  if (slow_down && time_step > 0.0) speed = std::min(speed, dist / time_step);
   return Action{to_goal / dist * speed};
 }
 
 Action LinearPolicy::Decide(const Observation& obs) {
-  return Decide_(obs, speed_factor_, slow_down_);
+  return Decide_(obs, speed_factor_, slow_down_, time_step_);
 }
 
 }  // namespace crowdsim::linear

@@ -10,11 +10,13 @@ namespace crowdsim::linear {
 class LinearPolicy final : public Policy {
  public:
   explicit LinearPolicy(const Params& params);
+  void Reset(const EpisodeContext& ctx) override;
   Action Decide(const Observation& obs) override;
 
  private:
   double speed_factor_;
   bool slow_down_;
+  double time_step_ = SimConfig{}.time_step;  ///< the episode's (Reset)
 };
 
 ParamSchema Schema();

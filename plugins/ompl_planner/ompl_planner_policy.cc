@@ -44,6 +44,7 @@ void OmplPlannerPolicy::UseMap(const StaticMap* map) {
 }
 
 void OmplPlannerPolicy::Reset(const EpisodeContext& ctx) {
+  ctx_map_ = ctx.map;
   UseMap(ctx.map);
   rng_ = Rng(ctx.seed);
   time_step_ = ctx.sim.time_step;
@@ -94,9 +95,9 @@ void OmplPlannerPolicy::GatherPeople(const Observation& obs) {
 }
 
 Action OmplPlannerPolicy::Decide(const Observation& obs) {
-  if (world_ == nullptr || (obs.map != nullptr && obs.map != map_)) UseMap(obs.map);
+  if (world_ == nullptr || ctx_map_ != map_) UseMap(ctx_map_);
   const AgentState& self = obs.self;
-  const double time_step = obs.time_step > 0.0 ? obs.time_step : time_step_;
+  const double time_step = time_step_;
   // Half the margin the current path was planned with: every path segment stays in sight from
   // the one before it, with room for small deviations. Read after any replanning below: a
   // value taken before it would be the previous path's (at an episode's first step, the

@@ -53,6 +53,7 @@ class OmplPlannerPolicy final : public Policy {
   PolicyConfig config_;
 
   // Per map (kept across episodes while the map is the same).
+  const StaticMap* ctx_map_ = nullptr;  // the episode's (Reset)
   const StaticMap* map_ = nullptr;
   std::vector<Rect> map_rects_;  // copies: the old map may be gone when the next one comes
   Rect map_bounds_;

@@ -250,8 +250,8 @@ GuidanceTarget OrcaPolicy::Target(const Observation& obs, double radius, double 
 Action OrcaPolicy::Decide(const Observation& obs) {
   const AgentState& self = obs.self;
   const double radius = self.radius + radius_padding_ + safety_space_;
-  UseMap(obs.map != nullptr ? obs.map : ctx_map_, radius);
-  const double time_step = obs.time_step > 0.0 ? obs.time_step : ctx_time_step_;
+  UseMap(ctx_map_, radius);
+  const double time_step = ctx_time_step_;
 
   GatherNeighbours(obs);
   const Vec2 pref = PreferredVelocity(self.position, Target(obs, radius, time_step), self.v_pref);

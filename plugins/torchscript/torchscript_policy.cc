@@ -22,6 +22,7 @@ struct TorchScriptPolicy::Impl {
   double actions_v_pref = -1.0;  ///< v_pref of `actions`
   std::vector<Action> actions;   ///< CrowdNav's holonomic actions at actions_v_pref
   double gamma = 0.9;            ///< the episode's discount (`values` mode)
+  double time_step = SimConfig{}.time_step;  ///< the episode's, s between decisions
   std::vector<LookaheadOutcome> outcomes;
 
   c10::IValue Forward(ObservationDict obs) {
@@ -75,9 +76,9 @@ struct TorchScriptPolicy::Impl {
     const std::vector<Action>& candidates = ActionsAt(obs.self.v_pref);
     obs.lookahead->Evaluate(candidates, &outcomes);
     const std::vector<double> next = ValuesFromOutput(
-        Forward(MakeLookaheadDict(outcomes, obs.time + obs.time_step, config.humans)),
+        Forward(MakeLookaheadDict(outcomes, obs.time + time_step, config.humans)),
         config.ActionCount(), config.weights);
-    const double discount = std::pow(gamma, obs.time_step * obs.self.v_pref);
+    const double discount = std::pow(gamma, time_step * obs.self.v_pref);
     std::vector<float> values(next.size());
     for (size_t k = 0; k < next.size(); ++k) {
       values[k] = static_cast<float>(outcomes[k].reward + discount * next[k]);
@@ -112,7 +113,10 @@ PolicyNeeds TorchScriptPolicy::Needs() const {
   return needs;
 }
 
-void TorchScriptPolicy::Reset(const EpisodeContext& ctx) { impl_->gamma = ctx.sim.gamma; }
+void TorchScriptPolicy::Reset(const EpisodeContext& ctx) {
+  impl_->gamma = ctx.sim.gamma;
+  impl_->time_step = ctx.sim.time_step;
+}
 
 Action TorchScriptPolicy::Decide(const Observation& obs) {
   impl_->CheckLidar(obs);

@@ -88,10 +88,14 @@ std::string TrainingReader(std::string_view input) {
   const training::TrainSpecLoadResult r = training::LoadTrainSpec(file, Registry(), Overrides(input));
   if (auto problem = CheckErrors(r.spec.has_value(), r.errors, file); !problem.empty()) return problem;
   if (!r.spec) return "";
-  for (const auto& problem : {CheckPlugin(r.spec->policy, "policy"), CheckPlugin(r.spec->world, "world"),
-                              CheckPlugin(r.spec->human_policy, "human policy"),
+  const RowSpec& row = r.spec->row;
+  for (const auto& problem : {CheckPlugin(row.policy, "policy"), CheckPlugin(row.world, "world"),
+                              CheckPlugin(row.humans.policy, "human policy"),
                               CheckPlugin(r.spec->teacher, "teacher")}) {
     if (!problem.empty()) return problem;
+  }
+  for (const auto& sensor : row.sensors) {
+    if (auto problem = CheckPlugin(sensor, "sensor"); !problem.empty()) return problem;
   }
   return "";
 }

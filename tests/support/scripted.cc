@@ -8,7 +8,7 @@ Action GoStraightPolicy::Decide(const Observation& obs) {
   const Vec2 d = obs.self.goal - obs.self.position;
   const double dist = d.norm();
   if (dist < 1e-12) return Action{};
-  const double speed = std::min(obs.self.v_pref, dist / obs.time_step);
+  const double speed = std::min(obs.self.v_pref, dist / time_step_);
   return Action{d / dist * speed};
 }
 

@@ -22,7 +22,11 @@ class ConstantVelocityPolicy final : public Policy {
 /// Straight to the goal at v_pref, slowing down on the last step.
 class GoStraightPolicy final : public Policy {
  public:
+  void Reset(const EpisodeContext& ctx) override { time_step_ = ctx.sim.time_step; }
   Action Decide(const Observation& obs) override;
+
+ private:
+  double time_step_ = SimConfig{}.time_step;
 };
 
 /// A map with the given rectangles inside generous bounds.

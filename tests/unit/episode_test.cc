@@ -35,6 +35,46 @@ TEST(Episode, StraightRunSucceedsAtTheExpectedTime) {
   EXPECT_DOUBLE_EQ(r.trajectory.back().time, 8.0);
 }
 
+/// Records what Reset handed it; asks for the map when told to.
+class ContextRecorder final : public Policy {
+ public:
+  explicit ContextRecorder(bool wants_map) : wants_map_(wants_map) {}
+  PolicyNeeds Needs() const override {
+    PolicyNeeds needs;
+    needs.map = wants_map_;
+    return needs;
+  }
+  void Reset(const EpisodeContext& ctx) override {
+    map = ctx.map;
+    time_step = ctx.sim.time_step;
+  }
+  Action Decide(const Observation&) override { return Action{}; }
+  const StaticMap* map = nullptr;
+  double time_step = 0.0;  ///< 0 until Reset
+
+ private:
+  bool wants_map_;
+};
+
+// The episode's constants reach a policy through Reset alone, and the map only where
+// Needs().map asks for it (robot and humans alike).
+TEST(Episode, ResetGivesTheMapOnlyToPoliciesThatNeedIt) {
+  const Scenario sc = MakeScenario(MakeRoom(), Vec2(0, -4), Vec2(0, 4), {{Vec2(-3, 0), Vec2(3, 0)},
+                                                                          {Vec2(3, 2), Vec2(-3, 2)}});
+  SimConfig sim;
+  sim.time_step = 0.1;
+  for (const bool robot_wants : {false, true}) {
+    ContextRecorder robot(robot_wants), blind(false), seeing(true);
+    EpisodeAgents agents{&robot, {&blind, &seeing}, {}};
+    Episode ep(sc, sim, agents);
+    EXPECT_EQ(robot.map, robot_wants ? sc.map.get() : nullptr);
+    EXPECT_EQ(blind.map, nullptr);
+    EXPECT_EQ(seeing.map, sc.map.get());
+    EXPECT_DOUBLE_EQ(robot.time_step, 0.1);
+    EXPECT_DOUBLE_EQ(blind.time_step, 0.1);
+  }
+}
+
 TEST(Episode, GoalRadiusIsConfigurable) {
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(0, 1.0));  // overshoots when not stopped

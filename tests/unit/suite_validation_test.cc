@@ -2,6 +2,8 @@
 // the offending value and the valid choices.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include "crowdsim/suite.h"
@@ -246,6 +248,48 @@ TEST_F(SuiteValidation, RobotMapWithoutSensorsIsAnErrorNotACrash) {
   auto empty = Load("name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
                     "robot: {}\nrows:\n  - {label: a, policy: linear}\n");
   EXPECT_TRUE(empty.suite) << All(empty);
+}
+
+// Suites and training files share the row reader; a count range is a training file's (drawn
+// per episode), and a suite row that gives one is told what to write instead.
+TEST_F(SuiteValidation, AHumanCountRangeIsForTrainingFiles) {
+  auto r = Load("name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+                "rows:\n  - {label: a, policy: linear, humans: {count: [2, 4]}}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "suite.yaml:5:48: rows[0].humans.count: a range of counts is for training files "
+                    "(drawn per episode); a suite row runs one count: give one number, or "
+                    "`sweep: {humans.count: [...]}` for a row per count"), "") << All(r);
+  EXPECT_EQ(r.errors.size(), 1u) << All(r);
+}
+
+// Defaults that name plugins are data (suites/schema/defaults.yaml under the data root): a
+// file that leaves humans.policy out gets the default there, and a missing defaults file is
+// named with the fix.
+TEST_F(SuiteValidation, PluginDefaultsComeFromTheSchemaDefaultsFile) {
+  const std::string suite = "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+                            "rows:\n  - {label: a, policy: linear}\n"
+                            "  - {label: b, policy: linear, humans: {count: 0}}\n";
+  auto r = Load(suite);
+  ASSERT_TRUE(r.suite) << All(r);
+  EXPECT_EQ(r.suite->rows[0].humans.policy.plugin, "orca");
+  EXPECT_EQ(r.suite->rows[1].humans.policy.plugin, "linear");
+
+  TempDir data;
+  std::filesystem::create_directories(data.path() / "suites/schema");
+  data.Write("suites/schema/defaults.yaml", "humans: {policy: linear, policy_without_humans: linear}\n"
+                                            "training: {il_policy: orca}\n");
+  ::setenv("CROWDSIM_DATA_DIR", data.path().c_str(), 1);
+  auto moved = Load(suite);
+  ASSERT_TRUE(moved.suite) << All(moved);
+  EXPECT_EQ(moved.suite->rows[0].humans.policy.plugin, "linear");
+  std::filesystem::remove(data.path() / "suites/schema/defaults.yaml");
+  auto none = Load(suite);
+  ::unsetenv("CROWDSIM_DATA_DIR");
+  ASSERT_FALSE(none.suite);
+  EXPECT_NE(Find(none, (data.path() / "suites/schema/defaults.yaml").string() +
+                       ": schema defaults file does not exist (every suite and training file "
+                       "needs it: restore suites/schema/defaults.yaml from the source tree, or set "
+                       "CROWDSIM_DATA_DIR to the project's root folder)"), "") << All(none);
 }
 
 TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {

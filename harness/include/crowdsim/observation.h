@@ -34,7 +34,6 @@ struct SensorReading {
 /// Everything one policy receives at one decision.
 struct Observation {
   double time = 0.0;                  ///< s since the episode start
-  double time_step = SimConfig{}.time_step;  ///< s until the next decision
   AgentState self;                    ///< own state, world frame
   Frame frame;                        ///< sensor frame (robot: x towards the goal)
   std::vector<SensorReading> readings;  ///< robot only: one per configured sensor, in order
@@ -42,8 +41,6 @@ struct Observation {
   /// when visible), with its own index in `self_index` (-1 if absent). Null for the robot.
   const AgentIndex* agents = nullptr;
   int self_index = -1;
-  /// The static map, given only to policies that declare they need it (ORCA, planners).
-  const StaticMap* map = nullptr;
   /// One-step lookahead, given only to robot policies that declare they need it.
   const Lookahead* lookahead = nullptr;
 

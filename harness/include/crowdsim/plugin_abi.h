@@ -15,7 +15,7 @@
 namespace crowdsim {
 
 /// Bump when any interface or this descriptor changes layout.
-inline constexpr std::uint32_t kPluginAbiVersion = 1;
+inline constexpr std::uint32_t kPluginAbiVersion = 2;  // 2: Observation lost time_step and map
 
 /// Name of the exported alias.
 inline constexpr const char* kPluginAliasName = "crowdsim_plugin_v1";

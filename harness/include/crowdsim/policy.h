@@ -16,15 +16,19 @@ enum class AgentRole { kRobot, kHuman };
 
 /// What a policy needs from the harness (checked before the first episode).
 struct PolicyNeeds {
-  bool map = false;        ///< gets Observation::map (privileged knowledge of the layout)
+  bool map = false;        ///< gets EpisodeContext::map (privileged knowledge of the layout)
   bool lookahead = false;  ///< robot only: gets Observation::lookahead
   std::vector<std::string> sensors;  ///< robot only: sensor names that must be configured
 };
 
-/// Per-episode context handed to Reset.
+/// Per-episode context handed to Reset: the one way a policy learns the episode's constants
+/// (the time step between decisions and the rest of the sim settings, the map); Observation
+/// carries only what changes from step to step.
 struct EpisodeContext {
+  /// The static map, given only to policies whose Needs().map is set (ORCA, planners); null
+  /// for the others.
   const StaticMap* map = nullptr;
-  SimConfig sim;
+  SimConfig sim;  ///< sim.time_step: s between decisions
   AgentRole role = AgentRole::kRobot;
   std::uint64_t seed = 0;   ///< this agent's own stream for the episode
   int agent_id = 0;         ///< 0 = robot, 1.. = humans
@@ -35,7 +39,7 @@ class Policy {
   virtual ~Policy();
   /// What the harness must provide; called once after construction.
   virtual PolicyNeeds Needs() const { return {}; }
-  /// Called at the start of every episode (reset internal state, read the map).
+  /// Called at the start of every episode (reset internal state, keep the episode's constants).
   virtual void Reset(const EpisodeContext& ctx);
   /// The action for this step. Throwing ends the episode with status policy_error.
   virtual Action Decide(const Observation& obs) = 0;

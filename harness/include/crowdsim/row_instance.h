@@ -1,8 +1,9 @@
-// The plugin objects of one suite row, made for one thread, and the exact scenario of any
-// (row, episode): shared by suite runs, replays (rendering) and tools.
+// The plugin objects of one row spec, made for one thread, and the exact scenario of any
+// (row, episode): shared by suite runs, trainings, replays (rendering) and tools.
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "crowdsim/episode.h"
@@ -19,6 +20,11 @@ class RowInstance {
   /// The agents for an episode with `humans` humans (human policies made on demand).
   const EpisodeAgents& Agents(size_t humans);
   Policy& robot() { return *robot_; }
+
+  /// The first sensor the robot policy needs (Policy::Needs) that the row does not configure,
+  /// as "policy 'cadrl' needs the sensor 'lidar2d'"; "" when every need is met. Suite runs and
+  /// trainings both check it before their first episode.
+  std::string UnmetSensorNeed() const;
 
  private:
   const RowSpec& row_;

@@ -34,7 +34,8 @@ struct PluginUse {
 
 /// The humans of a row.
 struct HumansSpec {
-  int count = 5;
+  int count = 5;      ///< humans per episode; the least of a range
+  int count_max = 5;  ///< the most: `count` itself, or a training file's range [count, count_max]
   PluginUse policy;
   HumanGoalMode goal_mode = HumanGoalMode::kStay;
 };

@@ -2,71 +2,42 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <limits>
 #include <sstream>
 
+#include "../config_text.h"
+#include "../row_reader.h"
+#include "../schema_defaults.h"
+#include "../spec_head_reader.h"
 #include "../suite_reader.h"
 #include "../yaml_edit.h"
 #include "../yaml_file.h"
-#include "crowdsim/rng.h"
 
 namespace crowdsim::training {
 namespace fs = std::filesystem;
 using suite_internal::Present;
 using suite_internal::Reader;
 
-std::string TrainSpec::ConfigHash() const {
-  Suite s;
-  s.canonical = canonical;
-  return s.ConfigHash();
-}
+std::string TrainSpec::ConfigHash() const { return suite_internal::HashConfigText(canonical); }
 
 namespace {
 
-const std::vector<std::string> kTopKeys = {"name", "description", "seed", "sim", "policy", "params",
-                                           "weights", "sensors", "world", "humans", "training"};
+/// A training file's top level is one row spec: its sensors and world must be given, and its
+/// humans may be a range drawn per episode.
+const suite_internal::RowRules kTrainingRowRules{
+    "the policy to train: cadrl or sarl",
+    "missing key 'world' (e.g. {source: random_rect, obstacles: 1, split: train})",
+    /*sensors_required=*/true, /*humans_range=*/true};
 
 /// The world trains on its train split: `split` defaults to train, test is refused.
-void ReadTrainWorld(Reader& r, const YAML::Node& n, const fs::path& base, PluginUse* out) {
-  suite_internal::ReadWorld(r, n, "world", base, out);
-  if (!out->loaded || !out->params.Has("split")) return;
+void UseTrainSplit(Reader& r, const YAML::Node& n, PluginUse* world) {
+  if (!world->loaded || !world->params.Has("split")) return;
   if (!Present(n["split"])) {
-    out->params.Set("split", std::string("train"));
-  } else if (out->params.GetString("split") != "train") {
+    world->params.Set("split", std::string("train"));
+  } else if (world->params.GetString("split") != "train") {
     r.Error(n["split"], "world.split",
             "training uses the world's train split (the test split is for suites); set split: train");
-  }
-}
-
-void ReadHumans(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpec* s) {
-  const bool map = Present(n) && r.IsMap(n, "humans", "count, policy, params");
-  if (map) {
-    r.CheckKeys(n, "humans", {"count", "policy", "params"});
-    if (const YAML::Node c = n["count"]; Present(c)) {
-      if (c.IsSequence()) {
-        if (c.size() != 2) {
-          r.Error(c, "humans.count", "a range is a list of two counts [min, max]");
-        } else {
-          auto lo = r.Integer(c[0], "humans.count[0]", 0, 1000);
-          auto hi = r.Integer(c[1], "humans.count[1]", 0, 1000);
-          if (lo && hi && *lo > *hi) r.Error(c, "humans.count", "min is larger than max");
-          if (lo && hi) {
-            s->humans_min = static_cast<int>(*lo);
-            s->humans_max = static_cast<int>(*hi);
-          }
-        }
-      } else if (auto k = r.Integer(c, "humans.count", 0, 1000)) {
-        s->humans_min = s->humans_max = static_cast<int>(*k);
-      }
-    }
-  }
-  const bool given = map && Present(n["policy"]);
-  const YAML::Node policy = given ? n["policy"] : YAML::Node("orca");
-  const YAML::Node params = map ? n["params"] : YAML::Node(YAML::NodeType::Undefined);
-  if (Present(params) && !r.IsMap(params, "humans.params", "policy parameters")) return;
-  s->human_policy.plugin = policy.Scalar();
-  s->human_policy.loaded = r.Plugin(policy, given ? "humans.policy" : "humans.policy (default)", PluginKind::kPolicy);
-  if (s->human_policy.loaded) {
-    s->human_policy.params = r.ParamsFor(*s->human_policy.loaded, params, {}, "humans.params", base);
   }
 }
 
@@ -89,7 +60,27 @@ void ReadChoice(Reader& r, const YAML::Node& training, const std::string& key,
   r.Error(node, "training." + key, "expected " + expected + ", got " + suite_internal::Scalar(node));
 }
 
-void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpec* s) {
+/// The teacher's parameters that the schema defaults give unless `il_params` does, where the
+/// teacher's plugin has them (CrowdNav: more clearance from an invisible robot).
+void DefaultTeacherParams(Reader& r, const YAML::Node& given,
+                          const suite_internal::SchemaDefaults& schema, TrainSpec* s) {
+  const YAML::Node& defaults =
+      s->sim.robot_visible ? schema.il_params_robot_visible : schema.il_params_robot_invisible;
+  const auto& specs = s->teacher.loaded->schema;
+  for (const auto& kv : defaults) {
+    const std::string key = kv.first.Scalar();
+    if (Present(given) && given.IsMap() && Present(given[key])) continue;
+    const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& p) { return p.name == key; });
+    if (spec == specs.end()) continue;
+    // A node without the defaults file's marks: an error names the key and that file.
+    const YAML::Node value = kv.second.IsScalar() ? YAML::Node(kv.second.Scalar()) : YAML::Node(kv.second);
+    const std::string path = "training.il_params." + key + " (default, " + schema.file.string() + ")";
+    if (auto v = r.Value(*spec, value, path)) s->teacher.params.Set(key, *v);
+  }
+}
+
+void ReadTraining(Reader& r, const YAML::Node& n, const suite_internal::SchemaDefaults& schema,
+                  const fs::path& base, TrainSpec* s) {
   TrainingSettings& t = s->training;
   struct IntField {
     const char* key;
@@ -147,33 +138,33 @@ void ReadTraining(Reader& r, const YAML::Node& n, const fs::path& base, TrainSpe
                &t.exploration);
   }
   const bool named = map && Present(n["il_policy"]);
-  const YAML::Node teacher = named ? n["il_policy"] : YAML::Node("orca");
-  const std::string teacher_path = named ? "training.il_policy" : "training.il_policy (default)";
+  const YAML::Node teacher = named ? n["il_policy"] : YAML::Node(schema.il_policy);
+  const std::string teacher_path =
+      named ? "training.il_policy" : "training.il_policy (default, " + schema.file.string() + ")";
   const YAML::Node teacher_params = map ? n["il_params"] : YAML::Node(YAML::NodeType::Undefined);
   if (Present(teacher_params) && !r.IsMap(teacher_params, "training.il_params", "policy parameters")) return;
   s->teacher.plugin = teacher.Scalar();
   s->teacher.loaded = r.Plugin(teacher, teacher_path, PluginKind::kPolicy);
   if (!s->teacher.loaded) return;
   s->teacher.params = r.ParamsFor(*s->teacher.loaded, teacher_params, {}, "training.il_params", base);
-  // CrowdNav: an invisible robot's teacher keeps 0.15 m more clearance, since nobody yields.
-  const bool given = Present(teacher_params) && teacher_params.IsMap() && Present(teacher_params["safety_space"]);
-  if (!given && s->teacher.params.Has("safety_space")) {
-    s->teacher.params.Set("safety_space", s->sim.robot_visible ? 0.0 : 0.15);
-  }
+  DefaultTeacherParams(r, teacher_params, schema, s);
 }
 
 std::string Canonical(const TrainSpec& s) {
+  const RowSpec& row = s.row;
   std::ostringstream os;
   os << "seed=" << s.seed << "\n";
   suite_internal::CanonicalSim(s.sim, os);
   os << "policy:";
-  suite_internal::Canonical(s.policy, os);
+  suite_internal::Canonical(row.policy, os);
   os << "\nsensors:";
-  for (const auto& sen : s.sensors) suite_internal::Canonical(sen, os);
+  for (const auto& sen : row.sensors) suite_internal::Canonical(sen, os);
   os << "\nworld:";
-  suite_internal::Canonical(s.world, os);
-  os << "\nhumans:" << s.humans_min << "-" << s.humans_max << ",";
-  suite_internal::Canonical(s.human_policy, os);
+  suite_internal::Canonical(row.world, os);
+  os << "\nhumans:" << row.humans.count << "-" << row.humans.count_max << ",";
+  // Written only when not the default, so that the hashes of earlier trainings stay valid.
+  if (row.humans.goal_mode != HumanGoalMode::kStay) os << "goal_mode=new_goal,";
+  suite_internal::Canonical(row.humans.policy, os);
   os << "\nteacher:";
   suite_internal::Canonical(s.teacher, os);
   const TrainingSettings& t = s.training;
@@ -245,47 +236,26 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
     result.errors.push_back({file.string(), 0, 0, "", "a training file is a YAML map with name, policy, sensors, world, humans and training"});
     return result;
   }
+  const std::optional<suite_internal::SchemaDefaults> schema =
+      suite_internal::LoadSchemaDefaults(&result.errors);
+  if (!schema) return result;
   Reader r(file.string(), registry);
   TrainSpec s;
   s.file = file;
   const fs::path base = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  r.CheckKeys(root, "", kTopKeys);
-  s.name = r.Name(root, "results/train/<name>/");
-  if (Present(root["description"])) s.description = root["description"].Scalar();
-  if (Present(root["seed"])) {
-    if (auto v = r.Integer(root["seed"], "seed", 0, std::numeric_limits<std::int64_t>::max())) s.seed = static_cast<std::uint64_t>(*v);
-  }
-  if (Present(root["sim"])) suite_internal::ReadSim(r, root["sim"], &s.sim);
-  if (!Present(root["policy"])) {
-    r.Error(root, "policy", "missing key 'policy' (the policy to train: cadrl or sarl)");
-  } else {
-    s.policy.plugin = root["policy"].Scalar();
-    s.policy.loaded = r.Plugin(root["policy"], "policy", PluginKind::kPolicy);
-  }
-  if (Present(root["params"]) && !r.IsMap(root["params"], "params", "policy parameters")) {
-    // reported
-  } else if (s.policy.loaded) {
-    s.policy.params = r.ParamsFor(*s.policy.loaded, root["params"], {}, "params", base);
-    if (Present(root["weights"])) {
-      if (!s.policy.params.Has("weights")) {
-        r.Error(root["weights"], "weights", "policy '" + s.policy.plugin + "' takes no weights");
-      } else if (auto w = r.String(root["weights"], "weights")) {
-        s.policy.params.Set("weights", *w);
-      }
-    }
-  }
-  if (!Present(root["sensors"])) {
-    r.Error(root, "sensors", "missing key 'sensors' (e.g. [person, {type: lidar2d, beams: 45}])");
-  } else {
-    suite_internal::ReadSensors(r, root["sensors"], "sensors", base, &s.sensors);
-  }
-  if (!Present(root["world"])) {
-    r.Error(root, "world", "missing key 'world' (e.g. {source: random_rect, obstacles: 1, split: train})");
-  } else {
-    ReadTrainWorld(r, root["world"], base, &s.world);
-  }
-  ReadHumans(r, root["humans"], base, &s);
-  ReadTraining(r, root["training"], base, &s);
+  std::vector<std::string> keys = suite_internal::kSpecHeadKeys;
+  keys.insert(keys.end(), suite_internal::kRowSpecKeys.begin(), suite_internal::kRowSpecKeys.end());
+  keys.push_back("training");
+  r.CheckKeys(root, "", keys);
+  suite_internal::SpecHead head = suite_internal::ReadSpecHead(r, root, "results/train/<name>/");
+  s.name = std::move(head.name);
+  s.description = std::move(head.description);
+  s.seed = head.seed;
+  s.sim = head.sim;
+  suite_internal::ReadRowSpec(r, root, "", suite_internal::RowDefaults{*schema}, kTrainingRowRules, base, &s.row);
+  s.row.label = s.name;
+  UseTrainSplit(r, root["world"], &s.row.world);
+  ReadTraining(r, root["training"], *schema, base, &s);
   if (!r.errors.empty()) {
     suite_internal::LocateOverrideErrors(overrides, &r.errors);
     result.errors = std::move(r.errors);

@@ -15,6 +15,7 @@
 #include "crowdsim/episode.h"
 #include "crowdsim/results.h"
 #include "crowdsim/rng.h"
+#include "crowdsim/row_instance.h"
 #include "crowdsim/trainable.h"
 #include "crowdsim/version.h"
 #include "episode_log.h"
@@ -149,12 +150,15 @@ class Trainer {
   const TrainOptions& options_;
   const TrainingSettings& t_;
 
-  std::shared_ptr<Policy> learner_policy_;
+  std::shared_ptr<WorldSource> world_;
+  /// The learner (the row's robot policy), its sensors and the humans, made as a suite run
+  /// makes a row's.
+  std::unique_ptr<RowInstance> row_;
+  Policy* learner_policy_ = nullptr;
   Trainable* learner_ = nullptr;
   std::shared_ptr<Policy> teacher_;
-  std::vector<std::shared_ptr<Sensor>> sensors_;
-  std::vector<std::shared_ptr<Policy>> humans_;
-  std::shared_ptr<WorldSource> world_;
+  /// The row's agents for the most humans an episode may have; the robot is set per episode
+  /// (teacher or learner).
   EpisodeAgents agents_;
 
   ReplayMemory memory_;
@@ -167,35 +171,24 @@ class Trainer {
 
 
 void Trainer::Build() {
+  const RowSpec& row = spec_.row;
   try {
-    world_ = registry_.MakeWorld(*spec_.world.loaded, spec_.world.params);
-    learner_policy_ = registry_.MakePolicy(*spec_.policy.loaded, spec_.policy.params);
+    world_ = registry_.MakeWorld(*row.world.loaded, row.world.params);
+    row_ = std::make_unique<RowInstance>(row, registry_);
     teacher_ = registry_.MakePolicy(*spec_.teacher.loaded, spec_.teacher.params);
-    for (const auto& s : spec_.sensors) {
-      sensors_.push_back(registry_.MakeSensor(*s.loaded, s.params));
-      agents_.sensors.push_back({s.loaded->descriptor->name, sensors_.back().get()});
-    }
-    for (int i = 0; i < spec_.humans_max; ++i) {
-      humans_.push_back(registry_.MakePolicy(*spec_.human_policy.loaded, spec_.human_policy.params));
-      agents_.humans.push_back(humans_.back().get());
-    }
+    agents_ = row_->Agents(static_cast<size_t>(row.humans.count_max));
   } catch (const PluginError& e) {
     throw TrainError(e.what());
   }
-  learner_ = dynamic_cast<Trainable*>(learner_policy_.get());
+  learner_policy_ = &row_->robot();
+  learner_ = dynamic_cast<Trainable*>(learner_policy_);
   if (learner_ == nullptr) {
-    throw TrainError("policy '" + spec_.policy.plugin +
+    throw TrainError("policy '" + row.policy.plugin +
                      "' cannot be trained: its object does not implement crowdsim::Trainable "
                      "(train cadrl or sarl)");
   }
-  for (const auto& needed : learner_policy_->Needs().sensors) {
-    const bool have = std::any_of(spec_.sensors.begin(), spec_.sensors.end(), [&](const PluginUse& s) {
-      return s.loaded->descriptor->name == needed;
-    });
-    if (!have) {
-      throw TrainError(spec_.file.string() + ": policy '" + spec_.policy.plugin + "' needs the sensor '" +
-                       needed + "'; add it to `sensors`");
-    }
+  if (const std::string unmet = row_->UnmetSensorNeed(); !unmet.empty()) {
+    throw TrainError(spec_.file.string() + ": " + unmet + "; add it to `sensors`");
   }
 }
 
@@ -203,11 +196,13 @@ Scenario Trainer::MakeScenario(const char* stream, int index) const {
   ScenarioRequest req;
   req.seed = DeriveSeed(spec_.seed, world_->Identity() + "/" + stream, static_cast<std::uint64_t>(index));
   req.episode_index = index;
-  req.num_humans = spec_.humans_min;
-  if (spec_.humans_max > spec_.humans_min) {
+  const HumansSpec& humans = spec_.row.humans;
+  req.num_humans = humans.count;
+  if (humans.count_max > humans.count) {
     Rng rng(SplitMix64(req.seed ^ 0x68756d616e73ULL));  // "humans"
-    req.num_humans += static_cast<int>(rng.Below(spec_.humans_max - spec_.humans_min + 1));
+    req.num_humans += static_cast<int>(rng.Below(humans.count_max - humans.count + 1));
   }
+  req.goal_mode = humans.goal_mode;
   req.sim = spec_.sim;
   return world_->Make(req);
 }
@@ -340,7 +335,7 @@ ValidationResult Trainer::Validate(int rl_episode) {
   double nav = 0.0;
   int success = 0, collision = 0, timeout = 0;
   for (int k = 0; k < t_.validation_episodes; ++k) {
-    const Trajectory tr = RunEpisode(learner_policy_.get(), MakeScenario("val", k), false);
+    const Trajectory tr = RunEpisode(learner_policy_, MakeScenario("val", k), false);
     switch (tr.result.status) {
       case EpisodeStatus::kSuccess: ++success; nav += tr.result.time; break;
       case EpisodeStatus::kCollisionHuman:
@@ -394,7 +389,7 @@ void Trainer::Reinforcement() {
         Exploration{epsilon, DeriveSeed(spec_.seed, "explore", static_cast<std::uint64_t>(e)),
                     t_.exploration == ExplorationRule::kCollisionFree});
     const bool bootstrap_timeouts = t_.store_timeouts == StoreTimeouts::kBootstrap;
-    Trajectory tr = RunEpisode(learner_policy_.get(), MakeScenario("rl", e), true, bootstrap_timeouts);
+    Trajectory tr = RunEpisode(learner_policy_, MakeScenario("rl", e), true, bootstrap_timeouts);
     summary_.times.rl_episodes += Since(t0);
     if (const auto source = SourceOf(tr.result.status, true, t_.store_timeouts)) {
       t0 = Clock::now();

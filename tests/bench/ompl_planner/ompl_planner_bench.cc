@@ -104,7 +104,6 @@ void DecideBench(benchmark::State& state, const std::string& local) {
   obs.self.goal = sc.robot_goal;
   obs.self.heading = HeadingToGoal(obs.self);
   obs.frame = Frame::Make(obs.self.position, obs.self.heading);
-  obs.map = sc.map.get();
   SensorReading reading;
   reading.sensor = "person";
   for (const HumanSpec& h : sc.humans) {

@@ -107,7 +107,6 @@ void BM_PluginDecideHuman(benchmark::State& state) {
   obs.self = agents[0];
   obs.agents = &index;
   obs.self_index = 0;
-  obs.map = &map;
   for (auto _ : state) benchmark::DoNotOptimize(policy->Decide(obs));
 }
 BENCHMARK(BM_PluginDecideHuman);

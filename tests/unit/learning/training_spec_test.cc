@@ -43,9 +43,9 @@ TEST(TrainSpecTest, DefaultsAreThePapers) {
   EXPECT_DOUBLE_EQ(r.spec->sim.gamma, 0.9);
   EXPECT_EQ(r.spec->teacher.plugin, "orca");
   EXPECT_DOUBLE_EQ(r.spec->teacher.params.GetDouble("safety_space"), 0.15);
-  EXPECT_EQ(r.spec->world.params.GetString("split"), "train");
-  EXPECT_EQ(r.spec->humans_min, 5);
-  EXPECT_EQ(r.spec->humans_max, 5);
+  EXPECT_EQ(r.spec->row.world.params.GetString("split"), "train");
+  EXPECT_EQ(r.spec->row.humans.count, 5);
+  EXPECT_EQ(r.spec->row.humans.count_max, 5);
   EXPECT_DOUBLE_EQ(training::Epsilon(t, 0), 0.9);
   EXPECT_DOUBLE_EQ(training::Epsilon(t, 2500), 0.7);
   EXPECT_DOUBLE_EQ(training::Epsilon(t, 5000), 0.5);
@@ -151,6 +151,94 @@ TEST(TrainSpecTest, UnknownTopKeyAndPolicyParameter) {
   for (const auto& e : r.errors) all += e.Format() + "\n";
   EXPECT_NE(all.find("bad.yaml:3:26: params.beams: unknown parameter 'beams'"), std::string::npos) << all;
   EXPECT_NE(all.find("bad.yaml:6:1: episodes: unknown key 'episodes'"), std::string::npos) << all;
+}
+
+// The top level of a training file is a suite row's spec, read by the suite's row reader:
+// the same messages (file:line:col, key path, the offending value, the valid choices or the fix).
+TEST(TrainSpecTest, TheRowPartIsReadByTheSuitesRowReader) {
+  TempDir dir;
+  const auto file = dir.Write("row.yaml",
+      "name: row\npolicy: linear\nweights: w.pt\nsensors: [person, {type: lidar2d, beamz: 9}]\n"
+      "world: {source: random_rect, obstacles: 1}\nhumans: {count: 2, goal_mode: sideways}\n");
+  const auto r = Load(file);
+  ASSERT_FALSE(r.spec);
+  std::string all;
+  for (const auto& e : r.errors) all += e.Format() + "\n";
+  EXPECT_NE(all.find("row.yaml:3:10: weights: policy 'linear' takes no weights (it has no 'weights' "
+                     "parameter)"), std::string::npos) << all;
+  EXPECT_NE(all.find("row.yaml:4:35: sensors[1].beamz: unknown parameter 'beamz' for sensor plugin "
+                     "'lidar2d' (valid: "), std::string::npos) << all;
+  EXPECT_NE(all.find("row.yaml:6:31: humans.goal_mode: value 'sideways' is not valid; valid: stay, "
+                     "new_goal"), std::string::npos) << all;
+  EXPECT_EQ(r.errors.size(), 3u) << all;
+
+  // What a training file must give that a suite row may take from its suite.
+  const auto bare = Load(dir.Write("bare.yaml", "name: bare\nhumans: {count: 1}\n"));
+  ASSERT_FALSE(bare.spec);
+  all.clear();
+  for (const auto& e : bare.errors) all += e.Format() + "\n";
+  EXPECT_NE(all.find("bare.yaml:1:1: policy: missing key 'policy' (the policy to train: cadrl or sarl)"),
+            std::string::npos) << all;
+  EXPECT_NE(all.find("bare.yaml:1:1: sensors: missing key 'sensors' (e.g. [person, {type: lidar2d, "
+                     "beams: 45}])"), std::string::npos) << all;
+  EXPECT_NE(all.find("bare.yaml:1:1: world: missing key 'world' (e.g. {source: random_rect, "
+                     "obstacles: 1, split: train})"), std::string::npos) << all;
+  EXPECT_EQ(bare.errors.size(), 3u) << all;
+}
+
+// The humans of a training file: the suite's keys (goal_mode too) plus a count range drawn per
+// episode; a key left at its default keeps the hash of files written before it existed.
+TEST(TrainSpecTest, HumansAreASuiteRowsWithACountRange) {
+  TempDir dir;
+  TrainFile f;
+  f.humans = "{count: [2, 4], goal_mode: new_goal}";
+  const auto ranged = Load(WriteTrainFile(dir, f));
+  ASSERT_TRUE(ranged.spec) << ranged.errors[0].Format();
+  EXPECT_EQ(ranged.spec->row.humans.count, 2);
+  EXPECT_EQ(ranged.spec->row.humans.count_max, 4);
+  EXPECT_EQ(ranged.spec->row.humans.goal_mode, HumanGoalMode::kNewGoal);
+  EXPECT_NE(ranged.spec->canonical.find("\nhumans:2-4,goal_mode=new_goal,orca{"), std::string::npos)
+      << ranged.spec->canonical;
+
+  f.humans = "{count: 3}";
+  const auto plain = Load(WriteTrainFile(dir, f));
+  ASSERT_TRUE(plain.spec) << plain.errors[0].Format();
+  EXPECT_NE(plain.spec->canonical.find("\nhumans:3-3,orca{"), std::string::npos) << plain.spec->canonical;
+  f.humans = "{count: 3, goal_mode: stay}";
+  const auto stay = Load(WriteTrainFile(dir, f));
+  ASSERT_TRUE(stay.spec) << stay.errors[0].Format();
+  EXPECT_EQ(stay.spec->ConfigHash(), plain.spec->ConfigHash());
+
+  f.humans = "{count: [1, 2, 3]}";
+  const auto bad = Load(WriteTrainFile(dir, f));
+  ASSERT_FALSE(bad.spec);
+  EXPECT_NE(bad.errors[0].Format().find("train.yaml:7:17: humans.count: a range is a list of two counts [min, max]"),
+            std::string::npos) << bad.errors[0].Format();
+}
+
+// Every committed model was trained from its training file as it is now (or that file with
+// `--seed N`, for NAME_seedN): the training file's config hash is the one in summary.json, so a
+// change to the reader or a training file that altered the configuration would be seen here.
+TEST(TrainSpecTest, CommittedModelsMatchTheirTrainingFiles) {
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SourceDir() / "results" / "models")) {
+    const auto summary = entry.path() / "summary.json";
+    if (!std::filesystem::exists(summary)) continue;
+    std::string name = entry.path().filename().string();
+    const auto seed_at = name.rfind("_seed");
+    const bool reseeded = seed_at != std::string::npos;
+    if (reseeded) name = name.substr(0, seed_at);
+    const auto file = SourceDir() / "suites" / "train" / (name + ".yaml");
+    if (!std::filesystem::exists(file)) continue;
+    SCOPED_TRACE(entry.path().string());
+    PluginRegistry registry;
+    auto r = training::LoadTrainSpec(file, registry);
+    ASSERT_TRUE(r.spec) << r.errors[0].Format();
+    if (reseeded) training::OverrideSeed(*r.spec, static_cast<std::uint64_t>(ReadManifestInteger(summary, "seed")));
+    EXPECT_EQ(ReadManifestField(summary, "config_hash"), r.spec->ConfigHash()) << r.spec->canonical;
+    ++checked;
+  }
+  EXPECT_GE(checked, 20);
 }
 
 TEST(TrainSpecTest, ShippedTrainingFilesAreValid) {

@@ -68,7 +68,6 @@ TEST_F(OrcaPluginTest, HumanAvoidsAnotherHumanComingAtIt) {
   obs.self = agents[0];
   obs.agents = &index;
   obs.self_index = 0;
-  obs.map = &map;
   const Vec2 v = policy->Decide(obs).velocity;
   EXPECT_TRUE(v.allFinite());
   EXPECT_LE(v.norm(), 1.0 + 1e-12);
@@ -100,7 +99,6 @@ TEST_F(OrcaPluginTest, RobotSeesPeopleThroughItsPersonSensor) {
   Observation robot_obs;
   robot_obs.self = self;
   robot_obs.frame = frame;
-  robot_obs.map = &map;
   EXPECT_TRUE(robot->Decide(robot_obs).velocity.isApprox(Vec2(0, 1))) << "no sensor: straight";
 
   SensorReading reading;
@@ -118,7 +116,6 @@ TEST_F(OrcaPluginTest, RobotSeesPeopleThroughItsPersonSensor) {
   human_obs.self = self;
   human_obs.agents = &index;
   human_obs.self_index = 0;
-  human_obs.map = &map;
   const Vec2 human_v = human->Decide(human_obs).velocity;
   EXPECT_NEAR((robot_v - human_v).norm(), 0.0, 1e-9);
   EXPECT_GT((robot_v - Vec2(0, 1)).norm(), 0.05) << "the robot ignored the person";
@@ -169,7 +166,6 @@ TEST_F(OrcaPluginTest, CrowdSwapsSidesRoundAWall) {
       obs.self = agents[i];
       obs.agents = &index;
       obs.self_index = static_cast<int>(i);
-      obs.map = &map;
       next[i] = policies[i]->Decide(obs).velocity;
     }
     for (std::size_t i = 0; i < agents.size(); ++i) {

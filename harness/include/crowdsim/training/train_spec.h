@@ -1,5 +1,6 @@
-// A training file (suite-like YAML): the policy to train with its sensors, the world and
-// humans it trains among, and the imitation + RL settings (paper / CrowdNav defaults).
+// A training file: a suite row's spec (the policy to train with its sensors, the world and
+// humans it trains among; read by the suite's row reader, with its defaults) at the top level,
+// plus a `training:` block with the imitation + RL settings (paper / CrowdNav defaults).
 #pragma once
 
 #include <cstdint>
@@ -53,20 +54,18 @@ struct TrainingSettings {
   ExplorationRule exploration = ExplorationRule::kUniform;
 };
 
-/// A validated training file.
+/// A validated training file: a row spec (what trains, among what) plus a `training:` block.
 struct TrainSpec {
   std::string name;
   std::string description;
   std::filesystem::path file;
   std::uint64_t seed = 0;
   SimConfig sim;
-  PluginUse policy;               ///< the learner (cadrl, sarl)
-  std::vector<PluginUse> sensors;
-  PluginUse world;                ///< its train split
-  int humans_min = 5;             ///< humans per episode, drawn in [min, max]
-  int humans_max = 5;
-  PluginUse human_policy;
-  PluginUse teacher;              ///< imitation-learning robot (ORCA, safety_space 0.15)
+  /// Read by the suite's row reader: the learner (`row.policy`, e.g. cadrl or sarl) with its
+  /// sensors, the world (its train split) and the humans, drawn per episode in
+  /// [`row.humans.count`, `row.humans.count_max`].
+  RowSpec row;
+  PluginUse teacher;              ///< imitation-learning robot (`training.il_policy`)
   TrainingSettings training;
   /// Everything that decides the trained weights; its hash guards --resume.
   std::string canonical;

@@ -35,6 +35,7 @@ struct ValuePolicy::Impl {
   double momentum = 0.0;
 
   double gamma = 0.9;
+  double time_step = SimConfig{}.time_step;  ///< the episode's, s between decisions (Reset)
   Exploration exploration;
   Rng rng;
   double actions_v_pref = -1.0;
@@ -128,7 +129,10 @@ PolicyNeeds ValuePolicy::Needs() const {
   return needs;
 }
 
-void ValuePolicy::Reset(const EpisodeContext& ctx) { impl_->gamma = ctx.sim.gamma; }
+void ValuePolicy::Reset(const EpisodeContext& ctx) {
+  impl_->gamma = ctx.sim.gamma;
+  impl_->time_step = ctx.sim.time_step;
+}
 
 Action ValuePolicy::Decide(const Observation& obs) {
   Impl& m = *impl_;
@@ -162,7 +166,7 @@ Action ValuePolicy::Decide(const Observation& obs) {
     m.candidate_ptrs[k] = &m.candidates[k];
   }
   const std::vector<float> next = m.Evaluate(*m.model, m.candidate_ptrs);
-  const double discount = std::pow(m.gamma, obs.time_step * obs.self.v_pref);
+  const double discount = std::pow(m.gamma, m.time_step * obs.self.v_pref);
   m.action_values.resize(next.size());
   for (size_t k = 0; k < next.size(); ++k) {
     m.action_values[k] = static_cast<float>(m.outcomes[k].reward + discount * next[k]);

@@ -1,0 +1,70 @@
+#include "config_text.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <variant>
+
+#include "crowdsim/rng.h"
+
+namespace crowdsim::suite_internal {
+namespace fs = std::filesystem;
+
+std::string HashConfigText(const std::string& canonical) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : canonical) {
+    h ^= c;
+    h *= 0x100000001b3ULL;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(SplitMix64(h)));
+  return buf;
+}
+
+void CanonicalSim(const SimConfig& sim, std::ostream& os) {
+  os << "sim=";
+  for (const SimField& f : kSimFields) {
+    os << (&f == kSimFields ? "" : ",");
+    std::visit([&](auto member) { os << sim.*member; }, f.member);  // a bool as 0 or 1
+  }
+  os << "\n";
+}
+
+namespace {
+
+/// FNV-1a of a file's bytes, as 16 hex digits ("unreadable" when it cannot be read).
+std::string FileContentHash(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return "unreadable";
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  char buf[1 << 16];
+  while (in.read(buf, sizeof(buf)) || in.gcount() > 0) {
+    for (std::streamsize i = 0; i < in.gcount(); ++i) {
+      h ^= static_cast<unsigned char>(buf[i]);
+      h *= 0x100000001b3ULL;
+    }
+  }
+  char out[17];
+  std::snprintf(out, sizeof(out), "%016llx", static_cast<unsigned long long>(h));
+  return out;
+}
+
+}  // namespace
+
+void Canonical(const PluginUse& u, std::ostream& os) {
+  os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
+  for (const auto& [k, v] : u.params.values()) {
+    os << k << "=" << FormatParamValue(v);
+    // A parameter that names a file (weights, a world file) counts with its content: replacing
+    // the file at the same path is another configuration, never resumed as the old one.
+    if (const auto* text = std::get_if<std::string>(&v); text && !text->empty()) {
+      std::error_code ec;
+      const fs::path file = u.params.ResolvePath(*text);
+      if (fs::is_regular_file(file, ec)) os << "#content:" << FileContentHash(file);
+    }
+    os << ";";
+  }
+  os << "}";
+}
+
+}  // namespace crowdsim::suite_internal
