@@ -115,7 +115,8 @@ void DrawDisc(Drawing* d, const View& v, const AgentState& s, const std::string&
 // A red ring around what the robot hit: the human's disc or the obstacle's outline.
 void DrawCollisionPartner(Drawing* d, const View& v, const Scenario& sc, const EpisodeResult& r,
                           const EpisodeFrame& humans_at_end) {
-  if (r.collided_human >= 0 && static_cast<size_t>(r.collided_human) < humans_at_end.humans.size()) {
+  if (r.collided_human >= 0 &&
+      static_cast<size_t>(r.collided_human) < humans_at_end.humans.size()) {
     const AgentState& h = humans_at_end.humans[r.collided_human];
     d->AddCircle("collision-partner", v.ToCanvas(h.position), v.Length(h.radius) + 3.0,
                  Stroke(palette::kCollision, 2.6));
@@ -142,7 +143,8 @@ std::vector<KeyEntry> KeyEntries(const EpisodeFigure& fig, std::optional<size_t>
     std::snprintf(every, sizeof(every), "path, dot every %g s", opt.time_mark_interval);
     e.push_back({KeyMark::kTimeDot, every});
   }
-  e.push_back({KeyMark::kEndDisc, frame ? "agent now (radius to scale)" : "final position (radius to scale)"});
+  e.push_back({KeyMark::kEndDisc,
+               frame ? "agent now (radius to scale)" : "final position (radius to scale)"});
   if (sc.map && !sc.map->rectangles.empty()) e.push_back({KeyMark::kObstacle, "obstacle"});
   if (sc.map && sc.map->mask && sc.map->mask->width > 0) {
     e.push_back({KeyMark::kMask, "blocked in the plan (not collidable)"});
@@ -252,8 +254,7 @@ void DrawRobotPaths(Drawing* d, const View& v, const EpisodeFigure& fig,
 }
 
 // Discs where everybody ended (or is, in an animation frame); a collision ringed at its end.
-void DrawDiscs(Drawing* d, const View& v, const EpisodeFigure& fig,
-               std::optional<size_t> frame) {
+void DrawDiscs(Drawing* d, const View& v, const EpisodeFigure& fig, std::optional<size_t> frame) {
   const std::string disc = frame ? "agent" : "final";
   const std::vector<EpisodeFrame>& hframes = HumanFrames(fig);
   const EpisodeFrame& humans_now = hframes[LastFrame(hframes, frame)];

@@ -47,7 +47,6 @@ std::string Fixed(double v, int decimals) {
   return buf;
 }
 
-
 /// Tick spacing 1, 2 or 5 times a power of ten, at most 10 intervals over [0, max].
 double TickStep(double max) {
   for (double decade = 1;; decade *= 10) {
@@ -82,8 +81,9 @@ double EpisodeAxisEnd(const std::vector<RlEpisodeRow>& eps, const std::vector<Va
 
 // The title, the rate grid and ticks, the episode ticks, the frame and the axis labels.
 void DrawAxes(Drawing* d, const Plot& p, const std::string& title, size_t episodes) {
-  d->AddText("chart-title", Vec2(kLeft, 24), title + ": learning curve (" + std::to_string(episodes) +
-             " RL episodes)", 15, palette::kInk, TextAnchor::kStart, true);
+  d->AddText("chart-title", Vec2(kLeft, 24),
+             title + ": learning curve (" + std::to_string(episodes) + " RL episodes)", 15,
+             palette::kInk, TextAnchor::kStart, true);
   Style grid;
   grid.stroke = Color{221, 221, 221, 1.0};
   Style axis;
@@ -168,9 +168,9 @@ void DrawLegend(Drawing* d, const Plot& p, std::size_t window) {
   marker.stroke_width = 2;
   d->AddCircle("legend-marker", Vec2(lx + 11, kTop + 90), 4, marker);
   d->AddText("legend", Vec2(lx + 28, kTop + 94), "validation (greedy)", 12, palette::kInk);
-  const std::string notes[] = {"lines: rolling rates of the", "last " + std::to_string(window) +
-                               " RL episodes (exploring)", "points: validation episodes;",
-                               "at 0 the imitation weights"};
+  const std::string notes[] = {"lines: rolling rates of the",
+                               "last " + std::to_string(window) + " RL episodes (exploring)",
+                               "points: validation episodes;", "at 0 the imitation weights"};
   for (int i = 0; i < 4; ++i) {
     d->AddText("legend-note", Vec2(lx, kTop + 120 + 14 * i), notes[i], 10, palette::kMutedInk);
   }
@@ -186,8 +186,8 @@ std::vector<RlEpisodeRow> ParseRlEpisodes(const std::string& csv) {
   std::map<std::string, std::size_t> col;
   const auto header = SplitCsvLine(line);
   for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
-  const char* names[] = {"phase", "index", "epsilon", "outcome", "loss", "memory",
-                         "mem_imitation", "mem_success", "mem_collision", "mem_timeout"};
+  const char* names[] = {"phase",  "index",         "epsilon",     "outcome",       "loss",
+                         "memory", "mem_imitation", "mem_success", "mem_collision", "mem_timeout"};
   std::size_t need = 0;
   for (const char* n : names) {
     if (!col.count(n)) return out;
@@ -201,7 +201,8 @@ std::vector<RlEpisodeRow> ParseRlEpisodes(const std::string& csv) {
     e.index = std::atoi(f[col["index"]].c_str());
     e.epsilon = number(f[col["epsilon"]]);
     const std::string& o = f[col["outcome"]];
-    e.outcome = o == "success" ? kSuccessful : (o.rfind("collision", 0) == 0 ? kCollided : kTimedOut);
+    e.outcome =
+        o == "success" ? kSuccessful : (o.rfind("collision", 0) == 0 ? kCollided : kTimedOut);
     e.loss = number(f[col["loss"]]);
     e.memory = number(f[col["memory"]]);
     for (int k = 0; k < 4; ++k) e.sources[k] = number(f[col[names[6 + k]]]);
@@ -232,10 +233,12 @@ void WriteLearningCurve(const fs::path& folder, const std::string& title) {
   const fs::path episodes = folder / "training_episodes.csv";
   const fs::path validation = folder / "training_log.csv";
   if (!fs::exists(episodes) && !fs::exists(validation)) {
-    throw std::runtime_error("'" + folder.string() + "' holds neither training_episodes.csv nor "
+    throw std::runtime_error("'" + folder.string() +
+                             "' holds neither training_episodes.csv nor "
                              "training_log.csv: not a training folder");
   }
-  const Drawing d = LearningCurveDrawing(ReadTextFileIfExists(episodes), ReadTextFileIfExists(validation), title);
+  const Drawing d =
+      LearningCurveDrawing(ReadTextFileIfExists(episodes), ReadTextFileIfExists(validation), title);
   WriteFigure(d, folder / "learning_curve.svg");
   WriteFigure(d, folder / "learning_curve.png", 1.0);
 }

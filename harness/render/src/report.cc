@@ -54,7 +54,8 @@ void WriteHeader(std::ostream& html, const ReportInputs& in) {
 void WriteWarnings(std::ostream& html, const ReportInputs& in) {
   const EpisodesCsvRead& read = in.episodes;
   if (read.damaged > 0) {
-    html << "<p class=\"warn\">" << read.damaged << " damaged line(s) of episodes.csv were skipped (the first: "
+    html << "<p class=\"warn\">" << read.damaged
+         << " damaged line(s) of episodes.csv were skipped (the first: "
          << XmlEscape(read.first_damage) << "): the figures show the readable episodes only.</p>\n";
   }
   const std::string recorded_hash = ReadManifestField(in.manifest, "config_hash");

@@ -56,8 +56,9 @@ void WritePicture(std::ostream& thumbs, std::ostream& figures, const ReportInput
   const std::string recorded = EpisodeStatusName(pick.line->outcome.status);
   const bool differs = replay.result.status != pick.line->outcome.status;
   thumbs << " · episode " << pick.line->episode << "<a href=\"#" << anchor << "\"><img alt=\""
-         << XmlEscape(label) << " episode " << pick.line->episode << "\" src=\"data:image/png;base64,"
-         << Base64(PngBytes(drawing, options.thumbnail_scale)) << "\"></a>";
+         << XmlEscape(label) << " episode " << pick.line->episode
+         << "\" src=\"data:image/png;base64," << Base64(PngBytes(drawing, options.thumbnail_scale))
+         << "\"></a>";
   if (differs)
     thumbs << "<div class=\"warn\">replay: " << EpisodeStatusName(replay.result.status)
            << ", recorded: " << recorded << "</div>";

@@ -135,7 +135,8 @@ bool IsTrainingFolder(const fs::path& dir) {
 
 std::string BuildTrainingReport(const fs::path& dir) {
   if (!IsTrainingFolder(dir)) {
-    throw ReportError("'" + dir.string() + "' is not a training folder (no training_episodes.csv "
+    throw ReportError("'" + dir.string() +
+                      "' is not a training folder (no training_episodes.csv "
                       "or training_log.csv): give the --out of `crowdsim-bench train`");
   }
   std::string name = ReadManifestField(dir / "summary.json", "name");
