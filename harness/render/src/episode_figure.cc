@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "crowdsim/render/figure_key.h"
+#include "crowdsim/render/figure_map.h"
+#include "crowdsim/render/figure_sensors.h"
 #include "crowdsim/render/marks.h"
 #include "crowdsim/render/palette.h"
 #include "crowdsim/render/view.h"
@@ -54,23 +56,25 @@ Rect WorldExtent(const EpisodeFigure& fig) {
   return r.Inflated(0.2);
 }
 
-// A navigable mask as an overlay: blocked cells grey, navigable cells transparent.
-std::shared_ptr<const RgbaImage> MaskImage(const NavigableMask& m) {
-  auto img = std::make_shared<RgbaImage>();
-  img->width = m.width;
-  img->height = m.height;
-  img->pixels.assign(static_cast<size_t>(m.width) * m.height * 4, 0);
-  for (int row = 0; row < m.height; ++row) {
-    for (int col = 0; col < m.width; ++col) {
-      if (m.Navigable(row, col)) continue;
-      std::uint8_t* p = &img->pixels[(static_cast<size_t>(row) * m.width + col) * 4];
-      p[0] = palette::kBlocked.r;
-      p[1] = palette::kBlocked.g;
-      p[2] = palette::kBlocked.b;
-      p[3] = 255;
-    }
-  }
-  return img;
+// Whether an episode ended in a collision (with a human or an obstacle).
+bool Collided(const EpisodeResult& r) {
+  return r.status == EpisodeStatus::kCollisionHuman ||
+         r.status == EpisodeStatus::kCollisionObstacle;
+}
+
+// The frame drawn of a trajectory: `frame` clamped to its end, or its end in a full figure.
+size_t LastFrame(const std::vector<EpisodeFrame>& tr, std::optional<size_t> frame) {
+  return frame ? std::min(*frame, tr.size() - 1) : tr.size() - 1;
+}
+
+// The humans' frames, from one track (with invisible robots they are the same in every row).
+const std::vector<EpisodeFrame>& HumanFrames(const EpisodeFigure& fig) {
+  return fig.robots[std::min(fig.humans_from, fig.robots.size() - 1)].result->trajectory;
+}
+
+// Whether the sensor snapshot is drawn: full figures only.
+bool WithSensors(const EpisodeFigure& fig, std::optional<size_t> frame) {
+  return !frame && fig.sensors.has_value();
 }
 
 // One agent's path up to `last` with a dot (and its time) every `interval` seconds.
@@ -108,45 +112,19 @@ void DrawDisc(Drawing* d, const View& v, const AgentState& s, const std::string&
   }
 }
 
-void DrawSensors(Drawing* d, const View& v, const SensorSnapshot& s) {
-  const Vec2 origin = v.ToCanvas(s.robot.position);
-  for (const SensorReading& r : s.readings) {
-    for (size_t b = 0; b < r.ranges.size() && b < r.angles.size(); ++b) {
-      const double a = s.frame.heading + r.angles[b];
-      const Vec2 end = s.robot.position + r.ranges[b] * Vec2(std::cos(a), std::sin(a));
-      d->AddPolyline("beam", {origin, v.ToCanvas(end)},
-                     Stroke(palette::kBeam.WithAlpha(0.45), 0.9));
-      if (r.ranges[b] < r.max_range - 1e-9) {
-        d->AddCircle("hit", v.ToCanvas(end), 2.6, Filled(palette::kBeam));
-      }
-    }
-  }
-  for (const SensorReading& r : s.readings) {
-    for (const PersonObservation& p : r.people) {
-      const Vec2 world = s.robot.position + s.frame.VectorToWorld(p.position);
-      const Vec2 vel = s.frame.VectorToWorld(p.velocity);
-      const Vec2 c = v.ToCanvas(world);
-      d->AddCircle("person-reading", c, v.Length(p.radius) + 3.0,
-                   Stroke(palette::kPersonReading, 1.6, true));
-      d->AddPolyline("person-velocity", {c, v.ToCanvas(world + vel)},
-                     Stroke(palette::kPersonReading, 1.6));
-    }
-  }
-}
-
 // A red ring around what the robot hit: the human's disc or the obstacle's outline.
 void DrawCollisionPartner(Drawing* d, const View& v, const Scenario& sc, const EpisodeResult& r,
                           const EpisodeFrame& humans_at_end) {
-  if (r.collided_human >= 0 && static_cast<size_t>(r.collided_human) < humans_at_end.humans.size()) {
+  if (r.collided_human >= 0 &&
+      static_cast<size_t>(r.collided_human) < humans_at_end.humans.size()) {
     const AgentState& h = humans_at_end.humans[r.collided_human];
     d->AddCircle("collision-partner", v.ToCanvas(h.position), v.Length(h.radius) + 3.0,
                  Stroke(palette::kCollision, 2.6));
   }
   if (r.collided_rect >= 0 && sc.map &&
       static_cast<size_t>(r.collided_rect) < sc.map->rectangles.size()) {
-    const Rect& o = sc.map->rectangles[r.collided_rect];
-    d->AddRect("collision-partner", v.ToCanvas(Vec2(o.min.x(), o.max.y())),
-               v.ToCanvas(Vec2(o.max.x(), o.min.y())), Stroke(palette::kCollision, 2.6));
+    AddWorldRect(d, v, "collision-partner", sc.map->rectangles[r.collided_rect],
+                 Stroke(palette::kCollision, 2.6));
   }
 }
 
@@ -165,7 +143,8 @@ std::vector<KeyEntry> KeyEntries(const EpisodeFigure& fig, std::optional<size_t>
     std::snprintf(every, sizeof(every), "path, dot every %g s", opt.time_mark_interval);
     e.push_back({KeyMark::kTimeDot, every});
   }
-  e.push_back({KeyMark::kEndDisc, frame ? "agent now (radius to scale)" : "final position (radius to scale)"});
+  e.push_back({KeyMark::kEndDisc,
+               frame ? "agent now (radius to scale)" : "final position (radius to scale)"});
   if (sc.map && !sc.map->rectangles.empty()) e.push_back({KeyMark::kObstacle, "obstacle"});
   if (sc.map && sc.map->mask && sc.map->mask->width > 0) {
     e.push_back({KeyMark::kMask, "blocked in the plan (not collidable)"});
@@ -183,8 +162,7 @@ std::vector<KeyEntry> KeyEntries(const EpisodeFigure& fig, std::optional<size_t>
   // frames of an animation have one size.
   bool collided = false, partner = false;
   for (const RobotTrack& t : fig.robots) {
-    const bool c = t.result->status == EpisodeStatus::kCollisionHuman ||
-                   t.result->status == EpisodeStatus::kCollisionObstacle;
+    const bool c = Collided(*t.result);
     collided = collided || c;
     partner = partner || (c && (t.result->collided_human >= 0 || t.result->collided_rect >= 0));
   }
@@ -193,8 +171,8 @@ std::vector<KeyEntry> KeyEntries(const EpisodeFigure& fig, std::optional<size_t>
   return e;
 }
 
-// Shared by the full figure (frame = none) and the animation frames.
-Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const FigureOptions& opt) {
+// Throws std::invalid_argument unless the figure has a scenario and recorded robot tracks.
+void CheckFigure(const EpisodeFigure& fig) {
   if (fig.scenario == nullptr || fig.robots.empty()) {
     throw std::invalid_argument("an episode figure needs a scenario and at least one robot track");
   }
@@ -204,49 +182,37 @@ Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const Figur
                                   "' has no recorded trajectory (replay with recording on)");
     }
   }
-  const Scenario& sc = *fig.scenario;
-  const bool with_sensors = !frame && fig.sensors.has_value();
-  const int header_lines = static_cast<int>(fig.robots.size()) + (with_sensors || frame ? 1 : 0);
+}
+
+// Where things go: the world fitted below the header and above the key (when shown).
+struct Layout {
+  View view;
+  std::optional<FigureKey> key;
+};
+
+// Sizes the header (title, a line per robot, the sensor or clock line) and the key.
+Layout LayOut(const EpisodeFigure& fig, std::optional<size_t> frame, const FigureOptions& opt) {
+  const int header_lines =
+      static_cast<int>(fig.robots.size()) + (WithSensors(fig, frame) || frame ? 1 : 0);
   const double header = kTitleLine + kLegendLine * header_lines + 6.0;
   const Rect extent = WorldExtent(fig);
   // The key's height depends on the canvas width, which the footer does not change.
   const View fitted = View::Fit(extent, opt.max_side, kMargin, header);
   std::optional<FigureKey> key;
   if (opt.key) key.emplace(KeyEntries(fig, frame, opt), fitted.scale(), fitted.width(), kMargin);
-  const View v = View::Fit(extent, opt.max_side, kMargin, header, key ? key->height() : 0.0);
+  return {View::Fit(extent, opt.max_side, kMargin, header, key ? key->height() : 0.0),
+          std::move(key)};
+}
 
-  Drawing d;
-  d.width = std::round(v.width());
-  d.height = std::round(v.height());
-
-  // Map: mask under the rectangles, bounds, obstacles.
-  if (sc.map && sc.map->mask && sc.map->mask->width > 0 && sc.map->mask->height > 0) {
-    const NavigableMask& m = *sc.map->mask;
-    const Vec2 top_left = v.ToCanvas(Vec2(m.origin.x(), m.origin.y() + m.height * m.resolution));
-    const Vec2 bottom_right = v.ToCanvas(Vec2(m.origin.x() + m.width * m.resolution, m.origin.y()));
-    d.AddImage("mask", top_left, bottom_right, MaskImage(m));
-  }
-  if (sc.map && sc.map->bounds.Area() > 0.0) {
-    const Rect& b = sc.map->bounds;
-    d.AddRect("bounds", v.ToCanvas(Vec2(b.min.x(), b.max.y())),
-              v.ToCanvas(Vec2(b.max.x(), b.min.y())), Stroke(palette::kMutedInk, 1.0, true));
-  }
-  if (sc.map) {
-    for (const Rect& o : sc.map->rectangles) {
-      d.AddRect("obstacle", v.ToCanvas(Vec2(o.min.x(), o.max.y())),
-                v.ToCanvas(Vec2(o.max.x(), o.min.y())),
-                Filled(palette::kObstacleFill, palette::kObstacleEdge, 1.0));
-    }
-  }
-
-  // Humans, from one track (with invisible robots they are the same in every row).
-  const std::vector<EpisodeFrame>& hframes =
-      fig.robots[std::min(fig.humans_from, fig.robots.size() - 1)].result->trajectory;
-  const size_t hlast = frame ? std::min(*frame, hframes.size() - 1) : hframes.size() - 1;
-  const size_t humans = hframes[0].humans.size();
+// Every human's goals, start and path up to the frame drawn.
+void DrawHumanPaths(Drawing* d, const View& v, const EpisodeFigure& fig,
+                    std::optional<size_t> frame, const FigureOptions& opt) {
+  const Scenario& sc = *fig.scenario;
+  const std::vector<EpisodeFrame>& hframes = HumanFrames(fig);
+  const size_t hlast = LastFrame(hframes, frame);
   FigureOptions human_opt = opt;
   if (frame) human_opt.time_labels = false;
-  for (size_t i = 0; i < humans; ++i) {
+  for (size_t i = 0; i < hframes[0].humans.size(); ++i) {
     const Color c = palette::Human(static_cast<int>(i));
     std::vector<Vec2> pts;
     std::vector<double> times;
@@ -256,21 +222,25 @@ Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const Figur
     }
     if (i < sc.humans.size()) {
       for (const Vec2& g : sc.humans[i].goals) {
-        d.AddPolygon("goal human", Diamond(v.ToCanvas(g), 4.5), Stroke(c, 1.4));
+        d->AddPolygon("goal human", Diamond(v.ToCanvas(g), 4.5), Stroke(c, 1.4));
       }
     }
-    d.AddCircle("start human", v.ToCanvas(pts.front()), 3.0, Stroke(c, 1.4));
-    DrawTrack(&d, v, pts, times, "human", c, 1.6, human_opt, 8.5);
+    d->AddCircle("start human", v.ToCanvas(pts.front()), 3.0, Stroke(c, 1.4));
+    DrawTrack(d, v, pts, times, "human", c, 1.6, human_opt, 8.5);
   }
+}
 
-  // Robots, their shared start and goal.
-  d.AddPolygon("start robot", Square(v.ToCanvas(sc.robot_start), 5.0),
-               Filled(Color{255, 255, 255, 1.0}, palette::kInk, 1.6));
-  d.AddPolygon("goal robot", Star(v.ToCanvas(sc.robot_goal), 9.0),
-               Filled(Color{255, 215, 0, 1.0}, palette::kInk, 1.2));
+// The robots' shared start and goal, and each robot's path up to the frame drawn.
+void DrawRobotPaths(Drawing* d, const View& v, const EpisodeFigure& fig,
+                    std::optional<size_t> frame, const FigureOptions& opt) {
+  const Scenario& sc = *fig.scenario;
+  d->AddPolygon("start robot", Square(v.ToCanvas(sc.robot_start), 5.0),
+                Filled(Color{255, 255, 255, 1.0}, palette::kInk, 1.6));
+  d->AddPolygon("goal robot", Star(v.ToCanvas(sc.robot_goal), 9.0),
+                Filled(Color{255, 215, 0, 1.0}, palette::kInk, 1.2));
   for (const RobotTrack& t : fig.robots) {
     const auto& tr = t.result->trajectory;
-    const size_t last = frame ? std::min(*frame, tr.size() - 1) : tr.size() - 1;
+    const size_t last = LastFrame(tr, frame);
     std::vector<Vec2> pts;
     std::vector<double> times;
     for (size_t f = 0; f <= last; ++f) {
@@ -279,73 +249,77 @@ Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const Figur
     }
     FigureOptions robot_opt = opt;
     if (frame) robot_opt.time_labels = false;
-    DrawTrack(&d, v, pts, times, "robot", t.color, 2.6, robot_opt, 10.5);
+    DrawTrack(d, v, pts, times, "robot", t.color, 2.6, robot_opt, 10.5);
   }
+}
 
-  // Discs: where everybody ended (or is, in an animation frame).
+// Discs where everybody ended (or is, in an animation frame); a collision ringed at its end.
+void DrawDiscs(Drawing* d, const View& v, const EpisodeFigure& fig, std::optional<size_t> frame) {
   const std::string disc = frame ? "agent" : "final";
-  for (size_t i = 0; i < humans; ++i) {
-    DrawDisc(&d, v, hframes[hlast].humans[i], disc + " human", palette::Human(static_cast<int>(i)),
+  const std::vector<EpisodeFrame>& hframes = HumanFrames(fig);
+  const EpisodeFrame& humans_now = hframes[LastFrame(hframes, frame)];
+  for (size_t i = 0; i < hframes[0].humans.size(); ++i) {
+    DrawDisc(d, v, humans_now.humans[i], disc + " human", palette::Human(static_cast<int>(i)),
              std::to_string(i + 1));
   }
   for (const RobotTrack& t : fig.robots) {
     const auto& tr = t.result->trajectory;
-    const EpisodeFrame& f = tr[frame ? std::min(*frame, tr.size() - 1) : tr.size() - 1];
-    DrawDisc(&d, v, f.robot, disc + " robot", t.color, "R");
-    const bool collided = t.result->status == EpisodeStatus::kCollisionHuman ||
-                          t.result->status == EpisodeStatus::kCollisionObstacle;
-    if (collided && (!frame || *frame + 1 >= tr.size())) {
-      d.AddCircle("collision-mark", v.ToCanvas(f.robot.position), v.Length(f.robot.radius) + 5.0,
-                  Stroke(palette::kCollision, 2.2, true));
-      DrawCollisionPartner(&d, v, sc, *t.result, f);
+    const EpisodeFrame& f = tr[LastFrame(tr, frame)];
+    DrawDisc(d, v, f.robot, disc + " robot", t.color, "R");
+    if (Collided(*t.result) && (!frame || *frame + 1 >= tr.size())) {
+      d->AddCircle("collision-mark", v.ToCanvas(f.robot.position), v.Length(f.robot.radius) + 5.0,
+                   Stroke(palette::kCollision, 2.2, true));
+      DrawCollisionPartner(d, v, *fig.scenario, *t.result, f);
     }
   }
+}
 
-  if (with_sensors) {
-    const SensorSnapshot& s = *fig.sensors;
-    for (size_t i = 0; i < s.humans.size(); ++i) {
-      d.AddCircle("sensed human", v.ToCanvas(s.humans[i].position), v.Length(s.humans[i].radius),
-                  Filled(palette::Human(static_cast<int>(i)).WithAlpha(0.15),
-                         palette::Human(static_cast<int>(i)), 1.0));
-    }
-    d.AddCircle("sensed robot", v.ToCanvas(s.robot.position), v.Length(s.robot.radius),
-                Filled(fig.robots[0].color.WithAlpha(0.25), fig.robots[0].color, 1.4));
-    DrawSensors(&d, v, s);
-  }
+// The animation's clock: the longest track keeps it running after the other ended.
+double Clock(const EpisodeFigure& fig, size_t frame) {
+  double clock = 0.0;
+  for (const RobotTrack& t : fig.robots)
+    clock = std::max(clock, t.result->trajectory[LastFrame(t.result->trajectory, frame)].time);
+  return clock;
+}
 
-  // Header: title, one legend line per robot, then the sensor or clock line.
+// Header: title, one legend line per robot, then the sensor or clock line.
+void DrawHeader(Drawing* d, const EpisodeFigure& fig, std::optional<size_t> frame) {
   double y = kMargin + 14.0;
-  d.AddText("title", Vec2(kMargin, y), fig.title, 14.0, palette::kInk, TextAnchor::kStart, true);
+  d->AddText("title", Vec2(kMargin, y), fig.title, 14.0, palette::kInk, TextAnchor::kStart, true);
   y += kTitleLine - 2.0;
   for (const RobotTrack& t : fig.robots) {
-    d.AddPolyline("legend-swatch", {Vec2(kMargin, y - 4.0), Vec2(kMargin + 22.0, y - 4.0)},
-                  Stroke(t.color, 3.0));
-    d.AddText("legend", Vec2(kMargin + 30.0, y), t.label, 12.0, palette::kInk);
+    d->AddPolyline("legend-swatch", {Vec2(kMargin, y - 4.0), Vec2(kMargin + 22.0, y - 4.0)},
+                   Stroke(t.color, 3.0));
+    d->AddText("legend", Vec2(kMargin + 30.0, y), t.label, 12.0, palette::kInk);
     y += kLegendLine;
   }
-  if (with_sensors) {
+  if (WithSensors(fig, frame)) {
     const SensorSnapshot& s = *fig.sensors;
-    std::string what;
-    for (const SensorReading& r : s.readings) {
-      if (!what.empty()) what += ", ";
-      what += r.sensor;
-      if (!r.ranges.empty()) what += " (" + std::to_string(r.ranges.size()) + " beams)";
-      if (!r.people.empty() || r.ranges.empty())
-        what += " (" + std::to_string(r.people.size()) + " people)";
-    }
-    d.AddText("sensor-caption", Vec2(kMargin, y),
-              "sensors at step " + std::to_string(s.step) + ", t = " + Format("%.2f", s.time) +
-                  " s: " + what,
-              12.0, palette::kMutedInk);
+    d->AddText("sensor-caption", Vec2(kMargin, y),
+               "sensors at step " + std::to_string(s.step) + ", t = " + Format("%.2f", s.time) +
+                   " s: " + SensorList(s),
+               12.0, palette::kMutedInk);
   } else if (frame) {
-    double clock = 0.0;  // the longest track keeps the clock running after the other ended
-    for (const RobotTrack& t : fig.robots)
-      clock = std::max(
-          clock, t.result->trajectory[std::min(*frame, t.result->trajectory.size() - 1)].time);
-    d.AddText("clock", Vec2(kMargin, y), "t = " + Format("%.2f", clock) + " s", 12.0,
-              palette::kMutedInk);
+    d->AddText("clock", Vec2(kMargin, y), "t = " + Format("%.2f", Clock(fig, *frame)) + " s", 12.0,
+               palette::kMutedInk);
   }
-  if (key) key->Draw(&d, v.height() - kMargin - key->height() + 6.0);
+}
+
+// Shared by the full figure (frame = none) and the animation frames: the layers bottom to top.
+Drawing Build(const EpisodeFigure& fig, std::optional<size_t> frame, const FigureOptions& opt) {
+  CheckFigure(fig);
+  const Layout layout = LayOut(fig, frame, opt);
+  const View& v = layout.view;
+  Drawing d;
+  d.width = std::round(v.width());
+  d.height = std::round(v.height());
+  if (fig.scenario->map) DrawMap(&d, v, *fig.scenario->map);
+  DrawHumanPaths(&d, v, fig, frame, opt);
+  DrawRobotPaths(&d, v, fig, frame, opt);
+  DrawDiscs(&d, v, fig, frame);
+  if (WithSensors(fig, frame)) DrawSensorSnapshot(&d, v, *fig.sensors, fig.robots[0].color);
+  DrawHeader(&d, fig, frame);
+  if (layout.key) layout.key->Draw(&d, v.height() - kMargin - layout.key->height() + 6.0);
   return d;
 }
 

@@ -1,0 +1,35 @@
+// What the suite report reads: a `crowdsim-bench run` output folder (manifest.json, table.csv,
+// episodes.csv) and the suite it ran, loaded again with the run's overrides to replay episodes.
+#pragma once
+
+#include <filesystem>
+
+#include "crowdsim/plugin_registry.h"
+#include "crowdsim/render/report.h"
+#include "crowdsim/render/results_folder.h"
+#include "crowdsim/results.h"
+#include "crowdsim/suite.h"
+
+namespace crowdsim::render {
+
+/// Where table.csv keeps the columns the charts draw.
+struct TableColumns {
+  size_t label = 0, success = 0, collision = 0, timeout = 0, nav = 0, danger = 0;
+};
+
+/// A results folder as the report uses it.
+struct ReportInputs {
+  std::filesystem::path dir;         ///< the results folder
+  std::filesystem::path manifest;    ///< its manifest.json
+  std::filesystem::path suite_file;  ///< the suite replayed (--suite or the manifest's)
+  Suite suite;
+  CsvTable table;  ///< table.csv
+  TableColumns columns;
+  EpisodesCsvRead episodes;  ///< episodes.csv, damaged lines skipped
+};
+
+/// Reads the folder and loads its suite. Throws ReportError naming the file and the fix.
+ReportInputs ReadReportInputs(const std::filesystem::path& dir, PluginRegistry& registry,
+                              const ReportOptions& options);
+
+}  // namespace crowdsim::render

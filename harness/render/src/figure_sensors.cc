@@ -1,0 +1,74 @@
+#include "crowdsim/render/figure_sensors.h"
+
+#include <cmath>
+
+#include "crowdsim/render/palette.h"
+
+namespace crowdsim::render {
+namespace {
+
+// The humans' and the robot's discs at the snapshot's step.
+void DrawSensedAgents(Drawing* d, const View& v, const SensorSnapshot& s,
+                      const Color& robot_color) {
+  for (size_t i = 0; i < s.humans.size(); ++i) {
+    d->AddCircle("sensed human", v.ToCanvas(s.humans[i].position), v.Length(s.humans[i].radius),
+                 Filled(palette::Human(static_cast<int>(i)).WithAlpha(0.15),
+                        palette::Human(static_cast<int>(i)), 1.0));
+  }
+  d->AddCircle("sensed robot", v.ToCanvas(s.robot.position), v.Length(s.robot.radius),
+               Filled(robot_color.WithAlpha(0.25), robot_color, 1.4));
+}
+
+// Every lidar beam from the robot, with a dot where it hit something.
+void DrawBeams(Drawing* d, const View& v, const SensorSnapshot& s) {
+  const Vec2 origin = v.ToCanvas(s.robot.position);
+  for (const SensorReading& r : s.readings) {
+    for (size_t b = 0; b < r.ranges.size() && b < r.angles.size(); ++b) {
+      const double a = s.frame.heading + r.angles[b];
+      const Vec2 end = s.robot.position + r.ranges[b] * Vec2(std::cos(a), std::sin(a));
+      d->AddPolyline("beam", {origin, v.ToCanvas(end)},
+                     Stroke(palette::kBeam.WithAlpha(0.45), 0.9));
+      if (r.ranges[b] < r.max_range - 1e-9) {
+        d->AddCircle("hit", v.ToCanvas(end), 2.6, Filled(palette::kBeam));
+      }
+    }
+  }
+}
+
+// Every person detected: a dashed ring and its velocity over 1 s.
+void DrawPeople(Drawing* d, const View& v, const SensorSnapshot& s) {
+  for (const SensorReading& r : s.readings) {
+    for (const PersonObservation& p : r.people) {
+      const Vec2 world = s.robot.position + s.frame.VectorToWorld(p.position);
+      const Vec2 vel = s.frame.VectorToWorld(p.velocity);
+      const Vec2 c = v.ToCanvas(world);
+      d->AddCircle("person-reading", c, v.Length(p.radius) + 3.0,
+                   Stroke(palette::kPersonReading, 1.6, true));
+      d->AddPolyline("person-velocity", {c, v.ToCanvas(world + vel)},
+                     Stroke(palette::kPersonReading, 1.6));
+    }
+  }
+}
+
+}  // namespace
+
+void DrawSensorSnapshot(Drawing* d, const View& v, const SensorSnapshot& s,
+                        const Color& robot_color) {
+  DrawSensedAgents(d, v, s, robot_color);
+  DrawBeams(d, v, s);
+  DrawPeople(d, v, s);
+}
+
+std::string SensorList(const SensorSnapshot& s) {
+  std::string what;
+  for (const SensorReading& r : s.readings) {
+    if (!what.empty()) what += ", ";
+    what += r.sensor;
+    if (!r.ranges.empty()) what += " (" + std::to_string(r.ranges.size()) + " beams)";
+    if (!r.people.empty() || r.ranges.empty())
+      what += " (" + std::to_string(r.people.size()) + " people)";
+  }
+  return what;
+}
+
+}  // namespace crowdsim::render

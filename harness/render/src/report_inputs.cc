@@ -1,0 +1,97 @@
+#include "crowdsim/render/report_inputs.h"
+
+#include <stdexcept>
+
+namespace crowdsim::render {
+namespace fs = std::filesystem;
+namespace {
+
+// The folder exists and holds the three files `crowdsim-bench run` writes.
+void CheckResultsFolder(const fs::path& dir) {
+  if (!fs::is_directory(dir)) {
+    throw ReportError("results folder '" + dir.string() +
+                      "' does not exist (give the --out folder of `crowdsim-bench run`)");
+  }
+  for (const char* f : {"manifest.json", "table.csv", "episodes.csv"}) {
+    if (!fs::exists(dir / f)) {
+      throw ReportError("'" + dir.string() + "' has no " + f +
+                        ": give the folder `crowdsim-bench run` wrote (it holds manifest.json, "
+                        "table.csv, episodes.csv)");
+    }
+  }
+}
+
+// The suite to replay: --suite when given, else the one the manifest names.
+fs::path FindSuiteFile(const fs::path& dir, const fs::path& manifest,
+                       const ReportOptions& options) {
+  if (!options.suite_file.empty()) {
+    if (!fs::exists(options.suite_file))
+      throw ReportError("suite file '" + options.suite_file.string() + "' does not exist");
+    return options.suite_file;
+  }
+  const std::string recorded = ReadManifestField(manifest, "suite_file");
+  if (recorded.empty()) {
+    throw ReportError((dir / "manifest.json").string() +
+                      " names no suite_file: pass the suite with --suite FILE");
+  }
+  const fs::path p(recorded);
+  if (fs::exists(p)) return p;
+  throw ReportError(
+      "the suite file '" + recorded + "' named in " + (dir / "manifest.json").string() +
+      " was not found from " + fs::current_path().string() +
+      " (run the report from the folder the suite was run from, or pass --suite FILE)");
+}
+
+// The suite with the overrides the run was given (`--set`, recorded in the manifest).
+Suite LoadRecordedSuite(const fs::path& suite_file, const fs::path& manifest,
+                        PluginRegistry& registry) {
+  SuiteLoadResult loaded =
+      LoadSuite(suite_file, registry, ReadManifestStrings(manifest, "overrides"));
+  if (!loaded.suite) {
+    std::string msg = "cannot load the suite " + suite_file.string() + ":";
+    for (const SuiteError& e : loaded.errors) msg += "\n  " + e.Format();
+    throw ReportError(msg);
+  }
+  return std::move(*loaded.suite);
+}
+
+// table.csv and the columns the charts draw.
+void ReadTable(const fs::path& dir, CsvTable* table, TableColumns* columns) {
+  try {
+    *table = ReadCsv(dir / "table.csv");
+    columns->label = table->Column("label");
+    columns->success = table->Column("success rate");
+    columns->collision = table->Column("collision rate");
+    columns->timeout = table->Column("timeout rate");
+    columns->nav = table->Column("nav. time");
+    columns->danger = table->Column("danger freq.");
+  } catch (const std::runtime_error& e) {
+    throw ReportError((dir / "table.csv").string() + ": " + e.what());
+  }
+}
+
+// episodes.csv, its damaged lines skipped and counted.
+EpisodesCsvRead ReadEpisodes(const fs::path& dir) {
+  try {
+    return ReadEpisodesCsvChecked(dir / "episodes.csv");
+  } catch (const std::runtime_error& e) {
+    throw ReportError(e.what());
+  }
+}
+
+}  // namespace
+
+ReportInputs ReadReportInputs(const fs::path& dir, PluginRegistry& registry,
+                              const ReportOptions& options) {
+  CheckResultsFolder(dir);
+  ReportInputs in;
+  in.dir = dir;
+  in.manifest = dir / "manifest.json";
+  in.suite_file = FindSuiteFile(dir, in.manifest, options);
+  in.suite = LoadRecordedSuite(in.suite_file, in.manifest, registry);
+  ReadTable(dir, &in.table, &in.columns);
+  in.episodes = ReadEpisodes(dir);
+  return in;
+}
+
+}  // namespace crowdsim::render
