@@ -26,6 +26,14 @@ void ExpectBruteForceAnswer(const std::vector<AgentState>& agents, const AgentIn
   for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], brute[i].second);
 }
 
+/// n agents, agent i at place(i).
+template <typename Place>
+std::vector<AgentState> Crowd(int n, Place place) {
+  std::vector<AgentState> agents(n);
+  for (int i = 0; i < n; ++i) agents[i].position = place(i);
+  return agents;
+}
+
 TEST(AgentIndex, NearestMatchesBruteForce) {
   Rng rng(3);
   for (int trial = 0; trial < 50; ++trial) {
@@ -50,11 +58,10 @@ TEST(AgentIndex, NearestMatchesBruteForceInLargeCrowdsWithTies) {
   Rng rng(11);
   for (int trial = 0; trial < 12; ++trial) {
     const int n = 200 + static_cast<int>(rng.Below(800));
-    std::vector<AgentState> agents(n);
-    for (int i = 0; i < n; ++i) {
-      agents[i].position = trial % 2 == 0 ? Vec2(rng.Uniform(0, 60), rng.Uniform(0, 60))
-                                          : Vec2(static_cast<double>(i % 30), static_cast<double>(i / 30));
-    }
+    const auto agents = Crowd(n, [&](int i) {
+      return trial % 2 == 0 ? Vec2(rng.Uniform(0, 60), rng.Uniform(0, 60))
+                            : Vec2(static_cast<double>(i % 30), static_cast<double>(i / 30));
+    });
     AgentIndex index;
     index.Rebuild(agents);
     for (int q = 0; q < 40; ++q) {
@@ -75,11 +82,10 @@ TEST(AgentIndex, NearestMatchesBruteForceForManyNeighboursAndSharedPositions) {
   Rng rng(19);
   for (int trial = 0; trial < 8; ++trial) {
     const int n = 100 + static_cast<int>(rng.Below(400));
-    std::vector<AgentState> agents(n);
-    for (int i = 0; i < n; ++i) {
-      agents[i].position = trial % 2 == 0 ? Vec2(2.0 * (i % 12), 2.0 * ((i / 12) % 12))
-                                          : Vec2(std::floor(rng.Uniform(0, 8)), rng.Uniform(0, 40));
-    }
+    const auto agents = Crowd(n, [&](int i) {
+      return trial % 2 == 0 ? Vec2(2.0 * (i % 12), 2.0 * ((i / 12) % 12))
+                            : Vec2(std::floor(rng.Uniform(0, 8)), rng.Uniform(0, 40));
+    });
     AgentIndex index;
     index.Rebuild(agents);
     for (int q = 0; q < 30; ++q) {
