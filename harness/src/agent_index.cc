@@ -2,8 +2,55 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <vector>
 
 namespace crowdsim {
+
+namespace {
+
+struct Hit {
+  double d2;
+  int i;
+};
+
+// Nearest first, ties by index: a strict total order, so the k best are one exact set.
+inline bool Less(const Hit& a, const Hit& b) { return a.d2 < b.d2 || (a.d2 == b.d2 && a.i < b.i); }
+
+// The k best hits so far, kept sorted nearest first in caller-provided slots (k is small:
+// ORCA's 10 neighbours, where inserting into a short sorted array beats a heap).
+class KBest {
+ public:
+  KBest(Hit* slots, int k) : slots_(slots), k_(k) {}
+  /// True when no hit at `lower_d2` or farther can enter (the k best are all nearer).
+  bool Excludes(double lower_d2) const { return lower_d2 > bound_; }
+  void Offer(const Hit& h) {
+    if (n_ == k_) {
+      if (!Less(h, slots_[n_ - 1])) return;
+      --n_;
+    }
+    int j = n_++;
+    for (; j > 0 && Less(h, slots_[j - 1]); --j) slots_[j] = slots_[j - 1];
+    slots_[j] = h;
+    if (n_ == k_) bound_ = slots_[n_ - 1].d2;
+  }
+  void Write(std::vector<int>* out) const {
+    for (int k = 0; k < n_; ++k) out->push_back(slots_[k].i);
+  }
+
+ private:
+  Hit* slots_;
+  int k_;
+  int n_ = 0;
+  double bound_ = kInfinity;  // the k-th best distance once there are k hits
+};
+
+// Distance from x to the interval [lo, hi] (0 inside), less `margin`, never negative.
+inline double GapTo(double x, double lo, double hi, double margin) {
+  return std::max(0.0, std::max(lo - x, x - hi) - margin);
+}
+
+}  // namespace
 
 void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
   agents_ = agents;
@@ -12,6 +59,7 @@ void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
     nx_ = ny_ = 0;
     cell_start_.assign(1, 0);
     order_.clear();
+    position_.clear();
     return;
   }
   Vec2 lo = agents[0].position, hi = agents[0].position;
@@ -24,21 +72,34 @@ void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
   const double extent = std::max(hi.x() - lo.x(), hi.y() - lo.y());
   const double max_cells = std::max(1.0, 2.0 * std::sqrt(static_cast<double>(agents.size())));
   cell_ = std::max(cell_size, extent / max_cells);
+  // A position's cell comes from a rounded division: the cell bounds that prune the search
+  // are widened by far more than that rounding (a few ulps of the coordinates).
+  margin_ =
+      1e-9 *
+      (1.0 + std::max({std::abs(lo.x()), std::abs(lo.y()), std::abs(hi.x()), std::abs(hi.y())}));
   nx_ = static_cast<int>((hi.x() - lo.x()) / cell_) + 1;
   ny_ = static_cast<int>((hi.y() - lo.y()) / cell_) + 1;
   const int cells = nx_ * ny_;
   cell_start_.assign(cells + 1, 0);
-  std::vector<int> cell_of(agents.size());
+  cell_of_.resize(agents.size());
   for (size_t i = 0; i < agents.size(); ++i) {
     const int cx = static_cast<int>((agents[i].position.x() - lo.x()) / cell_);
     const int cy = static_cast<int>((agents[i].position.y() - lo.y()) / cell_);
-    cell_of[i] = cy * nx_ + cx;
-    ++cell_start_[cell_of[i] + 1];
+    cell_of_[i] = cy * nx_ + cx;
+    ++cell_start_[cell_of_[i] + 1];
   }
   for (int c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
-  order_.assign(agents.size(), 0);
-  std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (size_t i = 0; i < agents.size(); ++i) order_[fill[cell_of[i]]++] = static_cast<int>(i);
+  order_.resize(agents.size());
+  position_.resize(agents.size());
+  // Counting sort: each agent goes to the next free slot of its cell (cell_start_[c] runs
+  // to the end of cell c), then the starts move back one cell.
+  for (size_t i = 0; i < agents.size(); ++i) {
+    const int k = cell_start_[cell_of_[i]]++;
+    order_[k] = static_cast<int>(i);
+    position_[k] = agents[i].position;
+  }
+  for (int c = cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
+  cell_start_[0] = 0;
 }
 
 void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude,
@@ -46,77 +107,69 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
   out->clear();
   if (agents_.empty() || max_count <= 0) return;
   const double range_sq = range * range;
-  struct Hit {
-    double d2;
-    int i;
-  };
-  // Nearest first, ties by index: a strict total order, so the k best are one exact set.
-  const auto less = [](const Hit& a, const Hit& b) { return a.d2 < b.d2 || (a.d2 == b.d2 && a.i < b.i); };
-  thread_local std::vector<Hit> best;  // the ring search keeps it a max-heap (worst on top)
-  best.clear();
   const int x0 = std::max(0, static_cast<int>(std::floor((p.x() - range - origin_.x()) / cell_)));
-  const int x1 = std::min(nx_ - 1, static_cast<int>(std::floor((p.x() + range - origin_.x()) / cell_)));
+  const int x1 =
+      std::min(nx_ - 1, static_cast<int>(std::floor((p.x() + range - origin_.x()) / cell_)));
   const int y0 = std::max(0, static_cast<int>(std::floor((p.y() - range - origin_.y()) / cell_)));
-  const int y1 = std::min(ny_ - 1, static_cast<int>(std::floor((p.y() + range - origin_.y()) / cell_)));
+  const int y1 =
+      std::min(ny_ - 1, static_cast<int>(std::floor((p.y() + range - origin_.y()) / cell_)));
   if (x0 > x1 || y0 > y1) return;
-  if (static_cast<int>(agents_.size()) <= max_count + 1 || (x1 - x0 + 1) * (y1 - y0 + 1) <= 9) {
-    // Few agents or few cells (the paper's 5-human rooms): scan the box, sort what is in range.
-    for (int cy = y0; cy <= y1; ++cy) {
-      for (int c = cy * nx_ + x0; c <= cy * nx_ + x1; ++c) {
-        for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-          const int i = order_[k];
-          const double d2 = (agents_[i].position - p).squaredNorm();
-          if (i != exclude && d2 < range_sq) best.push_back({d2, i});
-        }
-      }
+
+  constexpr int kOnStack = 32;
+  Hit stack_slots[kOnStack];
+  std::vector<Hit> heap_slots(max_count > kOnStack ? max_count : 0);
+  KBest best(max_count > kOnStack ? heap_slots.data() : stack_slots, max_count);
+
+  // Agents of cells [xa, xb] of row cy: one contiguous run of the cell-sorted arrays, skipped
+  // when its nearest point is too far.
+  const auto visit_span = [&](int xa, int xb, int cy) {
+    const double gx =
+        GapTo(p.x(), origin_.x() + xa * cell_, origin_.x() + (xb + 1) * cell_, margin_);
+    const double gy =
+        GapTo(p.y(), origin_.y() + cy * cell_, origin_.y() + (cy + 1) * cell_, margin_);
+    const double lower_d2 = gx * gx + gy * gy;
+    if ((lower_d2 >= range_sq) | best.Excludes(lower_d2)) return;
+    const int end = cell_start_[cy * nx_ + xb + 1];
+    for (int k = cell_start_[cy * nx_ + xa]; k < end; ++k) {
+      const double d2 = (position_[k] - p).squaredNorm();
+      if (d2 >= range_sq) continue;
+      const int i = order_[k];
+      if (i != exclude) best.Offer({d2, i});
     }
-    const std::size_t keep = std::min(best.size(), static_cast<std::size_t>(max_count));
-    std::partial_sort(best.begin(), best.begin() + keep, best.end(), less);
-    for (std::size_t k = 0; k < keep; ++k) out->push_back(best[k].i);
-    return;
-  }
-  // The cell holding p (it may lie outside the grid), then rings of cells around it: ring r is
-  // at least (r - 1) cells from p, so once the heap is full and its worst hit is nearer than
-  // that, no farther ring can change the answer (RVO2's kd-tree stops the same way).
+  };
+  // The cell holding p (it may lie outside the grid), then rings of cells around it: ring r
+  // lies outside the block of rings < r, so once the k best are nearer than that block's
+  // sides, no farther ring can change the answer (RVO2's kd-tree stops the same way). A ring
+  // is its top and bottom rows (one run of agents each: cells are stored row by row) and the
+  // single cells of its sides between them.
   const int pcx = static_cast<int>(std::floor((p.x() - origin_.x()) / cell_));
   const int pcy = static_cast<int>(std::floor((p.y() - origin_.y()) / cell_));
   const int last_ring = std::max({pcx - x0, x1 - pcx, pcy - y0, y1 - pcy});
-  auto visit_cell = [&](int cx, int cy) {
-    const int c = cy * nx_ + cx;
-    for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-      const int i = order_[k];
-      if (i == exclude) continue;
-      const double d2 = (agents_[i].position - p).squaredNorm();
-      if (d2 >= range_sq) continue;
-      const Hit h{d2, i};
-      if (static_cast<int>(best.size()) < max_count) {
-        best.push_back(h);
-        std::push_heap(best.begin(), best.end(), less);
-      } else if (less(h, best.front())) {
-        std::pop_heap(best.begin(), best.end(), less);
-        best.back() = h;
-        std::push_heap(best.begin(), best.end(), less);
-      }
-    }
-  };
-  for (int r = std::max(0, std::max({x0 - pcx, pcx - x1, y0 - pcy, pcy - y1})); r <= last_ring; ++r) {
-    if (r >= 1 && static_cast<int>(best.size()) == max_count) {
-      const double gap = (r - 1) * cell_;
-      if (gap * gap > best.front().d2) break;
+  for (int r = std::max(0, std::max({x0 - pcx, pcx - x1, y0 - pcy, pcy - y1})); r <= last_ring;
+       ++r) {
+    if (r >= 1) {
+      const double inner_x0 = origin_.x() + (pcx - r + 1) * cell_,
+                   inner_x1 = origin_.x() + (pcx + r) * cell_;
+      const double inner_y0 = origin_.y() + (pcy - r + 1) * cell_,
+                   inner_y1 = origin_.y() + (pcy + r) * cell_;
+      const double gap =
+          std::min({p.x() - inner_x0, inner_x1 - p.x(), p.y() - inner_y0, inner_y1 - p.y()}) -
+          margin_;
+      if (gap > 0.0 && (gap * gap >= range_sq || best.Excludes(gap * gap))) break;
     }
     const int ya = std::max(y0, pcy - r), yb = std::min(y1, pcy + r);
     const int xa = std::max(x0, pcx - r), xb = std::min(x1, pcx + r);
+    if (xa > xb) continue;
     for (int cy = ya; cy <= yb; ++cy) {
       if (cy == pcy - r || cy == pcy + r) {
-        for (int cx = xa; cx <= xb; ++cx) visit_cell(cx, cy);  // the ring's top and bottom rows
+        visit_span(xa, xb, cy);  // the ring's top and bottom rows
       } else {
-        if (pcx - r >= x0) visit_cell(pcx - r, cy);  // its left and right columns
-        if (r > 0 && pcx + r <= x1) visit_cell(pcx + r, cy);
+        if (pcx - r >= x0) visit_span(pcx - r, pcx - r, cy);  // its left and right columns
+        if (r > 0 && pcx + r <= x1) visit_span(pcx + r, pcx + r, cy);
       }
     }
   }
-  std::sort_heap(best.begin(), best.end(), less);
-  for (const auto& h : best) out->push_back(h.i);
+  best.Write(out);
 }
 
 }  // namespace crowdsim

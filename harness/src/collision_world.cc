@@ -138,9 +138,12 @@ struct CollisionWorld::Impl {
   mutable std::mutex ray_mutex;
 };
 
-CollisionWorld::CollisionWorld(std::shared_ptr<const StaticMap> map)
-    : map_(std::move(map)), impl_(std::make_unique<Impl>()) {
+CollisionWorld::CollisionWorld(std::shared_ptr<const StaticMap> map) : map_(std::move(map)) {
   const auto& rects = map_->rectangles;
+  // Without rectangles there is nothing to cull: no Bullet world at all (its dispatcher and
+  // pools were most of an obstacle-free episode's set-up), and every query answers "free".
+  if (rects.empty()) return;
+  impl_ = std::make_unique<Impl>();
   impl_->shapes.reserve(rects.size());
   impl_->objects.reserve(rects.size());
   for (size_t i = 0; i < rects.size(); ++i) {
@@ -172,6 +175,7 @@ CollisionWorld::~CollisionWorld() = default;
 
 void CollisionWorld::QueryRects(const Rect& box, std::vector<int>* out) const {
   out->clear();
+  if (!impl_) return;
   impl_->Broadphase(box, out);
   const auto& rects = map_->rectangles;
   std::erase_if(*out, [&](int i) { return !Touches(rects[i], box); });
@@ -179,6 +183,7 @@ void CollisionWorld::QueryRects(const Rect& box, std::vector<int>* out) const {
 }
 
 bool CollisionWorld::DiscOverlaps(const Vec2& center, double radius) const {
+  if (!impl_) return false;
   std::vector<int>& ids = ThreadScratch().ids;
   ids.clear();
   impl_->Broadphase(Rect{center, center}.Inflated(radius), &ids);
@@ -188,6 +193,7 @@ bool CollisionWorld::DiscOverlaps(const Vec2& center, double radius) const {
 }
 
 SweepHit CollisionWorld::SweepDisc(const Vec2& a, const Vec2& b, double radius) const {
+  if (!impl_) return SweepHit{};
   std::vector<int>& ids = ThreadScratch().ids;
   ids.clear();
   // The swept AABB holds every rectangle the moving disc can reach, so the exact test below
@@ -207,6 +213,7 @@ SweepHit CollisionWorld::SweepDisc(const Vec2& a, const Vec2& b, double radius) 
 }
 
 double CollisionWorld::ClearanceAt(const Vec2& p, double search_radius) const {
+  if (!impl_) return kInfinity;
   std::vector<int>& ids = ThreadScratch().ids;
   ids.clear();
   impl_->Broadphase(Rect{p, p}.Inflated(search_radius), &ids);
@@ -223,7 +230,7 @@ void CollisionWorld::CastRays(const Vec2& origin, std::span<const double> world_
   s.ids.clear();
   s.rects.clear();
   s.discs.clear();
-  impl_->Broadphase(Rect{origin, origin}.Inflated(max_range), &s.ids);
+  if (impl_) impl_->Broadphase(Rect{origin, origin}.Inflated(max_range), &s.ids);
   const auto& rects = map_->rectangles;
   for (int i : s.ids) {
     const Rect& r = rects[i];
@@ -254,6 +261,10 @@ void CollisionWorld::CastRays(const Vec2& origin, std::span<const double> world_
 
 void CollisionWorld::CastRaysBullet(const Vec2& origin, std::span<const double> world_angles,
                                     double max_range, double* ranges) const {
+  if (!impl_) {
+    std::fill(ranges, ranges + world_angles.size(), max_range);
+    return;
+  }
   std::lock_guard<std::mutex> lock(impl_->ray_mutex);
   const btVector3 from(static_cast<btScalar>(origin.x()), static_cast<btScalar>(origin.y()), 0);
   for (size_t k = 0; k < world_angles.size(); ++k) {

@@ -191,55 +191,64 @@ void OrcaPolicy::UseMap(const StaticMap* map, double radius) {
   }
 }
 
-void OrcaPolicy::GatherNeighbours(const Observation& obs) {
-  neighbours_.clear();
+OrcaPolicy::Scratch& OrcaPolicy::ThreadScratch() {
+  thread_local Scratch scratch;
+  return scratch;
+}
+
+void OrcaPolicy::GatherNeighbours(const Observation& obs, Scratch* s) const {
+  std::vector<OrcaAgent>& neighbours = s->neighbours;
+  neighbours.clear();
   const double padding = radius_padding_ + safety_space_;
   if (obs.agents != nullptr) {
     // Human: ground truth from the harness's grid, nearest first.
     obs.agents->Nearest(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index,
-                        &neighbour_ids_);
+                        &s->neighbour_ids);
     const auto all = obs.agents->agents();
-    for (int id : neighbour_ids_) {
+    for (int id : s->neighbour_ids) {
       const AgentState& a = all[id];
-      neighbours_.push_back({a.position, a.velocity, a.radius + padding});
+      neighbours.push_back({a.position, a.velocity, a.radius + padding});
     }
     return;
   }
   // Robot: the people its person sensor reports, in the sensor frame.
   const SensorReading* reading = obs.Reading("person");
   if (reading == nullptr || max_neighbors_ <= 0) return;
-  seen_.clear();
+  std::vector<Scratch::Seen>& seen = s->seen;
+  seen.clear();
   const double range_sq = neighbor_dist_ * neighbor_dist_;
   for (const PersonObservation& person : reading->people) {
     const Vec2 position = obs.frame.origin + obs.frame.VectorToWorld(person.position);
     const double dist_sq = (position - obs.self.position).squaredNorm();
     if (dist_sq >= range_sq) continue;
-    seen_.push_back(
+    seen.push_back(
         {dist_sq, {position, obs.frame.VectorToWorld(person.velocity), person.radius + padding}});
   }
-  std::stable_sort(seen_.begin(), seen_.end(),
-                   [](const Seen& a, const Seen& b) { return a.dist_sq < b.dist_sq; });
-  if (static_cast<int>(seen_.size()) > max_neighbors_) seen_.resize(max_neighbors_);
-  for (const Seen& s : seen_) neighbours_.push_back(s.agent);
+  std::stable_sort(seen.begin(), seen.end(), [](const Scratch::Seen& a, const Scratch::Seen& b) {
+    return a.dist_sq < b.dist_sq;
+  });
+  if (static_cast<int>(seen.size()) > max_neighbors_) seen.resize(max_neighbors_);
+  for (const Scratch::Seen& one : seen) neighbours.push_back(one.agent);
 }
 
-GuidanceTarget OrcaPolicy::Target(const Observation& obs, double radius, double time_step) {
+GuidanceTarget OrcaPolicy::Target(const Observation& obs, double radius, double time_step,
+                                  Scratch* s) {
   const AgentState& self = obs.self;
   if (!guidance_enabled_) return {self.goal, true};
   // Jams happen in the narrow passages between rectangles; in the open plane ORCA alone is
   // CrowdNav's model and stays untouched. The robot (no ground truth) never yields.
   if (yield_enabled_ && roadmap_ != nullptr && obs.agents != nullptr &&
       yielding_.Observe(self.position)) {
-    yield_neighbours_.clear();
+    s->yield_neighbours.clear();
     const auto all = obs.agents->agents();
-    for (std::size_t k = 0; k < neighbour_ids_.size(); ++k) {
-      const AgentState& a = all[neighbour_ids_[k]];
-      yield_neighbours_.push_back({a.position, a.velocity, neighbours_[k].radius, a.v_pref,
-                                   YieldRank(a, neighbour_ids_[k])});
+    for (std::size_t k = 0; k < s->neighbour_ids.size(); ++k) {
+      const AgentState& a = all[s->neighbour_ids[k]];
+      s->yield_neighbours.push_back({a.position, a.velocity, s->neighbours[k].radius, a.v_pref,
+                                     YieldRank(a, s->neighbour_ids[k])});
     }
     Vec2 back;
     if (yielding_.Step(self.position, radius, YieldRank(self, obs.self_index), time_step,
-                       yield_neighbours_, &back)) {
+                       s->yield_neighbours, &back)) {
       return {back, false};
     }
     if (yielding_.finished()) guidance_.Restart();  // off the old path: plan from here
@@ -253,15 +262,17 @@ Action OrcaPolicy::Decide(const Observation& obs) {
   UseMap(ctx_map_, radius);
   const double time_step = ctx_time_step_;
 
-  GatherNeighbours(obs);
-  const Vec2 pref = PreferredVelocity(self.position, Target(obs, radius, time_step), self.v_pref);
+  Scratch& scratch = ThreadScratch();
+  GatherNeighbours(obs, &scratch);
+  const Vec2 pref =
+      PreferredVelocity(self.position, Target(obs, radius, time_step, &scratch), self.v_pref);
 
   OrcaParams params;
   params.time_horizon = time_horizon_;
   params.time_horizon_obst = time_horizon_obst_;
   params.max_speed = self.v_pref * max_speed_factor_;
   const OrcaAgent me{self.position, self.velocity, radius};
-  return Action{ComputeOrcaVelocity(me, neighbours_, obstacles_, params, pref, time_step)};
+  return Action{ComputeOrcaVelocity(me, scratch.neighbours, obstacles_, params, pref, time_step)};
 }
 
 }  // namespace crowdsim::orca

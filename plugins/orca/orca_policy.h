@@ -30,11 +30,25 @@ class OrcaPolicy final : public Policy {
  private:
   /// Rebuilds the obstacles and the roadmap when the map or the radius changed.
   void UseMap(const StaticMap* map, double radius);
-  /// Fills neighbours_ from the ground-truth agents (humans) or the person sensor (robot).
-  void GatherNeighbours(const Observation& obs);
+  /// What one decision gathers and drops: one per thread, not per policy, so that a crowd of
+  /// a thousand policies writes its neighbours into memory that is still in cache.
+  struct Scratch {
+    std::vector<OrcaAgent> neighbours;
+    std::vector<int> neighbour_ids;  ///< humans: the neighbours' indices in obs.agents
+    std::vector<YieldNeighbour> yield_neighbours;
+    struct Seen {
+      double dist_sq;
+      OrcaAgent agent;
+    };
+    std::vector<Seen> seen;
+  };
+  static Scratch& ThreadScratch();
+
+  /// Fills s->neighbours from the ground-truth agents (humans) or the person sensor (robot).
+  void GatherNeighbours(const Observation& obs, Scratch* s) const;
   /// Where to head this decision: the guidance's waypoint, or a point to back off to while
   /// giving way in a jam (humans among rectangles only).
-  GuidanceTarget Target(const Observation& obs, double radius, double time_step);
+  GuidanceTarget Target(const Observation& obs, double radius, double time_step, Scratch* s);
 
   // Settings.
   double neighbor_dist_;
@@ -58,14 +72,6 @@ class OrcaPolicy final : public Policy {
   std::shared_ptr<const Roadmap> roadmap_;  // null without guidance or rectangles
   Guidance guidance_;
   Yielding yielding_;
-  std::vector<YieldNeighbour> yield_neighbours_;
-  std::vector<OrcaAgent> neighbours_;
-  std::vector<int> neighbour_ids_;
-  struct Seen {
-    double dist_sq;
-    OrcaAgent agent;
-  };
-  std::vector<Seen> seen_;
 };
 
 }  // namespace crowdsim::orca

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/rng.h"
@@ -22,6 +24,14 @@ void ExpectBruteForceAnswer(const std::vector<AgentState>& agents, const AgentIn
   index.Nearest(p, range, k, exclude, &got);
   ASSERT_EQ(got.size(), brute.size());
   for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], brute[i].second);
+}
+
+/// n agents, agent i at place(i).
+template <typename Place>
+std::vector<AgentState> Crowd(int n, Place place) {
+  std::vector<AgentState> agents(n);
+  for (int i = 0; i < n; ++i) agents[i].position = place(i);
+  return agents;
 }
 
 TEST(AgentIndex, NearestMatchesBruteForce) {
@@ -48,11 +58,10 @@ TEST(AgentIndex, NearestMatchesBruteForceInLargeCrowdsWithTies) {
   Rng rng(11);
   for (int trial = 0; trial < 12; ++trial) {
     const int n = 200 + static_cast<int>(rng.Below(800));
-    std::vector<AgentState> agents(n);
-    for (int i = 0; i < n; ++i) {
-      agents[i].position = trial % 2 == 0 ? Vec2(rng.Uniform(0, 60), rng.Uniform(0, 60))
-                                          : Vec2(static_cast<double>(i % 30), static_cast<double>(i / 30));
-    }
+    const auto agents = Crowd(n, [&](int i) {
+      return trial % 2 == 0 ? Vec2(rng.Uniform(0, 60), rng.Uniform(0, 60))
+                            : Vec2(static_cast<double>(i % 30), static_cast<double>(i / 30));
+    });
     AgentIndex index;
     index.Rebuild(agents);
     for (int q = 0; q < 40; ++q) {
@@ -61,6 +70,30 @@ TEST(AgentIndex, NearestMatchesBruteForceInLargeCrowdsWithTies) {
       const double range = rng.Uniform(0.5, 25);
       const int k = 1 + static_cast<int>(rng.Below(20));
       const int exclude = static_cast<int>(rng.Below(n));
+      SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
+      ExpectBruteForceAnswer(agents, index, p, range, k, exclude);
+    }
+  }
+}
+
+// More neighbours than the query keeps on the stack (32), agents sharing a position, and
+// agents and queries exactly on cell sides (a 2 m lattice: the grid's cells are 2 m).
+TEST(AgentIndex, NearestMatchesBruteForceForManyNeighboursAndSharedPositions) {
+  Rng rng(19);
+  for (int trial = 0; trial < 8; ++trial) {
+    const int n = 100 + static_cast<int>(rng.Below(400));
+    const auto agents = Crowd(n, [&](int i) {
+      return trial % 2 == 0 ? Vec2(2.0 * (i % 12), 2.0 * ((i / 12) % 12))
+                            : Vec2(std::floor(rng.Uniform(0, 8)), rng.Uniform(0, 40));
+    });
+    AgentIndex index;
+    index.Rebuild(agents);
+    for (int q = 0; q < 30; ++q) {
+      const Vec2 p = q % 3 == 0 ? Vec2(2.0 * static_cast<double>(rng.Below(14)) - 2.0, 1.0 + 2.0 * static_cast<double>(rng.Below(12)))
+                                : agents[rng.Below(n)].position;
+      const double range = q % 5 == 0 ? 2.0 * static_cast<double>(1 + rng.Below(6)) : rng.Uniform(0.5, 30);
+      const int k = 1 + static_cast<int>(rng.Below(100));
+      const int exclude = q % 7 == 0 ? -1 : static_cast<int>(rng.Below(n));
       SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
       ExpectBruteForceAnswer(agents, index, p, range, k, exclude);
     }

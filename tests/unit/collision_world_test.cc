@@ -142,6 +142,15 @@ TEST(CollisionWorld, EmptyMap) {
   world.CastRays(Vec2(0, 0), angles, 3.0, {}, ranges);
   EXPECT_EQ(ranges[0], 3.0);
   EXPECT_EQ(ranges[1], 3.0);
+  // No Bullet world is built for an empty map: every query still answers, discs included.
+  EXPECT_EQ(world.ClearanceAt(Vec2(0, 0), 5.0), kInfinity);
+  const Circle disc{Vec2(2.0, 0.0), 0.5};
+  world.CastRays(Vec2(0, 0), angles, 3.0, std::span<const Circle>(&disc, 1), ranges);
+  EXPECT_DOUBLE_EQ(ranges[0], 1.5);
+  EXPECT_EQ(ranges[1], 3.0);
+  world.CastRaysBullet(Vec2(0, 0), angles, 3.0, ranges);
+  EXPECT_EQ(ranges[0], 3.0);
+  EXPECT_EQ(ranges[1], 3.0);
 }
 
 // Const queries from several threads on one world give the single-threaded answers.

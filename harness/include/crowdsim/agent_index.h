@@ -25,10 +25,13 @@ class AgentIndex {
  private:
   std::span<const AgentState> agents_;
   double cell_ = 2.0;
+  double margin_ = 0.0;  // slack on cell bounds for rounding in the cell of a position
   Vec2 origin_ = Vec2::Zero();
   int nx_ = 0, ny_ = 0;
   std::vector<int> cell_start_;  // CSR layout: agents of cell c are order_[start[c]..start[c+1])
   std::vector<int> order_;
+  std::vector<Vec2> position_;   // position_[k] = agents_[order_[k]].position: cells contiguous
+  std::vector<int> cell_of_;     // Rebuild's scratch
 };
 
 }  // namespace crowdsim

@@ -52,7 +52,7 @@ class CollisionWorld {
  private:
   struct Impl;
   std::shared_ptr<const StaticMap> map_;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_;  // null when the map has no rectangles
 };
 
 }  // namespace crowdsim

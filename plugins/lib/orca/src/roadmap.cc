@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <list>
 #include <mutex>
 #include <queue>
@@ -17,7 +18,11 @@ constexpr double kClearanceSlack = 1e-9;
 }  // namespace
 
 Roadmap::Roadmap(std::span<const Rect> rects, const Rect& bounds, double clearance, double margin)
-    : rects_(rects.begin(), rects.end()), bounds_(bounds), clearance_(clearance), margin_(margin) {
+    : rects_(rects.begin(), rects.end()),
+      index_(rects_),
+      bounds_(bounds),
+      clearance_(clearance),
+      margin_(margin) {
   const bool bounded = bounds.Area() > 0.0;
   for (const Rect& r : rects_) {
     const Rect grown = r.Inflated(clearance + margin);
@@ -27,7 +32,7 @@ Roadmap::Roadmap(std::span<const Rect> rects, const Rect& bounds, double clearan
       if (bounded && !bounds.Contains(c)) continue;
       // Corners that fall next to another rectangle (touching or close rectangles) are
       // not places a disc can stand on.
-      if (DistanceToRects(rects_, c) < clearance - kClearanceSlack) continue;
+      if (CappedClearance(c) < clearance - kClearanceSlack) continue;
       nodes_.push_back(c);
     }
   }
@@ -50,10 +55,18 @@ Roadmap::Roadmap(std::span<const Rect> rects, const Rect& bounds, double clearan
   for (const auto& list : adjacency) edges_.insert(edges_.end(), list.begin(), list.end());
 }
 
-double Roadmap::PointClearance(const Vec2& p) const { return DistanceToRects(rects_, p); }
+double Roadmap::CappedClearance(const Vec2& p) const {
+  thread_local std::vector<int> near;
+  // Padded well beyond rounding: a rectangle outside the box is farther than clearance_.
+  const double pad = 1e-9 * (1.0 + std::abs(p.x()) + std::abs(p.y()) + clearance_);
+  index_.Query(Rect{p, p}.Inflated(clearance_ + pad), &near);
+  double best_sq = kInfinity;
+  for (int i : near) best_sq = std::min(best_sq, RectDistanceSq(rects_[i], p));
+  return std::min(clearance_, std::sqrt(best_sq));
+}
 
 bool Roadmap::Visible(const Vec2& a, const Vec2& b) const {
-  const double c = std::min({clearance_, PointClearance(a), PointClearance(b)});
+  const double c = std::min({clearance_, CappedClearance(a), CappedClearance(b)});
   return SegmentClear(rects_, a, b, std::max(0.0, c - kClearanceSlack));
 }
 
@@ -64,16 +77,15 @@ std::vector<Vec2> Roadmap::ShortestPath(const Vec2& start, const Vec2& goal) con
   const int kGoal = n + 1;
   // The start and goal join the graph through the nodes they see; the clearance asked of
   // those segments is capped by their own (an agent may stand closer to a wall than a node).
-  const double c_start = std::min(clearance_, PointClearance(start));
-  const double c_goal = std::min(clearance_, PointClearance(goal));
+  const double c_start = CappedClearance(start);
+  const double c_goal = CappedClearance(goal);
   std::vector<char> sees_goal(n, 0);
   std::vector<char> seen_from_start(n, 0);
   bool any_goal = false;
   for (int i = 0; i < n; ++i) {
     sees_goal[i] = SegmentClear(rects_, nodes_[i], goal, std::max(0.0, c_goal - kClearanceSlack));
     any_goal = any_goal || sees_goal[i];
-    seen_from_start[i] =
-        SegmentClear(rects_, start, nodes_[i], std::max(0.0, c_start - kClearanceSlack));
+    seen_from_start[i] = SegmentClear(rects_, start, nodes_[i], std::max(0.0, c_start - kClearanceSlack));
   }
   if (!any_goal) return {};
 

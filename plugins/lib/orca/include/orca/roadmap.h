@@ -8,6 +8,7 @@
 
 #include "crowdsim/geometry.h"
 #include "crowdsim/static_map.h"
+#include "orca/rect_index.h"
 
 namespace crowdsim::orca {
 
@@ -43,9 +44,12 @@ class Roadmap {
     int to = 0;
     double length = 0.0;
   };
-  double PointClearance(const Vec2& p) const;
+  /// min(clearance_, distance from p to the nearest rectangle): only rectangles within
+  /// clearance_ can lower it, so only those are looked at.
+  double CappedClearance(const Vec2& p) const;
 
   std::vector<Rect> rects_;
+  RectIndex index_;  // over rects_, for the clearance of points (small queries)
   Rect bounds_;
   double clearance_ = 0.0;
   double margin_ = 0.0;
