@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ccache pkg-config
+  build-essential cmake ccache pkg-config clang-format-14
   libeigen3-dev libbullet-dev libyaml-cpp-dev nlohmann-json3-dev
   libboost-dev libboost-filesystem-dev libboost-system-dev
   libboost-serialization-dev libboost-program-options-dev

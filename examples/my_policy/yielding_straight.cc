@@ -17,9 +17,19 @@ using crowdsim::Vec2;
 
 ParamSchema Schema() {
   return {
-      {"slow_distance", ParamType::kDouble, 1.5, 0.0, 10.0, {},
+      {"slow_distance",
+       ParamType::kDouble,
+       1.5,
+       0.0,
+       10.0,
+       {},
        "m; a person ahead closer than this slows the robot down"},
-      {"min_speed_factor", ParamType::kDouble, 0.2, 0.0, 1.0, {},
+      {"min_speed_factor",
+       ParamType::kDouble,
+       0.2,
+       0.0,
+       1.0,
+       {},
        "the slowest speed, as a fraction of v_pref"},
   };
 }
@@ -52,7 +62,8 @@ class YieldingStraight final : public crowdsim::Policy {
         nearest_ahead = std::min(nearest_ahead, std::max(0.0, gap));
       }
     }
-    const double factor = std::max(min_speed_factor_, nearest_ahead / std::max(slow_distance_, 1e-9));
+    const double factor =
+        std::max(min_speed_factor_, nearest_ahead / std::max(slow_distance_, 1e-9));
     double speed = factor * obs.self.v_pref;
     if (time_step_ > 0.0) speed = std::min(speed, dist / time_step_);  // stop on the goal
     return Action{to_goal / dist * speed};
@@ -64,8 +75,9 @@ class YieldingStraight final : public crowdsim::Policy {
   double time_step_ = crowdsim::SimConfig{}.time_step;
 };
 
-extern "C++" const crowdsim::PluginDescriptor kDescriptor = crowdsim::PolicyPlugin<YieldingStraight>(
-    "yielding_straight", "example: straight to the goal, slowing for people ahead", &Schema);
+extern "C++" const crowdsim::PluginDescriptor kDescriptor =
+    crowdsim::PolicyPlugin<YieldingStraight>(
+        "yielding_straight", "example: straight to the goal, slowing for people ahead", &Schema);
 
 }  // namespace my_policy
 

@@ -21,7 +21,8 @@ struct Command {
 
 const std::vector<Command>& Commands() {
   static const std::vector<Command> commands = {
-    {"run", crowdsim::cli::RunCommand, R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet] [--shard K/N]
+      {"run", crowdsim::cli::RunCommand,
+       R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet] [--shard K/N]
                  [--set KEY.PATH=VALUE]...
       runs a suite; writes DIR/table.md, table.csv, episodes.csv, manifest.json
       (DIR defaults to runs/<suite name>/; the committed reference outputs under results/ are
@@ -33,18 +34,21 @@ const std::vector<Command>& Commands() {
       not the harness's own or episode_timeout_s is set), so a crash or a hang past
       episode_timeout_s costs one episode (policy_crash / policy_timeout), not the run
 )"},
-    {"merge", crowdsim::cli::MergeCommand, R"(  crowdsim-bench merge SHARD_DIR... --out DIR [--suite SUITE.yaml] [--allow-mixed-commits]
+      {"merge", crowdsim::cli::MergeCommand,
+       R"(  crowdsim-bench merge SHARD_DIR... --out DIR [--suite SUITE.yaml] [--allow-mixed-commits]
       joins the output folders of `run --shard K/N` into the tables of a single run, after
       checking that they are one configuration and hold every episode exactly once, made by
       one commit (git_commit of their manifest.json); --allow-mixed-commits joins shards of
       different commits anyway (manifest.json records each shard's commit)
 )"},
-    {"validate", crowdsim::cli::ValidateCommand, R"(  crowdsim-bench validate FILE.yaml... [--set KEY.PATH=VALUE]...
+      {"validate", crowdsim::cli::ValidateCommand,
+       R"(  crowdsim-bench validate FILE.yaml... [--set KEY.PATH=VALUE]...
       checks suites (and training files) without running them; reports every error with
       file:line:col, then builds every row as `run` does (weights and world files read, the
       sensors its policy needs, episode 0's scenario made and checked), each error naming the row
 )"},
-    {"train", crowdsim::cli::TrainCommand, R"(  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet] [--set KEY.PATH=VALUE]...
+      {"train", crowdsim::cli::TrainCommand,
+       R"(  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet] [--set KEY.PATH=VALUE]...
       trains a learned policy (cadrl, sarl): imitation of ORCA, then RL; writes
       DIR/weights.pt, best.pt, il.pt, training_log.csv (validation), training_episodes.csv
       (every episode), learning_curve.svg/.png, summary.json (DIR defaults to
@@ -52,26 +56,30 @@ const std::vector<Command>& Commands() {
       every 500 episodes and on Ctrl-C; --resume continues exactly, and goes on to a larger
       training.rl_episodes (e.g. --set training.rl_episodes=10000)
 )"},
-    {"train-all", crowdsim::cli::TrainAllCommand, R"(  crowdsim-bench train-all TRAIN.yaml[@SEED]... [--quiet] [--set KEY.PATH=VALUE]...
+      {"train-all", crowdsim::cli::TrainAllCommand,
+       R"(  crowdsim-bench train-all TRAIN.yaml[@SEED]... [--quiet] [--set KEY.PATH=VALUE]...
       a training campaign: each file (FILE@N: with seed N) as `train` runs it, resuming one
       with a checkpoint and skipping one finished with the same configuration; started by
       mpirun or srun, rank r of R takes files r, r+R, ... (one training per rank); alone, it
       trains them one after another (scripts/train_all.sh -j N runs N at a time on one machine)
 )"},
-    // A tool registered as a command (tools/floorplan): its entry point and usage are its own.
-    {"floorplan", crowdsim::floorplan::FloorplanCommand, crowdsim::floorplan::kFloorplanUsage},
-    {"render", crowdsim::cli::RenderCommand, R"(  crowdsim-bench render SUITE.yaml --row R --episode K [--compare R2] [--sensors-at STEP]
+      // A tool registered as a command (tools/floorplan): its entry point and usage are its own.
+      {"floorplan", crowdsim::floorplan::FloorplanCommand, crowdsim::floorplan::kFloorplanUsage},
+      {"render", crowdsim::cli::RenderCommand,
+       R"(  crowdsim-bench render SUITE.yaml --row R --episode K [--compare R2] [--sensors-at STEP]
                  [--animate] [--speed X] [--scale S] [--set KEY.PATH=VALUE]... --out FILE.{svg,png,pdf,gif,mp4}
       draws one episode (rows 1.. as in the table or by label, episodes 0..): trajectories,
       time marks, outcome; --compare adds a second row's robot; --sensors-at draws the lidar
       and person readings at a step; --animate writes a .gif (or .mp4) at --speed x real time
 )"},
-    {"report", crowdsim::cli::ReportCommand, R"(  crowdsim-bench report RESULTS_DIR --out report.html [--suite SUITE.yaml]
+      {"report", crowdsim::cli::ReportCommand,
+       R"(  crowdsim-bench report RESULTS_DIR --out report.html [--suite SUITE.yaml]
       one self-contained HTML page of a run: table, charts, first success/collision/timeout;
       of a training folder (train --out): learning curve, validations, memory composition
       (--out FILE.svg/.png/.pdf: the learning curve alone)
 )"},
-    {"list-plugins", crowdsim::cli::ListPluginsCommand, R"(  crowdsim-bench list-plugins [PLUGIN.so...]
+      {"list-plugins", crowdsim::cli::ListPluginsCommand,
+       R"(  crowdsim-bench list-plugins [PLUGIN.so...]
       lists every plugin found, with its kind, description and parameters
 )"},
   };
@@ -132,7 +140,8 @@ void PrintBashCompletion() {
       const std::string opt = u.substr(p, e - p);
       if (opt.size() > 2 && opts.find(opt + " ") == std::string::npos) opts += opt + " ";
     }
-    std::cout << "    " << c.name << ") COMPREPLY=($(compgen -W \"" << opts << "--help\" -- \"$cur\") "
+    std::cout << "    " << c.name << ") COMPREPLY=($(compgen -W \"" << opts
+              << "--help\" -- \"$cur\") "
               << "$(compgen -f -- \"$cur\"));;\n";
   }
   std::cout << "  esac\n}\ncomplete -o filenames -F _crowdsim_bench crowdsim-bench\n";
@@ -147,8 +156,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (args[0] == "--version" || args[0] == "version") {
-    std::cout << "crowdsim-bench " << crowdsim::Version() << " (commit " << crowdsim::GitCommit() << ")"
-              << (crowdsim::cli::BuiltWithMpi() ? ", with MPI" : "") << "\n";
+    std::cout << "crowdsim-bench " << crowdsim::Version() << " (commit " << crowdsim::GitCommit()
+              << ")" << (crowdsim::cli::BuiltWithMpi() ? ", with MPI" : "") << "\n";
     return 0;
   }
   if (args[0] == "help" || args[0] == "--help" || args[0] == "-h") {

@@ -15,7 +15,8 @@ namespace crowdsim::cli {
 
 int RenderCommand(const std::vector<std::string>& args) {
   const Args a = Args::Parse(
-      args, {"--row", "--episode", "--compare", "--sensors-at", "--speed", "--scale", "--out", "--set"},
+      args,
+      {"--row", "--episode", "--compare", "--sensors-at", "--speed", "--scale", "--out", "--set"},
       {"--animate"});
   if (a.positional.size() != 1) throw UsageError("render needs exactly one suite file");
   const auto out = a.Get("--out");

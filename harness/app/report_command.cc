@@ -21,21 +21,25 @@ int ReportCommand(const std::vector<std::string>& args) {
   const auto out = a.Get("--out");
   if (!out) throw UsageError("report needs --out FILE.html");
   const std::filesystem::path dir = a.positional[0];
-  const bool training = render::IsTrainingFolder(dir) && !std::filesystem::exists(dir / "manifest.json");
+  const bool training =
+      render::IsTrainingFolder(dir) && !std::filesystem::exists(dir / "manifest.json");
   const bool figure = out->ends_with(".svg") || out->ends_with(".png") || out->ends_with(".pdf");
   if (training && figure) {
     // A training folder's learning curve alone, as a figure.
-    const std::string name = dir.filename().empty() ? dir.parent_path().filename().string()
-                                                    : dir.filename().string();
-    render::WriteFigure(render::LearningCurveDrawing(render::ReadTextFileIfExists(dir / "training_episodes.csv"),
-                                                     render::ReadTextFileIfExists(dir / "training_log.csv"), name),
-                        *out);
+    const std::string name =
+        dir.filename().empty() ? dir.parent_path().filename().string() : dir.filename().string();
+    render::WriteFigure(
+        render::LearningCurveDrawing(render::ReadTextFileIfExists(dir / "training_episodes.csv"),
+                                     render::ReadTextFileIfExists(dir / "training_log.csv"), name),
+        *out);
     std::cerr << "wrote " << *out << "\n";
     return 0;
   }
   if (!out->ends_with(".html") && !out->ends_with(".htm")) {
-    throw UsageError("report writes HTML (or, for a training folder, its learning curve as .svg, .png "
-                     "or .pdf): --out must end in .html, got '" + *out + "'");
+    throw UsageError(
+        "report writes HTML (or, for a training folder, its learning curve as .svg, .png "
+        "or .pdf): --out must end in .html, got '" +
+        *out + "'");
   }
   render::ReportOptions options;
   if (auto s = a.Get("--suite")) options.suite_file = *s;

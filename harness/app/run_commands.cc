@@ -26,7 +26,8 @@ std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& regis
   SuiteLoadResult r = LoadSuite(file, registry, overrides);
   if (!r.suite) {
     for (const auto& e : r.errors) std::cerr << "error: " << e.Format() << "\n";
-    std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file << "\n";
+    std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file
+              << "\n";
   }
   return std::move(r.suite);
 }
@@ -65,13 +66,14 @@ void ExplainInterruption(const std::filesystem::path& out_dir) {
 /// Joins shard folders into `out` (MergeShards), prints the table and what was written; the
 /// exit code. `from` says where the episodes came from ("3 folders", "2 MPI ranks").
 int MergeAndReport(const std::vector<std::filesystem::path>& dirs, const std::filesystem::path& out,
-                   const std::filesystem::path& suite_file, PluginRegistry& registry, const std::string& from,
-                   bool allow_mixed_commits = false) {
+                   const std::filesystem::path& suite_file, PluginRegistry& registry,
+                   const std::string& from, bool allow_mixed_commits = false) {
   try {
     const RunSummary s = MergeShards(dirs, out, suite_file, registry, allow_mixed_commits);
     std::cout << s.table_markdown << "\n";
-    std::cerr << "wrote " << (s.out_dir / "table.md").string() << ", table.csv, episodes.csv, manifest.json ("
-              << s.episodes_resumed << " episodes from " << from << ")\n";
+    std::cerr << "wrote " << (s.out_dir / "table.md").string()
+              << ", table.csv, episodes.csv, manifest.json (" << s.episodes_resumed
+              << " episodes from " << from << ")\n";
   } catch (const RunError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
@@ -89,7 +91,8 @@ void PrintTable(const Suite& suite, const RunSummary& s) {
 /// `mpirun -n R crowdsim-bench run`: rank K runs shard K+1 of R into OUT/ranks/<K+1>of<R>/ (its
 /// own resumable folder) with its own --jobs threads; once every rank has finished, rank 0
 /// merges the shards into OUT exactly as `merge` does, so the tables equal a single run's.
-int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt, const ProcessGroup& group) {
+int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
+                 const ProcessGroup& group) {
   const std::filesystem::path out = opt.out_dir.empty() ? DefaultRunDir(suite) : opt.out_dir;
   auto rank_dir = [&](int rank) {
     return out / "ranks" / (std::to_string(rank + 1) + "of" + std::to_string(group.size()));
@@ -108,22 +111,25 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt, c
   }
   if (!group.AllOk(ok)) {
     if (group.rank() == 0) {
-      std::cerr << "error: not every rank finished; their episodes are kept in " << (out / "ranks").string()
-                << "; run the same command again to resume\n";
+      std::cerr << "error: not every rank finished; their episodes are kept in "
+                << (out / "ranks").string() << "; run the same command again to resume\n";
     }
     return 1;
   }
   if (group.rank() != 0) return 0;
   std::vector<std::filesystem::path> dirs;
   for (int r = 0; r < group.size(); ++r) dirs.push_back(rank_dir(r));
-  std::cout << "## " << suite.name << (suite.description.empty() ? "" : ": " + suite.description) << "\n\n";
-  return MergeAndReport(dirs, out, suite.file, registry, std::to_string(group.size()) + " MPI ranks");
+  std::cout << "## " << suite.name << (suite.description.empty() ? "" : ": " + suite.description)
+            << "\n\n";
+  return MergeAndReport(dirs, out, suite.file, registry,
+                        std::to_string(group.size()) + " MPI ranks");
 }
 
 }  // namespace
 
 int RunCommand(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args, {"--out", "--jobs", "--episodes", "--shard", "--set"}, {"--fresh", "--quiet"});
+  const Args a = Args::Parse(args, {"--out", "--jobs", "--episodes", "--shard", "--set"},
+                             {"--fresh", "--quiet"});
   if (a.positional.size() != 1) throw UsageError("run needs exactly one suite file");
   int shard_index = 1, shard_count = 1;
   if (auto shard = a.Get("--shard")) {
@@ -131,9 +137,10 @@ int RunCommand(const std::vector<std::string>& args) {
     if (std::sscanf(shard->c_str(), "%d%c%d%c", &shard_index, &slash, &shard_count, &extra) != 3 ||
         slash != '/' || shard_count < 1 || shard_count > 1'000'000 || shard_index < 1 ||
         shard_index > shard_count) {
-      throw UsageError("--shard needs K/N with 1 <= K <= N (e.g. --shard 2/8, or "
-                       "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT with ids from 1), got '" +
-                       *shard + "'");
+      throw UsageError(
+          "--shard needs K/N with 1 <= K <= N (e.g. --shard 2/8, or "
+          "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT with ids from 1), got '" +
+          *shard + "'");
     }
   }
   PluginRegistry registry;
@@ -150,7 +157,8 @@ int RunCommand(const std::vector<std::string>& args) {
   opt.shard_count = shard_count;
   const ProcessGroup group;
   if (group.size() > 1) {
-    if (a.Has("--shard")) throw UsageError("--shard and an MPI launch both split the suite: give one of them");
+    if (a.Has("--shard"))
+      throw UsageError("--shard and an MPI launch both split the suite: give one of them");
     return RunOverRanks(*suite, registry, opt, group);
   }
   ExplainInterruption(opt.out_dir.empty() ? DefaultRunDir(*suite) : opt.out_dir);
@@ -158,7 +166,8 @@ int RunCommand(const std::vector<std::string>& args) {
     RunSummary s = RunSuite(*suite, registry, opt);
     PrintTable(*suite, s);
     std::cerr << "wrote " << (s.out_dir / (shard_count > 1 ? "episodes.csv" : "table.md")).string()
-              << (shard_count > 1 ? ", manifest.json (" : ", table.csv, episodes.csv, manifest.json (")
+              << (shard_count > 1 ? ", manifest.json ("
+                                  : ", table.csv, episodes.csv, manifest.json (")
               << s.episodes_run << " episodes run, " << s.episodes_resumed << " resumed)\n";
   } catch (const RunError& e) {
     std::cerr << "error: " << e.what() << "\n";
@@ -185,7 +194,8 @@ int ValidateCommand(const std::vector<std::string>& args) {
   for (const auto& file : a.positional) {
     PluginRegistry registry;
     if (LooksLikeTrainingFile(file)) {
-      training::TrainSpecLoadResult loaded = training::LoadTrainSpec(file, registry, a.All("--set"));
+      training::TrainSpecLoadResult loaded =
+          training::LoadTrainSpec(file, registry, a.All("--set"));
       if (!loaded.spec) {
         for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
         std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
@@ -239,10 +249,12 @@ int ListPluginsCommand(const std::vector<std::string>& args) {
       std::cout << "  " << p->descriptor->name << " - " << p->descriptor->description << "\n"
                 << "      file: " << p->path.string() << "\n";
       for (const auto& s : p->schema) {
-        std::cout << "      " << s.name << " (" << ParamTypeName(s.type)
-                  << ", default " << FormatParamValue(s.default_value);
-        if (s.type == ParamType::kInt || s.type == ParamType::kDouble || s.type == ParamType::kDoubleList) {
-          if (std::isfinite(s.min) || std::isfinite(s.max)) std::cout << ", range [" << s.min << ", " << s.max << "]";
+        std::cout << "      " << s.name << " (" << ParamTypeName(s.type) << ", default "
+                  << FormatParamValue(s.default_value);
+        if (s.type == ParamType::kInt || s.type == ParamType::kDouble ||
+            s.type == ParamType::kDoubleList) {
+          if (std::isfinite(s.min) || std::isfinite(s.max))
+            std::cout << ", range [" << s.min << ", " << s.max << "]";
         }
         if (!s.choices.empty()) {
           std::cout << ", one of";

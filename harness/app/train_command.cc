@@ -44,13 +44,16 @@ int Train(const TrainJob& job) {
     char* end = nullptr;
     const unsigned long long v = std::strtoull(seed.c_str(), &end, 10);
     if (seed.empty() || *end != '\0' || seed[0] == '-') {
-      throw UsageError("the seed of '" + job.file + "' must be a non-negative integer, got '" + seed + "'");
+      throw UsageError("the seed of '" + job.file + "' must be a non-negative integer, got '" +
+                       seed + "'");
     }
     training::OverrideSeed(*loaded.spec, v);
-    options.out_dir = std::filesystem::path("results") / "train" / (loaded.spec->name + "_seed" + seed);
+    options.out_dir =
+        std::filesystem::path("results") / "train" / (loaded.spec->name + "_seed" + seed);
   }
   if (job.out) options.out_dir = *job.out;
-  if (options.out_dir.empty()) options.out_dir = std::filesystem::path("results") / "train" / loaded.spec->name;
+  if (options.out_dir.empty())
+    options.out_dir = std::filesystem::path("results") / "train" / loaded.spec->name;
   if (job.campaign && training::IsFinishedTraining(options.out_dir, *loaded.spec)) {
     std::cout << "finished already: " << options.out_dir.string() << " (skipped)\n";
     return 0;
@@ -69,9 +72,10 @@ int Train(const TrainJob& job) {
   };
   try {
     const training::TrainSummary s = training::RunTraining(*loaded.spec, registry, options);
-    std::cout << "trained " << loaded.spec->name << " in " << s.wall_seconds << " s: "
-              << s.weights.string();
-    if (!s.best_weights.empty()) std::cout << " (best validation: " << s.best_weights.string() << ")";
+    std::cout << "trained " << loaded.spec->name << " in " << s.wall_seconds
+              << " s: " << s.weights.string();
+    if (!s.best_weights.empty())
+      std::cout << " (best validation: " << s.best_weights.string() << ")";
     std::cout << "\n";
     if (!s.validations.empty()) {
       const auto& v = s.validations.back();
@@ -105,7 +109,8 @@ int TrainCommand(const std::vector<std::string>& args) {
 
 int TrainAllCommand(const std::vector<std::string>& args) {
   const Args a = Args::Parse(args, {"--set"}, {"--quiet"});
-  if (a.positional.empty()) throw UsageError("train-all needs training files (FILE.yaml or FILE.yaml@SEED)");
+  if (a.positional.empty())
+    throw UsageError("train-all needs training files (FILE.yaml or FILE.yaml@SEED)");
   std::vector<TrainJob> jobs;
   for (const std::string& entry : a.positional) {
     TrainJob job;
@@ -126,17 +131,18 @@ int TrainAllCommand(const std::vector<std::string>& args) {
   // Rank r takes trainings r, r + R, r + 2R, ... of the list (every rank derives the same split).
   const ProcessGroup group;
   int failed = 0;
-  for (size_t i = static_cast<size_t>(group.rank()); i < jobs.size(); i += static_cast<size_t>(group.size())) {
-    std::cout << "train-all: rank " << group.rank() << " of " << group.size() << ": " << a.positional[i]
-              << std::endl;
+  for (size_t i = static_cast<size_t>(group.rank()); i < jobs.size();
+       i += static_cast<size_t>(group.size())) {
+    std::cout << "train-all: rank " << group.rank() << " of " << group.size() << ": "
+              << a.positional[i] << std::endl;
     const int code = Train(jobs[i]);
     if (code == 130) return 130;  // interrupted: the checkpoint is written, a relaunch resumes
     if (code != 0) ++failed;
   }
   const bool all_ok = group.AllOk(failed == 0);
   if (group.rank() == 0) {
-    std::cout << "train-all: " << jobs.size() << " training(s) over " << group.size() << " process(es): "
-              << (all_ok ? "all finished" : "some failed (see above)") << "\n";
+    std::cout << "train-all: " << jobs.size() << " training(s) over " << group.size()
+              << " process(es): " << (all_ok ? "all finished" : "some failed (see above)") << "\n";
   }
   return all_ok ? 0 : 1;
 }

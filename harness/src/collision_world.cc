@@ -157,15 +157,13 @@ CollisionWorld::CollisionWorld(std::shared_ptr<const StaticMap> map) : map_(std:
     object->setCollisionShape(shape.get());
     btTransform transform;
     transform.setIdentity();
-    transform.setOrigin(btVector3(static_cast<btScalar>(center.x()),
-                                  static_cast<btScalar>(center.y()), 0));
+    transform.setOrigin(
+        btVector3(static_cast<btScalar>(center.x()), static_cast<btScalar>(center.y()), 0));
     object->setWorldTransform(transform);
-    object->setCollisionFlags(object->getCollisionFlags() |
-                              btCollisionObject::CF_STATIC_OBJECT);
+    object->setCollisionFlags(object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
     object->setUserIndex(static_cast<int>(i));
     impl_->world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
-                                    btBroadphaseProxy::AllFilter ^
-                                        btBroadphaseProxy::StaticFilter);
+                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     impl_->shapes.push_back(std::move(shape));
     impl_->objects.push_back(std::move(object));
   }
@@ -268,8 +266,8 @@ void CollisionWorld::CastRaysBullet(const Vec2& origin, std::span<const double> 
   std::lock_guard<std::mutex> lock(impl_->ray_mutex);
   const btVector3 from(static_cast<btScalar>(origin.x()), static_cast<btScalar>(origin.y()), 0);
   for (size_t k = 0; k < world_angles.size(); ++k) {
-    const Vec2 end = origin + max_range * Vec2(std::cos(world_angles[k]),
-                                               std::sin(world_angles[k]));
+    const Vec2 end =
+        origin + max_range * Vec2(std::cos(world_angles[k]), std::sin(world_angles[k]));
     const btVector3 to(static_cast<btScalar>(end.x()), static_cast<btScalar>(end.y()), 0);
     btCollisionWorld::ClosestRayResultCallback callback(from, to);
     impl_->world.rayTest(from, to, callback);

@@ -1,8 +1,8 @@
 #include "crowdsim/episode.h"
 
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "crowdsim/rng.h"
@@ -19,14 +19,22 @@ constexpr const char* kNonStandardException =
 
 const char* EpisodeStatusName(EpisodeStatus s) {
   switch (s) {
-    case EpisodeStatus::kRunning: return "running";
-    case EpisodeStatus::kSuccess: return "success";
-    case EpisodeStatus::kCollisionHuman: return "collision_human";
-    case EpisodeStatus::kCollisionObstacle: return "collision_obstacle";
-    case EpisodeStatus::kTimeout: return "timeout";
-    case EpisodeStatus::kPolicyError: return "policy_error";
-    case EpisodeStatus::kPolicyCrash: return "policy_crash";
-    case EpisodeStatus::kPolicyTimeout: return "policy_timeout";
+    case EpisodeStatus::kRunning:
+      return "running";
+    case EpisodeStatus::kSuccess:
+      return "success";
+    case EpisodeStatus::kCollisionHuman:
+      return "collision_human";
+    case EpisodeStatus::kCollisionObstacle:
+      return "collision_obstacle";
+    case EpisodeStatus::kTimeout:
+      return "timeout";
+    case EpisodeStatus::kPolicyError:
+      return "policy_error";
+    case EpisodeStatus::kPolicyCrash:
+      return "policy_crash";
+    case EpisodeStatus::kPolicyTimeout:
+      return "policy_timeout";
   }
   return "unknown";
 }
@@ -47,7 +55,8 @@ class Episode::StepLookahead final : public Lookahead {
 
   std::span<const AgentState> NextHumans() const override { return next_humans_; }
 
-  void Evaluate(std::span<const Action> actions, std::vector<LookaheadOutcome>* out) const override {
+  void Evaluate(std::span<const Action> actions,
+                std::vector<LookaheadOutcome>* out) const override {
     out->resize(actions.size());
     const double time_after = e_.time_ + e_.sim_.time_step;
     for (size_t k = 0; k < actions.size(); ++k) {
@@ -77,8 +86,10 @@ void CheckSpeed(const Vec2& velocity, double v_pref, const std::string& who) {
   const double speed = velocity.norm();
   if (speed > kMaxSpeedFactor * v_pref) {
     char buf[160];
-    std::snprintf(buf, sizeof(buf), " returned %.4g m/s, more than %.0f x v_pref (%.4g m/s): an action is "
-                  "the velocity for the next step, in m/s", speed, kMaxSpeedFactor, kMaxSpeedFactor * v_pref);
+    std::snprintf(buf, sizeof(buf),
+                  " returned %.4g m/s, more than %.0f x v_pref (%.4g m/s): an action is "
+                  "the velocity for the next step, in m/s",
+                  speed, kMaxSpeedFactor, kMaxSpeedFactor * v_pref);
     throw std::runtime_error(who + buf);
   }
 }
@@ -86,7 +97,8 @@ void CheckSpeed(const Vec2& velocity, double v_pref, const std::string& who) {
 }  // namespace
 
 void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
-  const std::string where = "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) + ": ";
+  const std::string where =
+      "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) + ": ";
   auto text = [](const Vec2& p) {
     char buf[64];
     std::snprintf(buf, sizeof(buf), "(%.3f, %.3f)", p.x(), p.y());
@@ -96,14 +108,17 @@ void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
     throw std::invalid_argument(where + "the robot's start or goal is not a finite point");
   }
   if ((scenario.robot_goal - scenario.robot_start).norm() <= sim.goal_radius) {
-    throw std::invalid_argument(where + "the robot starts at its goal " + text(scenario.robot_goal) +
-                                " (within goal_radius): the episode would be a success without a move");
+    throw std::invalid_argument(
+        where + "the robot starts at its goal " + text(scenario.robot_goal) +
+        " (within goal_radius): the episode would be a success without a move");
   }
   if (!scenario.map) return;
   const StaticMap& map = *scenario.map;
-  for (const auto& [name, p] : {std::pair{"start", scenario.robot_start}, std::pair{"goal", scenario.robot_goal}}) {
+  for (const auto& [name, p] :
+       {std::pair{"start", scenario.robot_start}, std::pair{"goal", scenario.robot_goal}}) {
     if (map.bounds.Area() > 0.0 && !map.bounds.Contains(p)) {
-      throw std::invalid_argument(where + "the robot's " + name + " " + text(p) + " lies outside the map");
+      throw std::invalid_argument(where + "the robot's " + name + " " + text(p) +
+                                  " lies outside the map");
     }
     for (std::size_t k = 0; k < map.rectangles.size(); ++k) {
       const Rect& r = map.rectangles[k];
@@ -175,8 +190,8 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
 
 Episode::~Episode() = default;
 
-void Episode::Sense(const AgentState& robot, const Frame& frame,
-                    std::span<const AgentState> humans, std::vector<SensorReading>* out) const {
+void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
+                    std::vector<SensorReading>* out) const {
   out->resize(agents_.sensors.size());
   const SenseInput input{robot, frame, humans, world_};
   for (size_t s = 0; s < agents_.sensors.size(); ++s) {
@@ -206,7 +221,8 @@ void Episode::DecideHumans() {
     human_obs_.self_index = static_cast<int>(i);
     human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
     if (!human_actions_[i].velocity.allFinite()) {
-      throw std::runtime_error("human " + std::to_string(i) + "'s policy returned a non-finite velocity");
+      throw std::runtime_error("human " + std::to_string(i) +
+                               "'s policy returned a non-finite velocity");
     }
     CheckSpeed(human_actions_[i].velocity, h.v_pref, "human " + std::to_string(i) + "'s policy");
   }
@@ -290,11 +306,20 @@ StepInfo Episode::Step() {
   time_ = step_index_ * dt;
   Record();
   switch (j.event) {
-    case StepEvent::kSuccess: Finish(EpisodeStatus::kSuccess); break;
-    case StepEvent::kCollisionHuman: Finish(EpisodeStatus::kCollisionHuman); break;
-    case StepEvent::kCollisionObstacle: Finish(EpisodeStatus::kCollisionObstacle); break;
-    case StepEvent::kTimeout: Finish(EpisodeStatus::kTimeout); break;
-    default: break;
+    case StepEvent::kSuccess:
+      Finish(EpisodeStatus::kSuccess);
+      break;
+    case StepEvent::kCollisionHuman:
+      Finish(EpisodeStatus::kCollisionHuman);
+      break;
+    case StepEvent::kCollisionObstacle:
+      Finish(EpisodeStatus::kCollisionObstacle);
+      break;
+    case StepEvent::kTimeout:
+      Finish(EpisodeStatus::kTimeout);
+      break;
+    default:
+      break;
   }
   return info;
 }

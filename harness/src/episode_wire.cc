@@ -39,7 +39,8 @@ class Reader {
 
  private:
   const char* Take(std::size_t n) {
-    if (n > bytes_.size() - at_) throw std::runtime_error("an isolated worker sent a cut episode result");
+    if (n > bytes_.size() - at_)
+      throw std::runtime_error("an isolated worker sent a cut episode result");
     const char* p = bytes_.data() + at_;
     at_ += n;
     return p;
@@ -85,7 +86,8 @@ EpisodeLine DecodeEpisodeLine(std::string_view bytes) {
         },
         c.field);
   }
-  if (!in.AtEnd()) throw std::runtime_error("an isolated worker sent an episode result with extra bytes");
+  if (!in.AtEnd())
+    throw std::runtime_error("an isolated worker sent an episode result with extra bytes");
   return line;
 }
 

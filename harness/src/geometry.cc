@@ -67,8 +67,7 @@ double RayRectDistance(const Vec2& origin, const Vec2& dir, const Rect& r) {
   return std::max(t_near, 0.0);
 }
 
-double RayCircleDistance(const Vec2& origin, const Vec2& dir, const Vec2& center,
-                         double radius) {
+double RayCircleDistance(const Vec2& origin, const Vec2& dir, const Vec2& center, double radius) {
   const Vec2 m = origin - center;
   const double c = m.squaredNorm() - radius * radius;
   if (c <= 0.0) return 0.0;

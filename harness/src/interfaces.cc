@@ -16,9 +16,12 @@ Lookahead::~Lookahead() = default;
 
 const char* PluginKindName(PluginKind k) {
   switch (k) {
-    case PluginKind::kPolicy: return "policy";
-    case PluginKind::kSensor: return "sensor";
-    case PluginKind::kWorld: return "world";
+    case PluginKind::kPolicy:
+      return "policy";
+    case PluginKind::kSensor:
+      return "sensor";
+    case PluginKind::kWorld:
+      return "world";
   }
   return "unknown";
 }

@@ -61,12 +61,15 @@ void AddLineTail(const TableRow& line, Json* j) {
   Json metrics;
   metrics["episodes"] = m.episodes;
   for (const auto& [key, field] :
-       {std::pair{"success_rate", &RowMetrics::success_rate}, {"collision_rate", &RowMetrics::collision_rate},
+       {std::pair{"success_rate", &RowMetrics::success_rate},
+        {"collision_rate", &RowMetrics::collision_rate},
         {"collision_human_rate", &RowMetrics::collision_human_rate},
         {"collision_obstacle_rate", &RowMetrics::collision_obstacle_rate},
-        {"timeout_rate", &RowMetrics::timeout_rate}, {"policy_error_rate", &RowMetrics::policy_error_rate},
+        {"timeout_rate", &RowMetrics::timeout_rate},
+        {"policy_error_rate", &RowMetrics::policy_error_rate},
         {"policy_crash_rate", &RowMetrics::policy_crash_rate},
-        {"policy_timeout_rate", &RowMetrics::policy_timeout_rate}, {"nav_time", &RowMetrics::nav_time},
+        {"policy_timeout_rate", &RowMetrics::policy_timeout_rate},
+        {"nav_time", &RowMetrics::nav_time},
         {"danger_frequency", &RowMetrics::danger_frequency}}) {
     metrics[key] = Number(m.*field);
   }
@@ -80,8 +83,10 @@ void AddLineTail(const TableRow& line, Json* j) {
   (*j)["metrics"] = std::move(metrics);
   if (const auto& ref = line.Reference()) {
     Json r;
-    for (const auto& [key, value] : {std::pair{"success", ref->success}, {"collision", ref->collision},
-                                     {"timeout", ref->timeout}, {"nav_time", ref->nav_time},
+    for (const auto& [key, value] : {std::pair{"success", ref->success},
+                                     {"collision", ref->collision},
+                                     {"timeout", ref->timeout},
+                                     {"nav_time", ref->nav_time},
                                      {"danger", ref->danger}}) {
       if (value) r[key] = Number(*value);
     }

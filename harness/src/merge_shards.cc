@@ -43,7 +43,8 @@ void RecordShardCommits(const fs::path& manifest,
 }  // namespace
 
 RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& out_dir,
-                       const fs::path& suite_file, PluginRegistry& registry, bool allow_mixed_commits) {
+                       const fs::path& suite_file, PluginRegistry& registry,
+                       bool allow_mixed_commits) {
   if (shard_dirs.empty()) throw RunError("merge needs the output folders of the shards");
   std::string hash, episodes_text, manifest_suite;
   std::map<std::pair<std::string, int>, std::pair<EpisodeLine, fs::path>> lines;
@@ -54,7 +55,8 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   for (const fs::path& dir : shard_dirs) {
     const fs::path manifest = dir / "manifest.json";
     if (!fs::exists(manifest) || !fs::exists(dir / "episodes.csv")) {
-      throw RunError("'" + dir.string() + "' is not the output folder of a run (no manifest.json "
+      throw RunError("'" + dir.string() +
+                     "' is not the output folder of a run (no manifest.json "
                      "and episodes.csv)");
     }
     const std::string h = ReadManifestField(manifest, "config_hash");
@@ -72,10 +74,12 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     std::string commit = ReadManifestField(manifest, "git_commit");
     if (commit.empty()) commit = "unknown";
     if (!shard_commits.empty() && commit != shard_commits.front().first && !allow_mixed_commits) {
-      throw RunError("'" + shard_dirs.front().string() + "' was made by commit " + shard_commits.front().first +
-                     ", '" + dir.string() + "' by commit " + commit + ": shards of different code do not "
-                     "make one run. Rerun the shards with one build, or pass --allow-mixed-commits to "
-                     "join them anyway (the merged manifest.json records each shard's commit)");
+      throw RunError(
+          "'" + shard_dirs.front().string() + "' was made by commit " +
+          shard_commits.front().first + ", '" + dir.string() + "' by commit " + commit +
+          ": shards of different code do not "
+          "make one run. Rerun the shards with one build, or pass --allow-mixed-commits to "
+          "join them anyway (the merged manifest.json records each shard's commit)");
     }
     shard_commits.emplace_back(commit, shard.empty() ? dir.string() : shard);
     for (auto& line : ReadEpisodesCsv(dir / "episodes.csv")) {
@@ -89,7 +93,8 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     }
   }
   const fs::path file = suite_file.empty() ? fs::path(manifest_suite) : suite_file;
-  SuiteLoadResult loaded = LoadSuite(file, registry, ReadManifestStrings(shard_dirs.front() / "manifest.json", "overrides"));
+  SuiteLoadResult loaded = LoadSuite(
+      file, registry, ReadManifestStrings(shard_dirs.front() / "manifest.json", "overrides"));
   if (!loaded.suite) {
     std::string msg = "cannot load the suite '" + file.string() + "' of the shards:";
     for (const auto& e : loaded.errors) msg += "\n  " + e.Format();
@@ -102,7 +107,8 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   }
   const long episodes = ReadManifestInteger(shard_dirs.front() / "manifest.json", "episodes");
   if (episodes < 1) {
-    throw RunError("'" + (shard_dirs.front() / "manifest.json").string() + "' names no episode count");
+    throw RunError("'" + (shard_dirs.front() / "manifest.json").string() +
+                   "' names no episode count");
   }
   // Every (row, episode) exactly once, nothing else.
   std::set<std::string> labels;
@@ -110,8 +116,9 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     labels.insert(row.label);
     for (int k = 0; k < episodes; ++k) {
       if (!lines.count({row.label, k})) {
-        throw RunError("episode " + std::to_string(k) + " of row '" + row.label + "' is in none of the " +
-                       std::to_string(shard_dirs.size()) + " folders: a shard is missing or unfinished "
+        throw RunError("episode " + std::to_string(k) + " of row '" + row.label +
+                       "' is in none of the " + std::to_string(shard_dirs.size()) +
+                       " folders: a shard is missing or unfinished "
                        "(rerun it; finished episodes resume)");
       }
     }
@@ -133,14 +140,16 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   std::string text = EpisodeCsvHeader() + "\n";
   for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
   WriteFileAtomically(out_dir / "episodes.csv", text);
-  WriteFileAtomically(out_dir / "manifest.json", FormatJson(nlohmann::ordered_json{{"config_hash", hash}}));
+  WriteFileAtomically(out_dir / "manifest.json",
+                      FormatJson(nlohmann::ordered_json{{"config_hash", hash}}));
   RunOptions options;
   options.out_dir = out_dir;
   options.episodes = static_cast<int>(episodes);
   options.progress = false;
   RunSummary summary = RunSuite(suite, registry, options);
   if (summary.episodes_run != 0) {
-    throw RunError("merge ran " + std::to_string(summary.episodes_run) + " episodes: a bug, please report");
+    throw RunError("merge ran " + std::to_string(summary.episodes_run) +
+                   " episodes: a bug, please report");
   }
   RecordShardCommits(out_dir / "manifest.json", shard_commits);
   return summary;

@@ -42,12 +42,24 @@ RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit
         nav_time += e.time;
         nav_time_sq += e.time * e.time;
         break;
-      case EpisodeStatus::kCollisionHuman: ++coll_h; break;
-      case EpisodeStatus::kCollisionObstacle: ++coll_o; break;
-      case EpisodeStatus::kTimeout: ++timeout; break;
-      case EpisodeStatus::kPolicyCrash: ++crash; break;
-      case EpisodeStatus::kPolicyTimeout: ++hang; break;
-      default: ++error; break;
+      case EpisodeStatus::kCollisionHuman:
+        ++coll_h;
+        break;
+      case EpisodeStatus::kCollisionObstacle:
+        ++coll_o;
+        break;
+      case EpisodeStatus::kTimeout:
+        ++timeout;
+        break;
+      case EpisodeStatus::kPolicyCrash:
+        ++crash;
+        break;
+      case EpisodeStatus::kPolicyTimeout:
+        ++hang;
+        break;
+      default:
+        ++error;
+        break;
     }
     steps += e.steps;
     danger += e.danger_steps;
@@ -99,11 +111,11 @@ RowMetrics SummarizeRows(std::span<const RowMetrics> rows) {
     m.successes += r.successes;
     m.collisions += r.collisions;
     m.timeouts += r.timeouts;
-    for (auto field : {&RowMetrics::success_rate, &RowMetrics::collision_rate,
-                       &RowMetrics::collision_human_rate, &RowMetrics::collision_obstacle_rate,
-                       &RowMetrics::timeout_rate, &RowMetrics::policy_error_rate,
-                       &RowMetrics::policy_crash_rate, &RowMetrics::policy_timeout_rate,
-                       &RowMetrics::nav_time, &RowMetrics::danger_frequency}) {
+    for (auto field :
+         {&RowMetrics::success_rate, &RowMetrics::collision_rate, &RowMetrics::collision_human_rate,
+          &RowMetrics::collision_obstacle_rate, &RowMetrics::timeout_rate,
+          &RowMetrics::policy_error_rate, &RowMetrics::policy_crash_rate,
+          &RowMetrics::policy_timeout_rate, &RowMetrics::nav_time, &RowMetrics::danger_frequency}) {
       m.*field += r.*field / k;
     }
     for (const EpisodeColumn& c : kEpisodeColumns) {

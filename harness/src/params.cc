@@ -7,11 +7,16 @@ namespace crowdsim {
 
 const char* ParamTypeName(ParamType t) {
   switch (t) {
-    case ParamType::kBool: return "bool";
-    case ParamType::kInt: return "int";
-    case ParamType::kDouble: return "number";
-    case ParamType::kString: return "string";
-    case ParamType::kDoubleList: return "list of numbers";
+    case ParamType::kBool:
+      return "bool";
+    case ParamType::kInt:
+      return "int";
+    case ParamType::kDouble:
+      return "number";
+    case ParamType::kString:
+      return "string";
+    case ParamType::kDoubleList:
+      return "list of numbers";
   }
   return "unknown";
 }

@@ -152,12 +152,17 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   } catch (const std::exception& e) {
     throw PluginError("cannot load plugin file '" + key + "': " + e.what() +
                       ". It is not a loadable shared library for this machine, or one of its "
-                      "dependencies is missing (check with `ldd " + key + "`). Rebuild it "
+                      "dependencies is missing (check with `ldd " +
+                      key +
+                      "`). Rebuild it "
                       "against this version of crowdsim-bench.");
   }
   if (!lib->has(kPluginAliasName)) {
-    throw PluginError("'" + key + "' is a shared library but not a crowdsim-bench plugin: it "
-                      "exports no '" + std::string(kPluginAliasName) + "' symbol. A plugin "
+    throw PluginError("'" + key +
+                      "' is a shared library but not a crowdsim-bench plugin: it "
+                      "exports no '" +
+                      std::string(kPluginAliasName) +
+                      "' symbol. A plugin "
                       "defines a crowdsim::PluginDescriptor and exports it with "
                       "CROWDSIM_EXPORT_PLUGIN(descriptor) (see plugins/linear for an example).");
   }
@@ -171,7 +176,8 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   }
   const auto& desc = lib->get_alias<const PluginDescriptor>(kPluginAliasName);
   if (desc.name == nullptr || desc.description == nullptr || desc.schema == nullptr) {
-    throw PluginError("plugin '" + key + "' has an incomplete descriptor (name, description "
+    throw PluginError("plugin '" + key +
+                      "' has an incomplete descriptor (name, description "
                       "and schema are required). Fix the plugin's descriptor.");
   }
   auto loaded = std::make_unique<LoadedPlugin>();
@@ -198,8 +204,10 @@ const LoadedPlugin& PluginRegistry::Load(const std::string& name_or_path, Plugin
   if (p.descriptor->kind != kind) {
     throw PluginError("plugin '" + name_or_path + "' (" + p.path.string() + ") is a " +
                       PluginKindName(p.descriptor->kind) + " plugin, but a " +
-                      PluginKindName(kind) + " plugin is needed here. Run `crowdsim-bench "
-                      "list-plugins` to see the " + PluginKindName(kind) + " plugins.");
+                      PluginKindName(kind) +
+                      " plugin is needed here. Run `crowdsim-bench "
+                      "list-plugins` to see the " +
+                      PluginKindName(kind) + " plugins.");
   }
   return p;
 }

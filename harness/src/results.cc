@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -32,10 +32,10 @@ std::string Fixed(double x, int digits) {
 }
 
 /// The statuses an episode can end with, as episodes.csv names them.
-constexpr EpisodeStatus kEndStatuses[] = {EpisodeStatus::kSuccess, EpisodeStatus::kCollisionHuman,
-                                          EpisodeStatus::kCollisionObstacle, EpisodeStatus::kTimeout,
-                                          EpisodeStatus::kPolicyError, EpisodeStatus::kPolicyCrash,
-                                          EpisodeStatus::kPolicyTimeout};
+constexpr EpisodeStatus kEndStatuses[] = {
+    EpisodeStatus::kSuccess,      EpisodeStatus::kCollisionHuman, EpisodeStatus::kCollisionObstacle,
+    EpisodeStatus::kTimeout,      EpisodeStatus::kPolicyError,    EpisodeStatus::kPolicyCrash,
+    EpisodeStatus::kPolicyTimeout};
 
 EpisodeStatus ParseStatus(const std::string& s) {
   for (auto st : kEndStatuses) {
@@ -49,7 +49,10 @@ std::string EndStatusNames() {
   std::string names;
   const size_t n = std::size(kEndStatuses);
   for (size_t i = 0; i < n; ++i) {
-    names += (i == 0 ? "" : i + 1 < n ? ", " : " or ") + std::string(EpisodeStatusName(kEndStatuses[i]));
+    names += (i == 0      ? ""
+              : i + 1 < n ? ", "
+                          : " or ") +
+             std::string(EpisodeStatusName(kEndStatuses[i]));
   }
   return names;
 }
@@ -57,7 +60,8 @@ std::string EndStatusNames() {
 std::string SensorsLabel(const TableRow& row) {
   if (!row.spec) return "";
   std::string s;
-  for (size_t i = 0; i < row.spec->sensors.size(); ++i) s += (i ? "+" : "") + row.spec->sensors[i].plugin;
+  for (size_t i = 0; i < row.spec->sensors.size(); ++i)
+    s += (i ? "+" : "") + row.spec->sensors[i].plugin;
   return s.empty() ? "-" : s;
 }
 
@@ -67,13 +71,14 @@ std::string Signed(double x, int digits) {
 }
 
 /// The quantities a table compares with published values, in column order.
-constexpr std::array<const char*, 5> kCompared = {"success", "collision", "timeout", "nav. time", "danger freq."};
+constexpr std::array<const char*, 5> kCompared = {"success", "collision", "timeout", "nav. time",
+                                                  "danger freq."};
 
 /// One compared quantity: our value with its interval, and the published value if any.
 struct Compared {
   const char* name;
   double ours;
-  Interval interval;      ///< 95%: Wilson for rates, +-1.96 s.e. for nav. time
+  Interval interval;  ///< 95%: Wilson for rates, +-1.96 s.e. for nav. time
   bool has_interval;
   std::optional<double> paper;
 };
@@ -86,17 +91,24 @@ std::vector<Compared> Comparisons(const TableRow& r) {
   };
   const bool se = std::isfinite(m.nav_time_se);
   return {
-      {kCompared[0], m.success_rate, WilsonInterval95(m.successes, m.episodes), true, paper(&PublishedReference::success)},
-      {kCompared[1], m.collision_rate, WilsonInterval95(m.collisions, m.episodes), true, paper(&PublishedReference::collision)},
-      {kCompared[2], m.timeout_rate, WilsonInterval95(m.timeouts, m.episodes), true, paper(&PublishedReference::timeout)},
-      {kCompared[3], m.nav_time, {m.nav_time - 1.96 * m.nav_time_se, m.nav_time + 1.96 * m.nav_time_se}, se,
+      {kCompared[0], m.success_rate, WilsonInterval95(m.successes, m.episodes), true,
+       paper(&PublishedReference::success)},
+      {kCompared[1], m.collision_rate, WilsonInterval95(m.collisions, m.episodes), true,
+       paper(&PublishedReference::collision)},
+      {kCompared[2], m.timeout_rate, WilsonInterval95(m.timeouts, m.episodes), true,
+       paper(&PublishedReference::timeout)},
+      {kCompared[3],
+       m.nav_time,
+       {m.nav_time - 1.96 * m.nav_time_se, m.nav_time + 1.96 * m.nav_time_se},
+       se,
        paper(&PublishedReference::nav_time)},
       {kCompared[4], m.danger_frequency, {}, false, paper(&PublishedReference::danger)},
   };
 }
 
 bool AnyReference(const std::vector<TableRow>& rows) {
-  return std::any_of(rows.begin(), rows.end(), [](const TableRow& r) { return r.Reference().has_value(); });
+  return std::any_of(rows.begin(), rows.end(),
+                     [](const TableRow& r) { return r.Reference().has_value(); });
 }
 
 struct Column {
@@ -107,7 +119,8 @@ struct Column {
 /// The table's columns: the paper's and ours (both formats), then for the CSV each rate's 95%
 /// interval, nav. time's standard error and, when any line has published values, those values
 /// and our differences (table.md shows these in its second table).
-std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& rows, bool with_uncertainty) {
+std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& rows,
+                            bool with_uncertainty) {
   std::vector<Column> cols;
   cols.push_back({"row", nullptr});
   cols.push_back({"label", [](const TableRow& r) { return r.Label(); }});
@@ -121,7 +134,8 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
   }
   cols.push_back({"sensors", [](const TableRow& r) { return SensorsLabel(r); }});
   auto metric = [](const char* h, double RowMetrics::*field, int digits) {
-    return Column{h, [field, digits](const TableRow& r) { return Fixed(r.metrics.*field, digits); }};
+    return Column{h,
+                  [field, digits](const TableRow& r) { return Fixed(r.metrics.*field, digits); }};
   };
   cols.push_back(metric("success rate", &RowMetrics::success_rate, 4));
   cols.push_back(metric("collision rate", &RowMetrics::collision_rate, 4));
@@ -131,28 +145,36 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
   cols.push_back(metric("coll. human", &RowMetrics::collision_human_rate, 4));
   cols.push_back(metric("coll. obstacle", &RowMetrics::collision_obstacle_rate, 4));
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (c.mean != RowMean::kNone) cols.push_back(metric(c.table_header, c.row_mean, c.table_decimals));
+    if (c.mean != RowMean::kNone)
+      cols.push_back(metric(c.table_header, c.row_mean, c.table_decimals));
   }
-  cols.push_back({"errors", [](const TableRow& r) { return Fixed(r.metrics.policy_error_rate, 4); }});
+  cols.push_back(
+      {"errors", [](const TableRow& r) { return Fixed(r.metrics.policy_error_rate, 4); }});
   // Crashed and hung episodes (isolated runs) get columns only when a line has some, so the
   // tables of runs without any keep their columns.
   const auto any = [&](double RowMetrics::*field) {
-    return std::any_of(rows.begin(), rows.end(), [field](const TableRow& r) { return r.metrics.*field > 0; });
+    return std::any_of(rows.begin(), rows.end(),
+                       [field](const TableRow& r) { return r.metrics.*field > 0; });
   };
   if (any(&RowMetrics::policy_crash_rate) || any(&RowMetrics::policy_timeout_rate)) {
     cols.push_back(metric("crashes", &RowMetrics::policy_crash_rate, 4));
     cols.push_back(metric("hangs", &RowMetrics::policy_timeout_rate, 4));
   }
-  cols.push_back({"episodes", [](const TableRow& r) { return std::to_string(r.metrics.episodes); }});
+  cols.push_back(
+      {"episodes", [](const TableRow& r) { return std::to_string(r.metrics.episodes); }});
   if (!with_uncertainty) return cols;
   for (size_t i = 0; i < kCompared.size(); ++i) {
     const std::string name = kCompared[i];
     if (i < 3) {
-      cols.push_back({name + " 95% low", [i](const TableRow& r) { return Fixed(Comparisons(r)[i].interval.low, 4); }});
-      cols.push_back({name + " 95% high", [i](const TableRow& r) { return Fixed(Comparisons(r)[i].interval.high, 4); }});
+      cols.push_back({name + " 95% low",
+                      [i](const TableRow& r) { return Fixed(Comparisons(r)[i].interval.low, 4); }});
+      cols.push_back({name + " 95% high", [i](const TableRow& r) {
+                        return Fixed(Comparisons(r)[i].interval.high, 4);
+                      }});
     }
   }
-  cols.push_back({"nav. time s.e.", [](const TableRow& r) { return Fixed(r.metrics.nav_time_se, 4); }});
+  cols.push_back(
+      {"nav. time s.e.", [](const TableRow& r) { return Fixed(r.metrics.nav_time_se, 4); }});
   if (!AnyReference(rows)) return cols;
   for (size_t i = 0; i < kCompared.size(); ++i) {
     const std::string name = kCompared[i];
@@ -165,7 +187,9 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
                       return c.paper ? Signed(c.ours - *c.paper, 4) : std::string();
                     }});
   }
-  cols.push_back({"paper source", [](const TableRow& r) { return r.Reference() ? r.Reference()->source : std::string(); }});
+  cols.push_back({"paper source", [](const TableRow& r) {
+                    return r.Reference() ? r.Reference()->source : std::string();
+                  }});
   return cols;
 }
 
@@ -187,10 +211,14 @@ std::string FormatCell(const EpisodeColumn& c, const EpisodeLine& e) {
       [&](auto member) -> std::string {
         const auto& v = ColumnValue(e, member);
         using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::string>) return CsvField(v);
-        else if constexpr (std::is_same_v<T, EpisodeStatus>) return EpisodeStatusName(v);
-        else if constexpr (std::is_same_v<T, double>) return Fixed(v, c.decimals);
-        else return std::to_string(v);
+        if constexpr (std::is_same_v<T, std::string>)
+          return CsvField(v);
+        else if constexpr (std::is_same_v<T, EpisodeStatus>)
+          return EpisodeStatusName(v);
+        else if constexpr (std::is_same_v<T, double>)
+          return Fixed(v, c.decimals);
+        else
+          return std::to_string(v);
       },
       c.field);
 }
@@ -289,7 +317,9 @@ std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e
   }
   for (size_t k = 0; k < n; ++k) {
     const std::string expected = ParseCell(kEpisodeColumns[k], v[k], e);
-    if (!expected.empty()) return "its " + std::string(kEpisodeColumns[k].name) + " " + Quote(v[k]) + " is not " + expected;
+    if (!expected.empty())
+      return "its " + std::string(kEpisodeColumns[k].name) + " " + Quote(v[k]) + " is not " +
+             expected;
   }
   return "";
 }
@@ -303,9 +333,12 @@ EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
   if (!line.empty() && line.back() == '\r') line.pop_back();
   if (line != EpisodeCsvHeader()) {
     throw std::runtime_error(
-        path.string() + ":1: " + (line.empty() ? "the first line is empty" : "the header is " + Quote(line)) +
-        ", expected '" + EpisodeCsvHeader() + "': this is not an episodes.csv written by "
-        "`crowdsim-bench run`; " + kEpisodesCsvFix);
+        path.string() +
+        ":1: " + (line.empty() ? "the first line is empty" : "the header is " + Quote(line)) +
+        ", expected '" + EpisodeCsvHeader() +
+        "': this is not an episodes.csv written by "
+        "`crowdsim-bench run`; " +
+        kEpisodesCsvFix);
   }
   int number = 1, episode_lines = 0;
   while (std::getline(f, line)) {
@@ -326,7 +359,8 @@ EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
       read.first_damage = path.string() + ":" + std::to_string(number) + ": " + why;
     }
   }
-  if (f.bad()) throw std::runtime_error("cannot read " + path.string() + ": " + std::strerror(errno));
+  if (f.bad())
+    throw std::runtime_error("cannot read " + path.string() + ": " + std::strerror(errno));
   if (read.lines.empty() && read.damaged > 0) {
     throw std::runtime_error(path.string() + ": none of its " + std::to_string(episode_lines) +
                              " episode line(s) can be read (the first: " + read.first_damage +
@@ -341,7 +375,8 @@ std::vector<EpisodeLine> ReadEpisodesCsv(const fs::path& path) {
 
 namespace {
 
-/// A table cell's text for Markdown: '|' escaped (it would start a new cell), line breaks as spaces.
+/// A table cell's text for Markdown: '|' escaped (it would start a new cell), line breaks as
+/// spaces.
 std::string MarkdownCell(const std::string& text) {
   std::string out;
   for (char c : text) {
@@ -379,7 +414,9 @@ void WriteMarkdownTable(const std::vector<std::string>& header, size_t text_colu
 std::string SuccessRange(const std::vector<TableRow>& rows, const SummarySpec& summary) {
   double lo = 1.0, hi = 0.0;
   for (const TableRow& row : rows) {
-    if (!row.spec || std::find(summary.rows.begin(), summary.rows.end(), row.spec->label) == summary.rows.end()) continue;
+    if (!row.spec ||
+        std::find(summary.rows.begin(), summary.rows.end(), row.spec->label) == summary.rows.end())
+      continue;
     lo = std::min(lo, row.metrics.success_rate);
     hi = std::max(hi, row.metrics.success_rate);
   }
@@ -396,7 +433,8 @@ void WriteUncertaintyMarkdown(const std::vector<TableRow>& rows, std::ostream& o
     os << "; paper: the published value, Δ: ours - paper, * where the published value lies "
           "outside our 95% interval";
   }
-  if (std::any_of(rows.begin(), rows.end(), [](const TableRow& r) { return r.summary != nullptr; })) {
+  if (std::any_of(rows.begin(), rows.end(),
+                  [](const TableRow& r) { return r.summary != nullptr; })) {
     os << ". Summary lines (no row number) are the mean of their rows; their intervals count the "
           "pooled episodes, so they show evaluation noise only: \"rows\" gives the range of the "
           "rows' success rates (e.g. between training seeds)";
@@ -405,8 +443,9 @@ void WriteUncertaintyMarkdown(const std::vector<TableRow>& rows, std::ostream& o
   std::vector<std::string> header = {"row", "label"};
   for (size_t i = 0; i < kCompared.size(); ++i) {
     if (i == 4 && !papers) break;
-    header.push_back(i < 3 ? std::string(kCompared[i]) + " [95% CI]"
-                           : i == 3 ? std::string("nav. time ± s.e.") : std::string(kCompared[i]));
+    header.push_back(i < 3    ? std::string(kCompared[i]) + " [95% CI]"
+                     : i == 3 ? std::string("nav. time ± s.e.")
+                              : std::string(kCompared[i]));
     if (papers) {
       header.push_back("paper");
       header.push_back("Δ");
@@ -421,11 +460,13 @@ void WriteUncertaintyMarkdown(const std::vector<TableRow>& rows, std::ostream& o
       if (i == 4 && !papers) break;
       const Compared& c = compared[i];
       if (i < 3) {
-        std::string cell = Fixed(c.ours, 4) + " [" + Fixed(c.interval.low, 4) + ", " + Fixed(c.interval.high, 4) + "]";
+        std::string cell = Fixed(c.ours, 4) + " [" + Fixed(c.interval.low, 4) + ", " +
+                           Fixed(c.interval.high, 4) + "]";
         if (i == 0 && rows[r].summary) cell += " rows " + SuccessRange(rows, *rows[r].summary);
         line.push_back(cell);
       } else if (i == 3) {
-        line.push_back(Fixed(c.ours, 2) + (c.has_interval ? " ± " + Fixed(rows[r].metrics.nav_time_se, 2) : ""));
+        line.push_back(Fixed(c.ours, 2) +
+                       (c.has_interval ? " ± " + Fixed(rows[r].metrics.nav_time_se, 2) : ""));
       } else {
         line.push_back(Fixed(c.ours, 4));
       }

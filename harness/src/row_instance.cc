@@ -7,7 +7,8 @@
 
 namespace crowdsim {
 
-RowInstance::RowInstance(const RowSpec& row, PluginRegistry& registry) : row_(row), registry_(registry) {
+RowInstance::RowInstance(const RowSpec& row, PluginRegistry& registry)
+    : row_(row), registry_(registry) {
   robot_ = registry_.MakePolicy(*row_.policy.loaded, row_.policy.params);
   agents_.robot = robot_.get();
   for (const auto& s : row_.sensors) {
@@ -18,9 +19,9 @@ RowInstance::RowInstance(const RowSpec& row, PluginRegistry& registry) : row_(ro
 
 std::string RowInstance::UnmetSensorNeed() const {
   for (const auto& needed : robot_->Needs().sensors) {
-    const bool have = std::any_of(row_.sensors.begin(), row_.sensors.end(), [&](const PluginUse& s) {
-      return s.loaded->descriptor->name == needed;
-    });
+    const bool have =
+        std::any_of(row_.sensors.begin(), row_.sensors.end(),
+                    [&](const PluginUse& s) { return s.loaded->descriptor->name == needed; });
     if (!have) return "policy '" + row_.policy.plugin + "' needs the sensor '" + needed + "'";
   }
   return "";
@@ -48,15 +49,17 @@ ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const
 Replay ReplayEpisode(const Suite& suite, size_t row_index, int episode, PluginRegistry& registry,
                      bool record_trajectory) {
   if (row_index >= suite.rows.size()) {
-    throw std::out_of_range("row " + std::to_string(row_index + 1) + " does not exist; the suite has " +
-                            std::to_string(suite.rows.size()) + " rows");
+    throw std::out_of_range("row " + std::to_string(row_index + 1) +
+                            " does not exist; the suite has " + std::to_string(suite.rows.size()) +
+                            " rows");
   }
   const RowSpec& row = suite.rows[row_index];
   auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
   RowInstance instance(row, registry);
   Replay replay;
   replay.scenario = world->Make(MakeEpisodeRequest(suite, row, *world, episode));
-  Episode ep(replay.scenario, suite.sim, instance.Agents(replay.scenario.humans.size()), record_trajectory);
+  Episode ep(replay.scenario, suite.sim, instance.Agents(replay.scenario.humans.size()),
+             record_trajectory);
   replay.result = ep.Run();
   return replay;
 }

@@ -29,12 +29,14 @@ void ReadHumanCount(Reader& r, const YAML::Node& n, const std::string& path, boo
     return;
   }
   if (n.IsSequence()) {
-    r.Error(n, path, "a range of counts is for training files (drawn per episode); a suite row "
-                     "runs one count: give one number, or `sweep: {humans.count: [...]}` for a "
-                     "row per count");
+    r.Error(n, path,
+            "a range of counts is for training files (drawn per episode); a suite row "
+            "runs one count: give one number, or `sweep: {humans.count: [...]}` for a "
+            "row per count");
     return;
   }
-  if (auto c = r.Integer(n, path, 0, kMaxHumans)) out->count = out->count_max = static_cast<int>(*c);
+  if (auto c = r.Integer(n, path, 0, kMaxHumans))
+    out->count = out->count_max = static_cast<int>(*c);
 }
 
 void ReadHumans(Reader& r, const YAML::Node& file_level, const YAML::Node& row_level,
@@ -42,36 +44,45 @@ void ReadHumans(Reader& r, const YAML::Node& file_level, const YAML::Node& row_l
                 const fs::path& base, HumansSpec* out) {
   // Row keys override the file's keys one by one.
   auto pick = [&](const char* key) -> std::pair<YAML::Node, std::string> {
-    if (Present(row_level) && row_level.IsMap() && Present(row_level[key])) return {row_level[key], Reader::Child(path, key)};
-    if (Present(file_level) && file_level.IsMap() && Present(file_level[key])) return {file_level[key], Reader::Child("humans", key)};
+    if (Present(row_level) && row_level.IsMap() && Present(row_level[key]))
+      return {row_level[key], Reader::Child(path, key)};
+    if (Present(file_level) && file_level.IsMap() && Present(file_level[key]))
+      return {file_level[key], Reader::Child("humans", key)};
     return {YAML::Node(YAML::NodeType::Undefined), ""};
   };
   if (Present(row_level)) {
-    if (r.IsMap(row_level, path, "count, policy, params, goal_mode")) r.CheckKeys(row_level, path, kHumansKeys);
+    if (r.IsMap(row_level, path, "count, policy, params, goal_mode"))
+      r.CheckKeys(row_level, path, kHumansKeys);
   }
   if (auto [n, p] = pick("count"); Present(n)) ReadHumanCount(r, n, p, rules.humans_range, out);
   if (auto [n, p] = pick("goal_mode"); Present(n)) {
     if (auto s = r.String(n, p)) {
-      if (*s == "stay") out->goal_mode = HumanGoalMode::kStay;
-      else if (*s == "new_goal") out->goal_mode = HumanGoalMode::kNewGoal;
-      else r.Error(n, p, "value '" + *s + "' is not valid; valid: stay, new_goal");
+      if (*s == "stay")
+        out->goal_mode = HumanGoalMode::kStay;
+      else if (*s == "new_goal")
+        out->goal_mode = HumanGoalMode::kNewGoal;
+      else
+        r.Error(n, p, "value '" + *s + "' is not valid; valid: stay, new_goal");
     }
   }
   auto [pn, pp] = pick("policy");
   const YAML::Node policy_node =
-      Present(pn) ? pn : YAML::Node(out->count_max > 0 ? schema.humans_policy : schema.humans_policy_without);
+      Present(pn)
+          ? pn
+          : YAML::Node(out->count_max > 0 ? schema.humans_policy : schema.humans_policy_without);
   const std::string policy_path =
       Present(pn) ? pp : "humans.policy (default, " + schema.file.string() + ")";
   out->policy.plugin = policy_node.Scalar();
   out->policy.loaded = r.Plugin(policy_node, policy_path, PluginKind::kPolicy);
   auto [params, params_path] = pick("params");
   if (Present(params) && !r.IsMap(params, params_path, "policy parameters")) return;
-  if (out->policy.loaded) out->policy.params = r.ParamsFor(*out->policy.loaded, params, {}, params_path, base);
+  if (out->policy.loaded)
+    out->policy.params = r.ParamsFor(*out->policy.loaded, params, {}, params_path, base);
 }
 
 /// The robot policy, its `params` and `weights` (a shorthand for params.weights).
-void ReadRobotPolicy(Reader& r, const YAML::Node& n, const std::string& path,
-                     const RowRules& rules, const fs::path& base, PluginUse* policy) {
+void ReadRobotPolicy(Reader& r, const YAML::Node& n, const std::string& path, const RowRules& rules,
+                     const fs::path& base, PluginUse* policy) {
   if (!Present(n["policy"])) {
     r.Error(n, Reader::Child(path, "policy"), "missing key 'policy' (" + rules.policy_hint + ")");
     return;
@@ -103,7 +114,8 @@ void ReadRowSpec(Reader& r, const YAML::Node& n, const std::string& path, const 
     ReadSensors(r, sensors, n["sensors"] ? Reader::Child(path, "sensors") : "robot.sensors", base,
                 &row->sensors);
   } else if (rules.sensors_required) {
-    r.Error(n, Reader::Child(path, "sensors"), "missing key 'sensors' (e.g. [person, {type: lidar2d, beams: 45}])");
+    r.Error(n, Reader::Child(path, "sensors"),
+            "missing key 'sensors' (e.g. [person, {type: lidar2d, beams: 45}])");
   }
   if (n["world"]) {
     ReadWorld(r, n["world"], Reader::Child(path, "world"), base, &row->world);
@@ -120,7 +132,8 @@ void ReadWorld(Reader& r, const YAML::Node& n, const std::string& path, const fs
                PluginUse* out) {
   if (!r.IsMap(n, path, "source: <world plugin> and its parameters")) return;
   if (!n["source"]) {
-    r.Error(n, path, "missing key 'source' (the world plugin, e.g. random_rect, floorplan, crowdnav)");
+    r.Error(n, path,
+            "missing key 'source' (the world plugin, e.g. random_rect, floorplan, crowdnav)");
     return;
   }
   out->plugin = n["source"].Scalar();
@@ -144,12 +157,17 @@ void ReadSensors(Reader& r, const YAML::Node& n, const std::string& path, const 
     } else if (item.IsMap() && item["type"]) {
       type_node = item["type"];
     } else {
-      r.Error(item, p, "a sensor is a plugin name (person) or a map with 'type' and its parameters");
+      r.Error(item, p,
+              "a sensor is a plugin name (person) or a map with 'type' and its parameters");
       continue;
     }
     use.plugin = type_node.Scalar();
-    use.loaded = r.Plugin(type_node, item.IsMap() ? Reader::Child(p, "type") : p, PluginKind::kSensor);
-    if (use.loaded) use.params = r.ParamsFor(*use.loaded, item.IsMap() ? item : YAML::Node(YAML::NodeType::Undefined), {"type"}, p, base);
+    use.loaded =
+        r.Plugin(type_node, item.IsMap() ? Reader::Child(p, "type") : p, PluginKind::kSensor);
+    if (use.loaded)
+      use.params =
+          r.ParamsFor(*use.loaded, item.IsMap() ? item : YAML::Node(YAML::NodeType::Undefined),
+                      {"type"}, p, base);
     out->push_back(std::move(use));
   }
 }

@@ -17,8 +17,8 @@
 namespace crowdsim::suite_internal {
 
 /// The keys of a row spec.
-inline const std::vector<std::string> kRowSpecKeys = {"policy", "params", "weights", "sensors",
-                                                     "world", "humans"};
+inline const std::vector<std::string> kRowSpecKeys = {"policy",  "params", "weights",
+                                                      "sensors", "world",  "humans"};
 
 /// The keys of a `humans:` map.
 inline const std::vector<std::string> kHumansKeys = {"count", "policy", "params", "goal_mode"};
@@ -35,8 +35,8 @@ struct RowDefaults {
 
 /// Where the files that hold row specs differ.
 struct RowRules {
-  std::string policy_hint;    ///< what `policy` names, for "missing key 'policy' (...)"
-  std::string missing_world;  ///< the error when neither the row nor the defaults give a world
+  std::string policy_hint;        ///< what `policy` names, for "missing key 'policy' (...)"
+  std::string missing_world;      ///< the error when neither the row nor the defaults give a world
   bool sensors_required = false;  ///< a row without sensors is an error (else: no sensors)
   /// `humans.count` may be a range [min, max], drawn per episode (training files).
   bool humans_range = false;

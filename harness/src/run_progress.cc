@@ -7,8 +7,12 @@
 namespace crowdsim {
 
 Progress::Progress(std::string name, int total, int already, bool enabled)
-    : name_(std::move(name)), total_(total), done_(already), enabled_(enabled),
-      tty_(isatty(STDERR_FILENO)), start_(Clock::now()) {}
+    : name_(std::move(name)),
+      total_(total),
+      done_(already),
+      enabled_(enabled),
+      tty_(isatty(STDERR_FILENO)),
+      start_(Clock::now()) {}
 
 void Progress::Episode(bool success) {
   ++done_;

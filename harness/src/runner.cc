@@ -78,7 +78,8 @@ struct RunScope {
   int shards = 1;
 
   bool Covers(size_t row, int k) const {
-    return (row * static_cast<size_t>(episodes) + static_cast<size_t>(k)) % static_cast<size_t>(shards) ==
+    return (row * static_cast<size_t>(episodes) + static_cast<size_t>(k)) %
+               static_cast<size_t>(shards) ==
            static_cast<size_t>(shard_index - 1);
   }
 };
@@ -89,8 +90,9 @@ RunScope MakeScope(const Suite& suite, const RunOptions& options) {
   scope.shards = std::max(1, options.shard_count);
   scope.shard_index = options.shard_index;
   if (scope.shard_index < 1 || scope.shard_index > scope.shards) {
-    throw RunError("shard " + std::to_string(scope.shard_index) + "/" + std::to_string(scope.shards) +
-                   " does not exist (shards are numbered 1.." + std::to_string(scope.shards) + ")");
+    throw RunError("shard " + std::to_string(scope.shard_index) + "/" +
+                   std::to_string(scope.shards) + " does not exist (shards are numbered 1.." +
+                   std::to_string(scope.shards) + ")");
   }
   return scope;
 }
@@ -108,8 +110,8 @@ fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
 
 /// Builds every row's objects once, so a bad parameter stops the run before any episode with
 /// the plugin's own message; returns the rows' worlds and records their identities.
-std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite, PluginRegistry& registry,
-                                                        RunFacts* facts) {
+std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
+                                                        PluginRegistry& registry, RunFacts* facts) {
   std::vector<std::shared_ptr<WorldSource>> worlds;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     worlds.push_back(PreflightRow(suite, r, registry));
@@ -135,9 +137,11 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir,
     if (stored_rows.count(row.ConfigHash() + " " + row.label)) kept.insert(row.label);
   }
   if (kept.empty()) {
-    throw RunError("'" + out_dir.string() + "' holds results of a different configuration "
-                   "of this suite (config hash " + (stored.empty() ? "unknown" : stored) +
-                   ", now " + suite.ConfigHash() + ", and no row is unchanged). Pass --fresh to "
+    throw RunError("'" + out_dir.string() +
+                   "' holds results of a different configuration "
+                   "of this suite (config hash " +
+                   (stored.empty() ? "unknown" : stored) + ", now " + suite.ConfigHash() +
+                   ", and no row is unchanged). Pass --fresh to "
                    "replace them, or --out to write elsewhere.");
   }
   if (note) {
@@ -145,7 +149,8 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir,
     for (const RowSpec& row : suite.rows) {
       if (!kept.count(row.label)) rerun += (rerun.empty() ? "" : ", ") + row.label;
     }
-    std::fprintf(stderr, "note: the suite changed since '%s' was written: %zu unchanged row(s) "
+    std::fprintf(stderr,
+                 "note: the suite changed since '%s' was written: %zu unchanged row(s) "
                  "resume, new or changed rows run from scratch: %s\n",
                  out_dir.string().c_str(), kept.size(), rerun.c_str());
   }
@@ -165,8 +170,10 @@ EpisodeLines StoredEpisodes(const Suite& suite, const fs::path& out_dir, bool no
     throw RunError(e.what());
   }
   if (stored_lines.damaged > 0 && note) {
-    std::fprintf(stderr, "note: %d damaged line(s) of %s skipped, their episodes run again (the first: %s)\n",
-                 stored_lines.damaged, episodes_csv.string().c_str(), stored_lines.first_damage.c_str());
+    std::fprintf(
+        stderr,
+        "note: %d damaged line(s) of %s skipped, their episodes run again (the first: %s)\n",
+        stored_lines.damaged, episodes_csv.string().c_str(), stored_lines.first_damage.c_str());
   }
   for (auto& line : stored_lines.lines) {
     if (kept.count(line.row)) done[{line.row, line.episode}] = std::move(line);
@@ -254,7 +261,8 @@ class EpisodeSink {
     progress_.Finish();
     out_.close();
     if (!failure.empty()) {
-      throw RunError(failure + " (finished episodes are kept in " + path_.string() + "; rerun to resume)");
+      throw RunError(failure + " (finished episodes are kept in " + path_.string() +
+                     "; rerun to resume)");
     }
   }
 
@@ -324,11 +332,13 @@ std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& 
 /// CROWDSIM_PLUGIN_PATH), or the robot's policy when all are the harness's own.
 std::string Suspects(const RowSpec& row) {
   auto name = [](const std::string& role, const PluginUse& u) {
-    return role + " '" + std::string(u.loaded->descriptor->name) + "' (" + u.loaded->path.string() + ")";
+    return role + " '" + std::string(u.loaded->descriptor->name) + "' (" + u.loaded->path.string() +
+           ")";
   };
   std::string named;
   for (const auto& [role, use] : RowPlugins(row)) {
-    if (!PluginRegistry::IsHarnessPlugin(*use->loaded)) named += (named.empty() ? "" : ", ") + name(role, *use);
+    if (!PluginRegistry::IsHarnessPlugin(*use->loaded))
+      named += (named.empty() ? "" : ", ") + name(role, *use);
   }
   return named.empty() ? name("policy", row.policy) : named;
 }
@@ -340,8 +350,8 @@ EpisodeLine LostEpisodeLine(const Suite& suite, const RowSpec& row, const WorldS
   line.row = row.label;
   line.episode = episode;
   line.seed = MakeEpisodeRequest(suite, row, world, episode).seed;
-  line.outcome.status =
-      loss.kind == WorkerLoss::Kind::kTimeout ? EpisodeStatus::kPolicyTimeout : EpisodeStatus::kPolicyCrash;
+  line.outcome.status = loss.kind == WorkerLoss::Kind::kTimeout ? EpisodeStatus::kPolicyTimeout
+                                                                : EpisodeStatus::kPolicyCrash;
   line.outcome.error = "worker process " + loss.Describe() + " while running " + Suspects(row);
   return line;
 }
@@ -380,12 +390,14 @@ void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
     const Task task = tasks[t];
     const RowSpec& row = suite.rows[task.row];
     if (loss.Interrupted()) {
-      failure = Where(row, task.episode) + ": its worker process was " + loss.Describe() + " from outside the run";
+      failure = Where(row, task.episode) + ": its worker process was " + loss.Describe() +
+                " from outside the run";
       return false;
     }
     EpisodeLine line = LostEpisodeLine(suite, row, *worlds[task.row], task.episode, loss);
-    std::fprintf(stderr, "%s (rows[%d]): %s; recorded as %s, the run goes on\n", Where(row, task.episode).c_str(),
-                 task.row, line.outcome.error.c_str(), EpisodeStatusName(line.outcome.status));
+    std::fprintf(stderr, "%s (rows[%d]): %s; recorded as %s, the run goes on\n",
+                 Where(row, task.episode).c_str(), task.row, line.outcome.error.c_str(),
+                 EpisodeStatusName(line.outcome.status));
     return sink.Add(std::move(line), &failure);
   };
   WorkerPoolOptions options;
@@ -406,7 +418,8 @@ bool Isolated(const Suite& suite, const RunOptions& options) {
   if (mode == IsolationMode::kOff && suite.episode_timeout_s > 0) {
     char seconds[32];
     std::snprintf(seconds, sizeof(seconds), "%g", suite.episode_timeout_s);
-    throw RunError("suite '" + suite.name + "' (" + suite.file.string() + ") sets episode_timeout_s " + seconds +
+    throw RunError("suite '" + suite.name + "' (" + suite.file.string() +
+                   ") sets episode_timeout_s " + seconds +
                    " but the run's isolation is off; a timeout needs isolated episodes: drop the "
                    "isolation override or the timeout");
   }
@@ -465,7 +478,8 @@ void WriteRunFiles(const Suite& suite, const RunScope& scope, const EpisodeLines
   summary->table_markdown = FormatTableMarkdown(suite, summary->rows);
   WriteFileAtomically(summary->out_dir / "table.md", summary->table_markdown);
   WriteFileAtomically(summary->out_dir / "table.csv", FormatTableCsv(suite, summary->rows));
-  WriteFileAtomically(summary->out_dir / "manifest.json", FormatManifestJson(suite, summary->rows, facts));
+  WriteFileAtomically(summary->out_dir / "manifest.json",
+                      FormatManifestJson(suite, summary->rows, facts));
 }
 
 }  // namespace
@@ -478,12 +492,14 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   facts.jobs = std::max(1, options.jobs);
   facts.episodes = scope.episodes;
   facts.isolated = Isolated(suite, options);
-  if (scope.shards > 1) facts.shard = std::to_string(scope.shard_index) + "/" + std::to_string(scope.shards);
+  if (scope.shards > 1)
+    facts.shard = std::to_string(scope.shard_index) + "/" + std::to_string(scope.shards);
 
   RunSummary summary;
   summary.out_dir = PrepareOutDir(suite, options);
   const auto worlds = PreflightRows(suite, registry, &facts);
-  EpisodeLines done = options.fresh ? EpisodeLines{} : StoredEpisodes(suite, summary.out_dir, options.progress);
+  EpisodeLines done =
+      options.fresh ? EpisodeLines{} : StoredEpisodes(suite, summary.out_dir, options.progress);
   // Rewrite the stored lines cleanly (drops a line cut short by a crash), then append.
   std::vector<const EpisodeLine*> stored;
   for (const auto& [key, line] : done) stored.push_back(&line);
@@ -502,7 +518,8 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   summary.episodes_run = static_cast<int>(tasks.size());
 
   facts.finished_utc = NowUtc();
-  facts.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  facts.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   if (scope.shards > 1) {
     WriteShardFiles(suite, scope, done, facts, &summary);
   } else {

@@ -42,14 +42,16 @@ std::optional<SchemaDefaults> LoadSchemaDefaults(std::vector<SuiteError>* errors
   const YAML::Node root = LoadYamlFile(d.file, "schema defaults file", errors);
   if (errors->size() != before) {
     for (size_t i = before; i < errors->size(); ++i) {
-      (*errors)[i].message += " (every suite and training file needs it: restore "
-                              "suites/schema/defaults.yaml from the source tree, or set "
-                              "CROWDSIM_DATA_DIR to the project's root folder)";
+      (*errors)[i].message +=
+          " (every suite and training file needs it: restore "
+          "suites/schema/defaults.yaml from the source tree, or set "
+          "CROWDSIM_DATA_DIR to the project's root folder)";
     }
     return std::nullopt;
   }
   if (!root.IsMap()) {
-    errors->push_back({d.file.string(), 0, 0, "", "the schema defaults are a YAML map with humans "
+    errors->push_back({d.file.string(), 0, 0, "",
+                       "the schema defaults are a YAML map with humans "
                        "and training (restore the file from the source tree)"});
     return std::nullopt;
   }

@@ -15,10 +15,10 @@
 namespace crowdsim::suite_internal {
 
 struct SchemaDefaults {
-  std::filesystem::path file;         ///< where they were read, for messages
-  std::string humans_policy;          ///< humans.policy when a row has humans
-  std::string humans_policy_without;  ///< humans.policy when humans.count is 0
-  std::string il_policy;              ///< training.il_policy
+  std::filesystem::path file;            ///< where they were read, for messages
+  std::string humans_policy;             ///< humans.policy when a row has humans
+  std::string humans_policy_without;     ///< humans.policy when humans.count is 0
+  std::string il_policy;                 ///< training.il_policy
   YAML::Node il_params_robot_invisible;  ///< maps: parameter -> value, given unless il_params
   YAML::Node il_params_robot_visible;    ///  does, where the teacher has the parameter
 };

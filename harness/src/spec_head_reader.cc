@@ -27,7 +27,7 @@ void ReadSim(Reader& r, const YAML::Node& n, SimConfig* sim) {
     if (!n[f.key]) continue;
     const std::string path = Reader::Child("sim", f.key);
     if (const auto* number = std::get_if<double SimConfig::*>(&f.member)) {
-      if (auto v = r.Number(n[f.key], path, f.lo, f.hi, f.lo_open)) sim->**number = *v;
+      if (auto v = r.Number(n[f.key], path, f.lo, f.hi, f.lo_open)) sim->** number = *v;
     } else if (auto b = r.Bool(n[f.key], path)) {
       sim->*std::get<bool SimConfig::*>(f.member) = *b;
     }

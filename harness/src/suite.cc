@@ -41,10 +41,14 @@ void ReadIsolation(Reader& r, const YAML::Node& root, Suite* s) {
   const YAML::Node mode = root["isolation"];
   if (Present(mode)) {
     if (auto v = r.String(mode, "isolation")) {
-      if (*v == "auto") s->isolation = IsolationMode::kAuto;
-      else if (*v == "on") s->isolation = IsolationMode::kOn;
-      else if (*v == "off") s->isolation = IsolationMode::kOff;
-      else r.Error(mode, "isolation", "unknown value '" + *v + "' (valid: auto, on, off)");
+      if (*v == "auto")
+        s->isolation = IsolationMode::kAuto;
+      else if (*v == "on")
+        s->isolation = IsolationMode::kOn;
+      else if (*v == "off")
+        s->isolation = IsolationMode::kOff;
+      else
+        r.Error(mode, "isolation", "unknown value '" + *v + "' (valid: auto, on, off)");
     }
   }
   const YAML::Node timeout = root["episode_timeout_s"];
@@ -52,9 +56,11 @@ void ReadIsolation(Reader& r, const YAML::Node& root, Suite* s) {
     if (auto v = r.Number(timeout, "episode_timeout_s", 0.0, 1e7)) s->episode_timeout_s = *v;
   }
   if (s->episode_timeout_s > 0 && s->isolation == IsolationMode::kOff) {
-    r.Error(mode, "isolation", "episode_timeout_s " + timeout.Scalar() + " needs isolated episodes "
-            "(a thread cannot be stopped mid-episode); set isolation to auto or on, or remove "
-            "episode_timeout_s");
+    r.Error(mode, "isolation",
+            "episode_timeout_s " + timeout.Scalar() +
+                " needs isolated episodes "
+                "(a thread cannot be stopped mid-episode); set isolation to auto or on, or remove "
+                "episode_timeout_s");
   }
 }
 
@@ -63,19 +69,20 @@ void ReadIsolation(Reader& r, const YAML::Node& root, Suite* s) {
 namespace {
 
 /// A suite row is a row spec with a label, extra table columns and published values.
-const RowRules kSuiteRowRules{
-    "a policy plugin name such as linear or orca, or a .so path",
-    "no world: give 'world' at the top of the suite or in this row",
-    /*sensors_required=*/false, /*humans_range=*/false};
+const RowRules kSuiteRowRules{"a policy plugin name such as linear or orca, or a .so path",
+                              "no world: give 'world' at the top of the suite or in this row",
+                              /*sensors_required=*/false, /*humans_range=*/false};
 
 /// A label names a row in episodes.csv and the tables: control characters (a line break, a tab)
 /// would be turned into spaces there and could make two rows one.
 void CheckLabel(Reader& r, const YAML::Node& n, const std::string& path) {
   const std::string& label = n.Scalar();
   if (label.empty()) r.Error(n, path, "must not be empty");
-  if (std::any_of(label.begin(), label.end(), [](char c) { return std::iscntrl(static_cast<unsigned char>(c)); })) {
-    r.Error(n, path, "must not contain control characters (line breaks, tabs): they would become "
-                     "spaces in episodes.csv and the tables");
+  if (std::any_of(label.begin(), label.end(),
+                  [](char c) { return std::iscntrl(static_cast<unsigned char>(c)); })) {
+    r.Error(n, path,
+            "must not contain control characters (line breaks, tabs): they would become "
+            "spaces in episodes.csv and the tables");
   }
 }
 
@@ -93,29 +100,34 @@ void ReadInfo(Reader& r, const YAML::Node& info, const std::string& path,
 
 /// `reference: {success: 0.67, collision: 0.20, timeout: 0.13, nav_time: 12.9, danger: 0.09,
 /// source: "..."}`: published values, any subset of them (at least one).
-std::optional<PublishedReference> ReadReference(Reader& r, const YAML::Node& n, const std::string& path) {
-  if (!r.IsMap(n, path, "published values: success, collision, timeout, nav_time, danger, source")) return std::nullopt;
+std::optional<PublishedReference> ReadReference(Reader& r, const YAML::Node& n,
+                                                const std::string& path) {
+  if (!r.IsMap(n, path, "published values: success, collision, timeout, nav_time, danger, source"))
+    return std::nullopt;
   r.CheckKeys(n, path, {"success", "collision", "timeout", "nav_time", "danger", "source"});
   PublishedReference ref;
   const size_t errors_before = r.errors.size();
-  for (auto [key, target] : {std::pair{"success", &ref.success}, std::pair{"collision", &ref.collision},
-                             std::pair{"timeout", &ref.timeout}, std::pair{"danger", &ref.danger}}) {
+  for (auto [key, target] :
+       {std::pair{"success", &ref.success}, std::pair{"collision", &ref.collision},
+        std::pair{"timeout", &ref.timeout}, std::pair{"danger", &ref.danger}}) {
     if (n[key]) *target = r.Number(n[key], Reader::Child(path, key), 0.0, 1.0);
   }
-  if (n["nav_time"]) ref.nav_time = r.Number(n["nav_time"], Reader::Child(path, "nav_time"), 0.0, 1e6, true);
+  if (n["nav_time"])
+    ref.nav_time = r.Number(n["nav_time"], Reader::Child(path, "nav_time"), 0.0, 1e6, true);
   if (n["source"]) {
     if (auto src = r.String(n["source"], Reader::Child(path, "source"))) ref.source = *src;
   }
   if (r.errors.size() != errors_before) return std::nullopt;
   if (!ref.success && !ref.collision && !ref.timeout && !ref.nav_time && !ref.danger) {
-    r.Error(n, path, "gives no value: name at least one of success, collision, timeout, nav_time, danger");
+    r.Error(n, path,
+            "gives no value: name at least one of success, collision, timeout, nav_time, danger");
     return std::nullopt;
   }
   return ref;
 }
 
-void ReadRow(Reader& r, const YAML::Node& n, size_t index, const RowDefaults& d, const fs::path& base,
-             RowSpec* row) {
+void ReadRow(Reader& r, const YAML::Node& n, size_t index, const RowDefaults& d,
+             const fs::path& base, RowSpec* row) {
   const std::string path = Reader::Index("rows", index);
   if (!r.IsMap(n, path, "policy, sensors, ...")) return;
   std::vector<std::string> keys = {"label"};
@@ -126,7 +138,8 @@ void ReadRow(Reader& r, const YAML::Node& n, size_t index, const RowDefaults& d,
   row->label = n["label"] ? n["label"].Scalar() : row->policy.plugin;
   if (n["label"]) CheckLabel(r, n["label"], Reader::Child(path, "label"));
   if (const auto info = n["info"]) ReadInfo(r, info, Reader::Child(path, "info"), &row->info);
-  if (const auto ref = n["reference"]) row->reference = ReadReference(r, ref, Reader::Child(path, "reference"));
+  if (const auto ref = n["reference"])
+    row->reference = ReadReference(r, ref, Reader::Child(path, "reference"));
 }
 
 /// `summaries:` entries: label, rows (labels of earlier rows), optional info and reference.
@@ -146,12 +159,14 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
     if (!r.IsMap(item, path, "label, rows, info, reference")) continue;
     r.CheckKeys(item, path, {"label", "rows", "info", "reference"});
     SummarySpec summary;
-    if (auto label = item["label"] ? r.String(item["label"], Reader::Child(path, "label")) : std::nullopt) {
+    if (auto label =
+            item["label"] ? r.String(item["label"], Reader::Child(path, "label")) : std::nullopt) {
       summary.label = *label;
       CheckLabel(r, item["label"], Reader::Child(path, "label"));
       if (!labels.insert(summary.label).second) {
-        r.Error(item["label"], Reader::Child(path, "label"),
-                "label '" + summary.label + "' is already a row's or summary's; labels must be unique");
+        r.Error(
+            item["label"], Reader::Child(path, "label"),
+            "label '" + summary.label + "' is already a row's or summary's; labels must be unique");
       }
     } else if (!item["label"]) {
       r.Error(item, path, "missing key 'label' (the summary line's name, e.g. avg)");
@@ -163,19 +178,24 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
     } else {
       for (size_t k = 0; k < members.size(); ++k) {
         const std::string label = members[k].Scalar();
-        const bool found = std::any_of(rows.begin(), rows.end(), [&](const RowSpec& row) { return row.label == label; });
+        const bool found = std::any_of(rows.begin(), rows.end(),
+                                       [&](const RowSpec& row) { return row.label == label; });
         if (!found) {
           r.Error(members[k], Reader::Index(Reader::Child(path, "rows"), k),
                   "no row is labelled '" + label + "' (valid: " + valid + ")");
-        } else if (std::find(summary.rows.begin(), summary.rows.end(), label) != summary.rows.end()) {
-          r.Error(members[k], Reader::Index(Reader::Child(path, "rows"), k), "row '" + label + "' is named twice");
+        } else if (std::find(summary.rows.begin(), summary.rows.end(), label) !=
+                   summary.rows.end()) {
+          r.Error(members[k], Reader::Index(Reader::Child(path, "rows"), k),
+                  "row '" + label + "' is named twice");
         } else {
           summary.rows.push_back(label);
         }
       }
     }
-    if (const auto info = item["info"]) ReadInfo(r, info, Reader::Child(path, "info"), &summary.info);
-    if (const auto ref = item["reference"]) summary.reference = ReadReference(r, ref, Reader::Child(path, "reference"));
+    if (const auto info = item["info"])
+      ReadInfo(r, info, Reader::Child(path, "info"), &summary.info);
+    if (const auto ref = item["reference"])
+      summary.reference = ReadReference(r, ref, Reader::Child(path, "reference"));
     out->push_back(std::move(summary));
   }
 }
@@ -197,7 +217,8 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     if (!result.errors.empty()) return result;
   }
   if (!root.IsMap()) {
-    result.errors.push_back({file.string(), 0, 0, "", "a suite is a YAML map with name, episodes, world and rows"});
+    result.errors.push_back(
+        {file.string(), 0, 0, "", "a suite is a YAML map with name, episodes, world and rows"});
     return result;
   }
   Suite s;
@@ -214,14 +235,16 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   s.seed = spec_head.seed;
   s.sim = spec_head.sim;
   if (root["episodes"]) {
-    if (auto e = r.Integer(root["episodes"], "episodes", 1, 10'000'000)) s.episodes = static_cast<int>(*e);
+    if (auto e = r.Integer(root["episodes"], "episodes", 1, 10'000'000))
+      s.episodes = static_cast<int>(*e);
   }
   ReadIsolation(r, root, &s);
   RowDefaults d{*schema};
   d.world = root["world"];
   d.humans = root["humans"];
   if (Present(d.humans)) {
-    if (r.IsMap(d.humans, "humans", "count, policy, params, goal_mode")) r.CheckKeys(d.humans, "humans", kHumansKeys);
+    if (r.IsMap(d.humans, "humans", "count, policy, params, goal_mode"))
+      r.CheckKeys(d.humans, "humans", kHumansKeys);
   }
   if (const auto robot = root["robot"]) {
     if (r.IsMap(robot, "robot", "sensors")) {
@@ -238,7 +261,8 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     }
   }
   if (!root["rows"] || !root["rows"].IsSequence() || root["rows"].size() == 0) {
-    r.Error(root["rows"] ? root["rows"] : root, "rows", "missing or empty 'rows' list (each row: policy, sensors, ...)");
+    r.Error(root["rows"] ? root["rows"] : root, "rows",
+            "missing or empty 'rows' list (each row: policy, sensors, ...)");
   } else {
     std::set<std::string> labels;
     for (size_t i = 0; i < root["rows"].size(); ++i) {

@@ -44,7 +44,8 @@ void Reader::CheckKeys(const YAML::Node& map, const std::string& path,
   for (const auto& kv : map) {
     const std::string key = kv.first.Scalar();
     if (std::find(valid.begin(), valid.end(), key) == valid.end()) {
-      Error(kv.first, Child(path, key), "unknown key '" + key + "' (valid keys: " + Join(valid) + ")");
+      Error(kv.first, Child(path, key),
+            "unknown key '" + key + "' (valid keys: " + Join(valid) + ")");
     }
   }
 }
@@ -86,8 +87,9 @@ std::optional<std::int64_t> Reader::Integer(const YAML::Node& n, const std::stri
     return std::nullopt;
   }
   if (v < lo || v > hi) {
-    Error(n, path, "value " + n.Scalar() + " is out of range; valid: [" + std::to_string(lo) +
-                       ", " + std::to_string(hi) + "]");
+    Error(n, path,
+          "value " + n.Scalar() + " is out of range; valid: [" + std::to_string(lo) + ", " +
+              std::to_string(hi) + "]");
     return std::nullopt;
   }
   return v;
@@ -126,7 +128,8 @@ std::string Reader::Name(const YAML::Node& root, const std::string& folder) {
     Error(n, "name", "'" + *name + "' must use only letters, digits, '_', '-', '.'");
   } else if ((*name)[0] == '.') {
     // "." and ".." would write into the results folder itself or its parent.
-    Error(n, "name", "'" + *name + "' must not start with '.' (it names the folder " + folder + ")");
+    Error(n, "name",
+          "'" + *name + "' must not start with '.' (it names the folder " + folder + ")");
   }
   return *name;
 }
@@ -174,10 +177,10 @@ Params Reader::ParamsFor(const LoadedPlugin& p, const YAML::Node& node,
       if (it == p.schema.end()) {
         std::vector<std::string> names;
         for (const auto& s : p.schema) names.push_back(s.name);
-        Error(kv.first, kpath, "unknown parameter '" + key + "' for " +
-                                   PluginKindName(p.descriptor->kind) + " plugin '" +
-                                   p.descriptor->name + "' (valid: " +
-                                   (names.empty() ? std::string("none") : Join(names)) + ")");
+        Error(kv.first, kpath,
+              "unknown parameter '" + key + "' for " + PluginKindName(p.descriptor->kind) +
+                  " plugin '" + p.descriptor->name +
+                  "' (valid: " + (names.empty() ? std::string("none") : Join(names)) + ")");
         continue;
       }
       if (auto v = Value(*it, kv.second, kpath)) values[key] = *v;

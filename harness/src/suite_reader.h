@@ -30,14 +30,16 @@ std::string Scalar(const YAML::Node& n);
 /// Collects errors while walking a spec document.
 class Reader {
  public:
-  Reader(std::string file, PluginRegistry& registry) : file_(std::move(file)), registry_(registry) {}
+  Reader(std::string file, PluginRegistry& registry)
+      : file_(std::move(file)), registry_(registry) {}
 
   std::vector<SuiteError> errors;
 
   void Error(const YAML::Node& at, const std::string& path, const std::string& message);
 
   /// Unknown keys are errors (a typo never becomes a silent default).
-  void CheckKeys(const YAML::Node& map, const std::string& path, const std::vector<std::string>& valid);
+  void CheckKeys(const YAML::Node& map, const std::string& path,
+                 const std::vector<std::string>& valid);
 
   static std::string Child(const std::string& path, const std::string& key) {
     return path.empty() ? key : path + "." + key;
@@ -50,8 +52,8 @@ class Reader {
 
   std::optional<double> Number(const YAML::Node& n, const std::string& path, double lo, double hi,
                                bool lo_open = false);
-  std::optional<std::int64_t> Integer(const YAML::Node& n, const std::string& path,
-                                      std::int64_t lo, std::int64_t hi);
+  std::optional<std::int64_t> Integer(const YAML::Node& n, const std::string& path, std::int64_t lo,
+                                      std::int64_t hi);
   std::optional<bool> Bool(const YAML::Node& n, const std::string& path);
   std::optional<std::string> String(const YAML::Node& n, const std::string& path);
 
@@ -67,7 +69,8 @@ class Reader {
                    const std::string& path, const std::filesystem::path& base_dir);
 
   /// One parameter value checked against its spec (type, range, choices).
-  std::optional<ParamValue> Value(const ParamSpec& spec, const YAML::Node& n, const std::string& path);
+  std::optional<ParamValue> Value(const ParamSpec& spec, const YAML::Node& n,
+                                  const std::string& path);
 
  private:
   std::vector<std::string> Available(PluginKind kind);

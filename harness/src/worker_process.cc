@@ -59,19 +59,25 @@ bool Exactly(Call call, int fd, Byte* p, size_t n) {
   return true;
 }
 
-bool WriteAll(int fd, const void* data, size_t n) { return Exactly(::write, fd, static_cast<const char*>(data), n); }
-bool ReadAll(int fd, void* data, size_t n) { return Exactly(::read, fd, static_cast<char*>(data), n); }
+bool WriteAll(int fd, const void* data, size_t n) {
+  return Exactly(::write, fd, static_cast<const char*>(data), n);
+}
+bool ReadAll(int fd, void* data, size_t n) {
+  return Exactly(::read, fd, static_cast<char*>(data), n);
+}
 
 /// A worker's loop: task numbers in, [length][bytes] out, until its task pipe closes. An
 /// exception escaping `run` ends the worker through std::terminate (noexcept), which the
 /// parent records as the task's loss (SIGABRT).
-[[noreturn]] void WorkerMain(int tasks_fd, int results_fd, const WorkerPoolCallbacks& callbacks) noexcept {
+[[noreturn]] void WorkerMain(int tasks_fd, int results_fd,
+                             const WorkerPoolCallbacks& callbacks) noexcept {
   for (;;) {
     std::uint64_t t = 0;
     if (!ReadAll(tasks_fd, &t, sizeof t)) _exit(0);
     const std::string bytes = callbacks.run(static_cast<std::size_t>(t));
     const std::uint64_t n = bytes.size();
-    if (!WriteAll(results_fd, &n, sizeof n) || !WriteAll(results_fd, bytes.data(), bytes.size())) _exit(0);
+    if (!WriteAll(results_fd, &n, sizeof n) || !WriteAll(results_fd, bytes.data(), bytes.size()))
+      _exit(0);
   }
 }
 
@@ -93,7 +99,8 @@ class Pool {
   }
 
   void Run() {
-    const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(std::max(1, options_.workers)), count_);
+    const std::size_t n =
+        std::min<std::size_t>(static_cast<std::size_t>(std::max(1, options_.workers)), count_);
     workers_.resize(n);
     for (Worker& w : workers_) Spawn(w);
     for (;;) {
@@ -107,16 +114,19 @@ class Pool {
         if (!w.task) continue;
         fds.push_back({w.results_fd, POLLIN, 0});
         busy.push_back(&w);
-        if (options_.task_timeout_s > 0 && (!first_deadline || w.deadline < *first_deadline)) first_deadline = w.deadline;
+        if (options_.task_timeout_s > 0 && (!first_deadline || w.deadline < *first_deadline))
+          first_deadline = w.deadline;
       }
       if (busy.empty()) break;
       int wait_ms = -1;
       if (first_deadline) {
-        const auto left = std::chrono::ceil<std::chrono::milliseconds>(*first_deadline - Clock::now());
+        const auto left =
+            std::chrono::ceil<std::chrono::milliseconds>(*first_deadline - Clock::now());
         wait_ms = static_cast<int>(std::max<std::int64_t>(0, left.count()));
       }
       const int ready = ::poll(fds.data(), fds.size(), wait_ms);
-      if (ready < 0 && errno != EINTR) throw std::runtime_error(std::string("poll failed: ") + std::strerror(errno));
+      if (ready < 0 && errno != EINTR)
+        throw std::runtime_error(std::string("poll failed: ") + std::strerror(errno));
       for (size_t i = 0; i < fds.size(); ++i) {
         if (ready > 0 && fds[i].revents != 0) {
           if (!Collect(*busy[i])) return;
@@ -131,7 +141,8 @@ class Pool {
  private:
   void Spawn(Worker& w) {
     int tasks[2], results[2];
-    if (::pipe(tasks) != 0) throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
+    if (::pipe(tasks) != 0)
+      throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
     if (::pipe(results) != 0) {
       const int e = errno;
       ::close(tasks[0]);
@@ -171,7 +182,8 @@ class Pool {
       // Died while idle (nothing of ours ran in it): replace it and hand out again.
       End(w, /*kill=*/true);
       Spawn(w);
-      if (!WriteAll(w.tasks_fd, &t, sizeof t)) throw std::runtime_error("a new worker process died at once");
+      if (!WriteAll(w.tasks_fd, &t, sizeof t))
+        throw std::runtime_error("a new worker process died at once");
     }
     ++next_;
     w.task = t;

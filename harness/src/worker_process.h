@@ -29,8 +29,8 @@ struct WorkerLoss {
 };
 
 struct WorkerPoolOptions {
-  int workers = 1;             ///< processes running at a time
-  double task_timeout_s = 0;   ///< wall-clock limit per task, from its hand-out; 0 = none
+  int workers = 1;            ///< processes running at a time
+  double task_timeout_s = 0;  ///< wall-clock limit per task, from its hand-out; 0 = none
 };
 
 /// What the parent does with each task's outcome; returning false stops the pool (every worker

@@ -1,9 +1,5 @@
 #include "crowdsim/world_file.h"
 
-#include "yaml_file.h"
-
-#include <cmath>
-
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -11,6 +7,8 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+
+#include "yaml_file.h"
 
 namespace crowdsim {
 namespace {
@@ -40,7 +38,8 @@ double Number(const std::string& file, const YAML::Node& x, const std::string& k
     Fail(file, x, "'" + key + "' holds a value that is not a number");
   }
   // .inf or .nan would silently drop out of every geometric test.
-  if (!std::isfinite(v)) Fail(file, x, "'" + key + "' holds '" + x.Scalar() + "', not a finite number");
+  if (!std::isfinite(v))
+    Fail(file, x, "'" + key + "' holds '" + x.Scalar() + "', not a finite number");
   return v;
 }
 
@@ -109,8 +108,11 @@ void ParseMaskRow(const std::string& file, const YAML::Node& n, int row, int wid
     well_formed = digit || (text[i] == ' ' && text[i - 1] != ' ');
   }
   if (!well_formed) {
-    Fail(file, n, "'" + key + "' must be whole numbers separated by single spaces (run lengths "
-                  "alternating blocked, navigable, ...), got \"" + text + "\"");
+    Fail(file, n,
+         "'" + key +
+             "' must be whole numbers separated by single spaces (run lengths "
+             "alternating blocked, navigable, ...), got \"" +
+             text + "\"");
   }
   long sum = 0;
   int runs = 0;
@@ -120,17 +122,19 @@ void ParseMaskRow(const std::string& file, const YAML::Node& n, int row, int wid
       run = std::min<long>(10 * run + (text[i] - '0'), long(width) + 1);  // no overflow
     }
     if (run == 0 && runs > 0) {
-      Fail(file, n, "'" + key + "': run " + std::to_string(runs + 1) +
-                        " is 0 (only the first run, blocked, may be 0)");
+      Fail(file, n,
+           "'" + key + "': run " + std::to_string(runs + 1) +
+               " is 0 (only the first run, blocked, may be 0)");
     }
     sum += run;
     if (sum > width) break;
     cells->insert(cells->end(), static_cast<size_t>(run), runs % 2 == 0 ? 0 : 1);
   }
   if (sum != width) {
-    Fail(file, n, "'" + key + "': the runs add up to " +
-                      (sum > width ? "more than" : std::to_string(sum) + " cells, not") +
-                      " the mask width " + std::to_string(width));
+    Fail(file, n,
+         "'" + key + "': the runs add up to " +
+             (sum > width ? "more than" : std::to_string(sum) + " cells, not") +
+             " the mask width " + std::to_string(width));
   }
 }
 
@@ -163,17 +167,17 @@ std::shared_ptr<const NavigableMask> ParseMask(const std::string& file, const YA
   m->width = PositiveInt(file, n, "width", "mask.width");
   m->height = PositiveInt(file, n, "height", "mask.height");
   if (static_cast<long>(m->width) * m->height > kMaxMaskCells) {
-    Fail(file, n, "'mask' of " + std::to_string(m->width) + " x " + std::to_string(m->height) +
-                      " cells is larger than " + std::to_string(kMaxMaskCells) +
-                      " cells; check mask.width and mask.height (or use a coarser resolution)");
+    Fail(file, n,
+         "'mask' of " + std::to_string(m->width) + " x " + std::to_string(m->height) +
+             " cells is larger than " + std::to_string(kMaxMaskCells) +
+             " cells; check mask.width and mask.height (or use a coarser resolution)");
   }
   const YAML::Node rows = n["rows"];
   if (!rows || !rows.IsSequence() || rows.size() != static_cast<size_t>(m->height)) {
-    Fail(file, rows ? rows : n, "'mask.rows' must be a list of " + std::to_string(m->height) +
-                                    " run-length strings (one per row, mask.height)" +
-                                    (rows && rows.IsSequence()
-                                         ? ", got " + std::to_string(rows.size())
-                                         : std::string()));
+    Fail(file, rows ? rows : n,
+         "'mask.rows' must be a list of " + std::to_string(m->height) +
+             " run-length strings (one per row, mask.height)" +
+             (rows && rows.IsSequence() ? ", got " + std::to_string(rows.size()) : std::string()));
   }
   std::vector<unsigned char> cells;
   cells.reserve(static_cast<size_t>(m->width) * m->height);
@@ -184,15 +188,17 @@ std::shared_ptr<const NavigableMask> ParseMask(const std::string& file, const YA
 
 WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
   if (!root.IsMap()) Fail(file, root, "a world must be a map with bounds and rectangles");
-  static const char* kKeys[] = {"format", "name", "attribution", "bounds", "rectangles",
-                                "robot_pairs", "free_points", "stats", "mask"};
+  static const char* kKeys[] = {"format",      "name",        "attribution", "bounds", "rectangles",
+                                "robot_pairs", "free_points", "stats",       "mask"};
   for (const auto& kv : root) {
     const std::string key = Text(file, kv.first, "key");
     bool known = false;
     for (const char* k : kKeys) known = known || key == k;
     if (!known) {
-      Fail(file, kv.first, "unknown key '" + key + "' (valid: format, name, attribution, bounds, "
-                           "rectangles, robot_pairs, free_points, stats, mask)");
+      Fail(file, kv.first,
+           "unknown key '" + key +
+               "' (valid: format, name, attribution, bounds, "
+               "rectangles, robot_pairs, free_points, stats, mask)");
     }
   }
   WorldFile w;
@@ -205,7 +211,8 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
     for (const auto& r : rects) w.rectangles.push_back(ToRect(file, r, "rectangles"));
   }
   if (const auto pairs = root["robot_pairs"]) {
-    if (!pairs.IsMap()) Fail(file, pairs, "'robot_pairs' must be a map {train: [...], test: [...]}");
+    if (!pairs.IsMap())
+      Fail(file, pairs, "'robot_pairs' must be a map {train: [...], test: [...]}");
     w.train_pairs = Pairs(file, pairs["train"], "robot_pairs.train");
     w.test_pairs = Pairs(file, pairs["test"], "robot_pairs.test");
   }
@@ -296,7 +303,8 @@ void Emit(const WorldFile& w, const std::string& indent, bool first_dash, std::o
   }
   if (!w.train_pairs.empty() || !w.test_pairs.empty()) {
     os << indent << "robot_pairs:\n";
-    for (const auto& [key, pairs] : {std::pair{"train", &w.train_pairs}, std::pair{"test", &w.test_pairs}}) {
+    for (const auto& [key, pairs] :
+         {std::pair{"train", &w.train_pairs}, std::pair{"test", &w.test_pairs}}) {
       os << indent << "  " << key << ":" << (pairs->empty() ? " []" : "") << "\n";
       for (const auto& p : *pairs) {
         os << indent << "    - [" << Num(p.start.x()) << ", " << Num(p.start.y()) << ", "
@@ -322,7 +330,9 @@ void WriteText(const std::string& text, const std::filesystem::path& path) {
   const auto tmp = path.string() + ".tmp";
   {
     std::ofstream f(tmp, std::ios::binary);
-    if (!f) throw WorldFileError(path.string() + ": cannot write (check the folder exists and is writable)");
+    if (!f)
+      throw WorldFileError(path.string() +
+                           ": cannot write (check the folder exists and is writable)");
     f << text;
     if (!f) throw WorldFileError(path.string() + ": write failed");
   }
@@ -346,8 +356,8 @@ WorldFile ReadWorldFile(const std::filesystem::path& path) {
   YAML::Node root = LoadYaml(path);
   if (!root.IsMap()) Fail(file, root, "a world must be a map with bounds and rectangles");
   if (root["format"] && Text(file, root["format"], "format") != "crowdsim-world/1") {
-    Fail(file, root["format"], "unsupported format '" + root["format"].Scalar() +
-                                   "' (expected crowdsim-world/1)");
+    Fail(file, root["format"],
+         "unsupported format '" + root["format"].Scalar() + "' (expected crowdsim-world/1)");
   }
   return ParseWorld(file, root);
 }

@@ -21,7 +21,8 @@ std::optional<std::vector<Segment>> ParsePath(const std::string& path, std::stri
     Segment s;
     while (i < path.size() && path[i] != '.' && path[i] != '[') s.key += path[i++];
     if (s.key.empty()) {
-      *why = "an empty key in '" + path + "' (keys are joined by '.', list items chosen by [N] or [name])";
+      *why = "an empty key in '" + path +
+             "' (keys are joined by '.', list items chosen by [N] or [name])";
       return std::nullopt;
     }
     while (i < path.size() && path[i] == '[') {
@@ -58,7 +59,9 @@ std::string ItemName(const YAML::Node& item) {
 }
 
 bool IsIndex(const std::string& s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c));
+  });
 }
 
 /// Sets the node at `segments` under `root` to `value`. Returns "" or what went wrong;
@@ -107,7 +110,8 @@ std::string ReaderPath(const std::vector<Segment>& segments) {
 /// `node` with the value at segments[i..] (selector k of segment i onward) set to `value`, as
 /// new containers along the path; "" in `problem` or what went wrong.
 YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments, std::size_t i,
-                   std::size_t k, const YAML::Node& value, std::string* resolved, std::string* problem) {
+                   std::size_t k, const YAML::Node& value, std::string* resolved,
+                   std::string* problem) {
   const Segment& s = segments[i];
   if (k == 0) {
     // Enter the map key of segment i.
@@ -153,14 +157,16 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
   const bool last_selector = k == s.selectors.size();
   if (last_selector && i + 1 == segments.size()) return WithItem(node, *found, value);
   const YAML::Node item = node[*found];
-  const YAML::Node changed = last_selector ? SetFrom(item, segments, i + 1, 0, value, resolved, problem)
-                                           : SetFrom(item, segments, i, k + 1, value, resolved, problem);
+  const YAML::Node changed = last_selector
+                                 ? SetFrom(item, segments, i + 1, 0, value, resolved, problem)
+                                 : SetFrom(item, segments, i, k + 1, value, resolved, problem);
   return WithItem(node, *found, changed);
 }
 
 /// Sets the value at `segments` in `root` (rebinding `root` to the edited copy). Returns ""
 /// or what went wrong.
-std::string SetPath(YAML::Node& root, const std::vector<Segment>& segments, const YAML::Node& value) {
+std::string SetPath(YAML::Node& root, const std::vector<Segment>& segments,
+                    const YAML::Node& value) {
   std::string resolved, problem;
   YAML::Node edited = SetFrom(root, segments, 0, 0, value, &resolved, &problem);
   if (problem.empty()) root.reset(edited);
@@ -202,7 +208,8 @@ void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
   }
 }
 
-void LocateOverrideErrors(const std::vector<std::string>& overrides, std::vector<SuiteError>* errors) {
+void LocateOverrideErrors(const std::vector<std::string>& overrides,
+                          std::vector<SuiteError>* errors) {
   for (const std::string& text : overrides) {
     const std::size_t eq = text.find('=');
     if (eq == std::string::npos) continue;
@@ -215,10 +222,11 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides, std::vector
     for (SuiteError& e : *errors) {
       // Sweeps renumber rows, so an error about the overridden value may name another index:
       // the last key then decides (such errors sit at line 1 or nowhere, as --set values do).
-      const bool under = (!exact.empty() && (e.key_path == exact || e.key_path.starts_with(exact + ".") ||
-                                             e.key_path.starts_with(exact + "["))) ||
-                         (segments->back().selectors.empty() &&
-                          (e.key_path == tail || e.key_path.ends_with("." + tail)));
+      const bool under =
+          (!exact.empty() && (e.key_path == exact || e.key_path.starts_with(exact + ".") ||
+                              e.key_path.starts_with(exact + "["))) ||
+          (segments->back().selectors.empty() &&
+           (e.key_path == tail || e.key_path.ends_with("." + tail)));
       if (!under || e.line > 1) continue;
       e.file = "--set " + text;
       e.line = 0;
@@ -243,7 +251,8 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
   if (!rows.IsDefined() || !rows.IsSequence()) return;
   auto error = [&](const YAML::Node& at, const std::string& path, const std::string& message) {
     const YAML::Mark m = at.Mark();
-    errors->push_back({file, m.line >= 0 ? m.line + 1 : 0, m.line >= 0 ? m.column + 1 : 0, path, message});
+    errors->push_back(
+        {file, m.line >= 0 ? m.line + 1 : 0, m.line >= 0 ? m.column + 1 : 0, path, message});
   };
   YAML::Node expanded(YAML::NodeType::Sequence);
   bool any = false;
@@ -283,7 +292,8 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
         continue;
       }
       if (!kv.second.IsSequence() || kv.second.size() == 0) {
-        error(kv.second, path + "." + axis.key, "must be a non-empty list of values, e.g. [5, 10, 20]");
+        error(kv.second, path + "." + axis.key,
+              "must be a non-empty list of values, e.g. [5, 10, 20]");
         ok = false;
         continue;
       }
@@ -293,12 +303,14 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
     }
     constexpr std::size_t kMaxRows = 10000;
     if (ok && combinations > kMaxRows) {
-      error(sweep, path, std::to_string(combinations) + " combinations; at most " + std::to_string(kMaxRows));
+      error(sweep, path,
+            std::to_string(combinations) + " combinations; at most " + std::to_string(kMaxRows));
       ok = false;
     }
     if (!ok) continue;
     const YAML::Node label_node = row["label"].IsDefined() ? row["label"] : row["policy"];
-    const std::string base = label_node.IsDefined() && label_node.IsScalar() ? label_node.Scalar() : "row";
+    const std::string base =
+        label_node.IsDefined() && label_node.IsScalar() ? label_node.Scalar() : "row";
     for (std::size_t c = 0; c < combinations; ++c) {
       YAML::Node copy = WithKey(row, "sweep", YAML::Node());
       copy.remove("sweep");

@@ -23,7 +23,8 @@ void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
 
 /// Points the reader's errors about a value set with --set at that option (they would name
 /// line 1 of the file): an error whose key path is an override's, or lies under it.
-void LocateOverrideErrors(const std::vector<std::string>& overrides, std::vector<SuiteError>* errors);
+void LocateOverrideErrors(const std::vector<std::string>& overrides,
+                          std::vector<SuiteError>* errors);
 
 /// Replaces every row with a `sweep:` map of row-relative key paths to value lists, e.g.
 /// `sweep: {humans.count: [5, 10, 20], world.obstacles: [1, 3]}`, by one row per combination

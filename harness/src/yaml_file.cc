@@ -40,8 +40,9 @@ struct Walk {
     if (!n.IsMap() && !n.IsSequence()) return;
     for (const YAML::Node& outer : open) {
       if (outer.is(n)) {
-        Error(n, "this map or list contains an alias (*name) of itself, so it never ends; "
-                 "remove the alias");
+        Error(n,
+              "this map or list contains an alias (*name) of itself, so it never ends; "
+              "remove the alias");
         stopped = true;
         return;
       }
@@ -53,7 +54,8 @@ struct Walk {
         if (kv.first.IsScalar()) {
           const auto [first, inserted] = seen.emplace(kv.first.Scalar(), kv.first.Mark());
           if (!inserted) {
-            Error(kv.first, "key '" + kv.first.Scalar() + "' is given twice in this map (first at line " +
+            Error(kv.first, "key '" + kv.first.Scalar() +
+                                "' is given twice in this map (first at line " +
                                 std::to_string(first->second.line + 1) +
                                 "); only one value would count: remove or rename one");
           }
@@ -70,14 +72,16 @@ struct Walk {
 
 }  // namespace
 
-YAML::Node LoadYamlFile(const fs::path& file, const std::string& what, std::vector<SuiteError>* errors) {
+YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
+                        std::vector<SuiteError>* errors) {
   std::error_code ec;
   if (!fs::exists(file, ec)) {
     errors->push_back({file.string(), 0, 0, "", what + " does not exist"});
     return YAML::Node(YAML::NodeType::Null);
   }
   if (fs::is_directory(file, ec)) {
-    errors->push_back({file.string(), 0, 0, "", "is a folder; give the " + what + " (a .yaml file) in it"});
+    errors->push_back(
+        {file.string(), 0, 0, "", "is a folder; give the " + what + " (a .yaml file) in it"});
     return YAML::Node(YAML::NodeType::Null);
   }
   YAML::Node root;
@@ -87,7 +91,8 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what, std::vect
     errors->push_back({file.string(), 0, 0, "", "cannot read the " + what + " (permissions?)"});
     return YAML::Node(YAML::NodeType::Null);
   } catch (const YAML::Exception& e) {
-    errors->push_back({file.string(), e.mark.line + 1, e.mark.column + 1, "", "not valid YAML: " + e.msg});
+    errors->push_back(
+        {file.string(), e.mark.line + 1, e.mark.column + 1, "", "not valid YAML: " + e.msg});
     return YAML::Node(YAML::NodeType::Null);
   }
   const std::size_t before = errors->size();

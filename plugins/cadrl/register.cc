@@ -6,14 +6,21 @@ namespace crowdsim::cadrl {
 namespace {
 
 ParamSchema Schema() { return value_rl::Schema(value_rl::Model::kCadrl); }
-std::unique_ptr<Policy> Make(const Params& p) { return MakeValuePolicy(value_rl::Model::kCadrl, p); }
+std::unique_ptr<Policy> Make(const Params& p) {
+  return MakeValuePolicy(value_rl::Model::kCadrl, p);
+}
 
 }  // namespace
 
 extern "C++" const PluginDescriptor kDescriptor{
-    kPluginAbiVersion, PluginKind::kPolicy, "cadrl",
+    kPluginAbiVersion,
+    PluginKind::kPolicy,
+    "cadrl",
     "CADRL / CADRL++: pairwise value network, min over humans, optional lidar; one-step lookahead",
-    &Schema, &Make, nullptr, nullptr};
+    &Schema,
+    &Make,
+    nullptr,
+    nullptr};
 
 }  // namespace crowdsim::cadrl
 

@@ -7,7 +7,12 @@ namespace crowdsim::linear {
 ParamSchema Schema() {
   return {
       {"speed_factor", ParamType::kDouble, 1.0, 0.0, 2.0, {}, "speed as a multiple of v_pref"},
-      {"slow_down", ParamType::kBool, true, 0, 1, {},
+      {"slow_down",
+       ParamType::kBool,
+       true,
+       0,
+       1,
+       {},
        "shorten the last step so as not to overshoot the goal"},
   };
 }

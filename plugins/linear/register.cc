@@ -4,9 +4,7 @@
 namespace crowdsim::linear {
 
 extern "C++" const PluginDescriptor kDescriptor = PolicyPlugin<LinearPolicy>(
-    "linear",
-    "straight to the goal at v_pref, ignoring everybody (trivial baseline)",
-    &Schema);
+    "linear", "straight to the goal at v_pref, ignoring everybody (trivial baseline)", &Schema);
 
 }  // namespace crowdsim::linear
 

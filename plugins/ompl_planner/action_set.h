@@ -17,8 +17,8 @@ struct ActionSetParams {
   double v_pref = SimConfig{}.robot_v_pref;  ///< m/s; the speeds are v_pref and v_pref / 2
   double radius = SimConfig{}.robot_radius;  ///< m, the robot's
   double time_step = SimConfig{}.time_step;  ///< s the action is held
-  double horizon = 1.0;     ///< s of prediction checked (at least one time step)
-  double clearance = 0.1;   ///< m of surface distance to keep from every prediction
+  double horizon = 1.0;                      ///< s of prediction checked (at least one time step)
+  double clearance = 0.1;  ///< m of surface distance to keep from every prediction
 };
 
 /// The 16 candidate velocities: speeds {v_pref, v_pref / 2} times the unit vectors at

@@ -11,9 +11,14 @@ std::unique_ptr<Policy> Make(const Params& p) { return MakeValuePolicy(value_rl:
 }  // namespace
 
 extern "C++" const PluginDescriptor kDescriptor{
-    kPluginAbiVersion, PluginKind::kPolicy, "sarl",
+    kPluginAbiVersion,
+    PluginKind::kPolicy,
+    "sarl",
     "SARL / SARL++: self-attention value network over humans, optional lidar; one-step lookahead",
-    &Schema, &Make, nullptr, nullptr};
+    &Schema,
+    &Make,
+    nullptr,
+    nullptr};
 
 }  // namespace crowdsim::sarl
 

@@ -19,7 +19,8 @@ std::string Where(const std::string& file) { return "torchscript: weights file '
 void CheckForward(const torch::jit::Module& module, const std::string& file) {
   const auto forward = module.find_method("forward");
   if (!forward) {
-    throw std::runtime_error(Where(file) + " has no forward method; the policy calls "
+    throw std::runtime_error(Where(file) +
+                             " has no forward method; the policy calls "
                              "forward(obs: Dict[str, Tensor]) -> Tensor (define it, then " +
                              kExport + ")");
   }
@@ -42,9 +43,9 @@ torch::jit::Module LoadPolicyModule(const std::string& file) {
   }
   if (const auto damage = value_rl::FindZipDamage(file)) {
     throw std::runtime_error(
-        Where(file) + " is damaged: " +
-        (damage->entry.empty() ? "" : "entry '" + damage->entry + "': ") + damage->problem +
-        "; export it again with " + kExport + " or copy it again");
+        Where(file) +
+        " is damaged: " + (damage->entry.empty() ? "" : "entry '" + damage->entry + "': ") +
+        damage->problem + "; export it again with " + kExport + " or copy it again");
   }
   torch::jit::Module module;
   try {

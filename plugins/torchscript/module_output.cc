@@ -22,16 +22,16 @@ std::string Expected(Output output, int actions) {
            "action of the action set), e.g. a float tensor of shape (" +
            std::to_string(actions) + ",)";
   }
-  return "output: action expects one integer index in [0, " + std::to_string(actions) +
-         ") or " + std::to_string(actions) +
+  return "output: action expects one integer index in [0, " + std::to_string(actions) + ") or " +
+         std::to_string(actions) +
          " floating-point scores, one per action of the action set (CrowdNav's holonomic "
          "actions by default: crowdsim_bench.holonomic_actions())";
 }
 
 [[noreturn]] void Refuse(const std::string& file, const std::string& returned, Output output,
                          int actions) {
-  throw std::runtime_error("torchscript: the module of '" + file + "' returned " + returned +
-                           "; " + Expected(output, actions) + " (or set `output` to another mode)");
+  throw std::runtime_error("torchscript: the module of '" + file + "' returned " + returned + "; " +
+                           Expected(output, actions) + " (or set `output` to another mode)");
 }
 
 std::string Describe(const at::Tensor& t) {
@@ -48,11 +48,15 @@ const at::Tensor& TensorOf(const c10::IValue& out, Output output, int actions,
   const bool integral = at::isIntegralType(t.scalar_type(), /*includeBool=*/false);
   bool fits = false;
   switch (output) {
-    case Output::kVelocity: fits = floating && t.numel() == 2; break;
+    case Output::kVelocity:
+      fits = floating && t.numel() == 2;
+      break;
     case Output::kAction:
       fits = (integral && t.numel() == 1) || (floating && t.numel() == actions);
       break;
-    case Output::kValues: fits = floating && t.numel() == actions; break;
+    case Output::kValues:
+      fits = floating && t.numel() == actions;
+      break;
   }
   if (!fits) Refuse(file, Describe(t), output, actions);
   return t;
@@ -78,8 +82,7 @@ size_t BestScore(const at::Tensor& scores, const std::string& file) {
 
 }  // namespace
 
-std::vector<double> ValuesFromOutput(const c10::IValue& out, int actions,
-                                     const std::string& file) {
+std::vector<double> ValuesFromOutput(const c10::IValue& out, int actions, const std::string& file) {
   return Scores(TensorOf(out, Output::kValues, actions, file), file, "value");
 }
 
@@ -100,7 +103,8 @@ Action ActionFromOutput(const c10::IValue& out, Output output, std::span<const A
   if (index < 0 || index >= static_cast<int64_t>(actions.size())) {
     throw std::runtime_error("torchscript: the module of '" + file + "' returned action index " +
                              std::to_string(index) + "; valid: 0 to " +
-                             std::to_string(actions.size() - 1) + " (" + Expected(output, count) + ")");
+                             std::to_string(actions.size() - 1) + " (" + Expected(output, count) +
+                             ")");
   }
   return actions[static_cast<size_t>(index)];
 }

@@ -1,8 +1,9 @@
 // What a TorchScript policy's forward returned, as the robot's velocity: in `velocity` mode 2
 // numbers (vx, vy), in `action` mode an index into, or one score per action of, the action
-// set (CrowdNav's 81 holonomic actions by default) (argmax, ties to the earliest), in `values` mode one value per lookahead
-// candidate (the policy adds rewards and discount). Anything else is an error naming the file,
-// the returned shape and dtype, and what the mode expects. Includes libtorch.
+// set (CrowdNav's 81 holonomic actions by default) (argmax, ties to the earliest), in `values` mode
+// one value per lookahead candidate (the policy adds rewards and discount). Anything else is an
+// error naming the file, the returned shape and dtype, and what the mode expects. Includes
+// libtorch.
 #pragma once
 
 #include <ATen/core/ivalue.h>
@@ -23,8 +24,7 @@ Action ActionFromOutput(const c10::IValue& out, Output output, std::span<const A
 
 /// The values of a `values` module (one per lookahead candidate). Throws like ActionFromOutput
 /// when `out` does not fit, or on a NaN value.
-std::vector<double> ValuesFromOutput(const c10::IValue& out, int actions,
-                                     const std::string& file);
+std::vector<double> ValuesFromOutput(const c10::IValue& out, int actions, const std::string& file);
 
 /// Throws like ActionFromOutput when `out` does not fit `output` (the load-time check).
 void CheckOutput(const c10::IValue& out, Output output, int actions, const std::string& file);

@@ -6,37 +6,84 @@ namespace crowdsim::torchscript {
 
 const char* OutputName(Output output) {
   switch (output) {
-    case Output::kVelocity: return "velocity";
-    case Output::kAction: return "action";
-    case Output::kValues: return "values";
+    case Output::kVelocity:
+      return "velocity";
+    case Output::kAction:
+      return "action";
+    case Output::kValues:
+      return "values";
   }
   return "?";
 }
 
 ParamSchema Schema() {
   return {
-      {"weights", ParamType::kString, std::string(""), 0, 0, {},
+      {"weights",
+       ParamType::kString,
+       std::string(""),
+       0,
+       0,
+       {},
        "TorchScript file (torch.jit.script(model).save(path)); the row's `weights:` key sets it"},
-      {"sensors", ParamType::kString, std::string("person"), 0, 0,
+      {"sensors",
+       ParamType::kString,
+       std::string("person"),
+       0,
+       0,
        {"person", "lidar", "lidar+person"},
        "readings the module gets (the row must configure the matching sensors)"},
-      {"humans", ParamType::kInt, std::int64_t{5}, 0, 1000, {},
+      {"humans",
+       ParamType::kInt,
+       std::int64_t{5},
+       0,
+       1000,
+       {},
        "rows of `humans` and `humans_mask` (the row's human count; more when more are seen)"},
-      {"lidar_beams", ParamType::kInt, std::int64_t{45}, 1, 3600, {},
+      {"lidar_beams",
+       ParamType::kInt,
+       std::int64_t{45},
+       1,
+       3600,
+       {},
        "size of `lidar` (must match the lidar2d sensor's `beams`)"},
-      {"output", ParamType::kString, std::string("velocity"), 0, 0, {"velocity", "action", "values"},
+      {"output",
+       ParamType::kString,
+       std::string("velocity"),
+       0,
+       0,
+       {"velocity", "action", "values"},
        "velocity: (vx, vy) m/s world frame; action: an index or one score per action; values: "
        "V(s') of every action's lookahead observation (stacked), the best r + gamma^(dt v_pref) "
        "V(s') acts (as cadrl and sarl)"},
-      {"speed_samples", ParamType::kInt, std::int64_t{kCrowdNavSpeeds}, 1, 64, {},
+      {"speed_samples",
+       ParamType::kInt,
+       std::int64_t{kCrowdNavSpeeds},
+       1,
+       64,
+       {},
        "action set of `action` / `values`: speeds per direction, (e^((i+1)/S) - 1)/(e - 1) * "
        "v_pref (CrowdNav's 5 by default; cadrl and sarl use 2)"},
-      {"rotation_samples", ParamType::kInt, std::int64_t{kCrowdNavDirections}, 1, 360, {},
+      {"rotation_samples",
+       ParamType::kInt,
+       std::int64_t{kCrowdNavDirections},
+       1,
+       360,
+       {},
        "action set: directions k * 360/R degrees in the world frame (CrowdNav's 16; cadrl and "
        "sarl use 8)"},
-      {"stop_action", ParamType::kBool, true, 0, 1, {},
+      {"stop_action",
+       ParamType::kBool,
+       true,
+       0,
+       1,
+       {},
        "action set: the stop action first (CrowdNav's; cadrl and sarl have none)"},
-      {"torch_threads", ParamType::kInt, std::int64_t{1}, 1, 256, {},
+      {"torch_threads",
+       ParamType::kInt,
+       std::int64_t{1},
+       1,
+       256,
+       {},
        "libtorch intra-op threads (1: deterministic, best for one observation at a time)"},
   };
 }
@@ -54,7 +101,7 @@ TorchScriptConfig ConfigFromParams(const Params& params) {
   c.humans = static_cast<int>(params.GetInt("humans"));
   c.lidar_beams = static_cast<int>(params.GetInt("lidar_beams"));
   const std::string& output = params.GetString("output");
-  c.output = output == "action" ? Output::kAction
+  c.output = output == "action"   ? Output::kAction
              : output == "values" ? Output::kValues
                                   : Output::kVelocity;
   c.speed_samples = static_cast<int>(params.GetInt("speed_samples"));

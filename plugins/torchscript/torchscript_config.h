@@ -24,16 +24,16 @@ inline constexpr int kCrowdNavDirections = 16;
 
 /// Everything the policy is built from.
 struct TorchScriptConfig {
-  std::string weights;          ///< resolved path of the TorchScript file
+  std::string weights;             ///< resolved path of the TorchScript file
   std::string sensors = "person";  ///< person | lidar | lidar+person
-  int humans = 5;               ///< rows of `humans` / `humans_mask` (more when more are seen)
-  int lidar_beams = 45;         ///< size of `lidar` (must equal the lidar2d sensor's beams)
+  int humans = 5;                  ///< rows of `humans` / `humans_mask` (more when more are seen)
+  int lidar_beams = 45;            ///< size of `lidar` (must equal the lidar2d sensor's beams)
   Output output = Output::kVelocity;
   /// The action set of `action` and `values` (value_rl's BuildActionSpace, as cadrl and sarl).
   int speed_samples = kCrowdNavSpeeds;
   int rotation_samples = kCrowdNavDirections;
   bool stop_action = true;
-  int torch_threads = 1;        ///< libtorch intra-op threads
+  int torch_threads = 1;  ///< libtorch intra-op threads
 
   bool UsesPerson() const { return sensors != "lidar"; }
   bool UsesLidar() const { return sensors != "person"; }

@@ -8,20 +8,20 @@
 #include <string>
 #include <vector>
 
-#include "value_rl/action_space.h"
-#include "value_rl/value_policy.h"
 #include "module_file.h"
 #include "module_output.h"
 #include "observation_tensors.h"
+#include "value_rl/action_space.h"
+#include "value_rl/value_policy.h"
 
 namespace crowdsim::torchscript {
 
 struct TorchScriptPolicy::Impl {
   TorchScriptConfig config;
   torch::jit::Module module;
-  double actions_v_pref = -1.0;  ///< v_pref of `actions`
-  std::vector<Action> actions;   ///< CrowdNav's holonomic actions at actions_v_pref
-  double gamma = 0.9;            ///< the episode's discount (`values` mode)
+  double actions_v_pref = -1.0;              ///< v_pref of `actions`
+  std::vector<Action> actions;               ///< CrowdNav's holonomic actions at actions_v_pref
+  double gamma = 0.9;                        ///< the episode's discount (`values` mode)
   double time_step = SimConfig{}.time_step;  ///< the episode's, s between decisions
   std::vector<LookaheadOutcome> outcomes;
 
@@ -51,8 +51,8 @@ struct TorchScriptPolicy::Impl {
         throw std::runtime_error("torchscript: the " + reading.sensor + " sensor has " +
                                  std::to_string(reading.ranges.size()) +
                                  " beams but parameter lidar_beams is " +
-                                 std::to_string(config.lidar_beams) + "; set lidar_beams: " +
-                                 std::to_string(reading.ranges.size()));
+                                 std::to_string(config.lidar_beams) +
+                                 "; set lidar_beams: " + std::to_string(reading.ranges.size()));
       }
       return;
     }
@@ -71,13 +71,14 @@ struct TorchScriptPolicy::Impl {
   /// ValuePolicy's tie tolerance of the best, as the built-in cadrl and sarl decide.
   Action DecideByValues(const Observation& obs) {
     if (obs.lookahead == nullptr) {
-      throw std::runtime_error("torchscript: output: values needs the lookahead (robot policies only)");
+      throw std::runtime_error(
+          "torchscript: output: values needs the lookahead (robot policies only)");
     }
     const std::vector<Action>& candidates = ActionsAt(obs.self.v_pref);
     obs.lookahead->Evaluate(candidates, &outcomes);
-    const std::vector<double> next = ValuesFromOutput(
-        Forward(MakeLookaheadDict(outcomes, obs.time + time_step, config.humans)),
-        config.ActionCount(), config.weights);
+    const std::vector<double> next =
+        ValuesFromOutput(Forward(MakeLookaheadDict(outcomes, obs.time + time_step, config.humans)),
+                         config.ActionCount(), config.weights);
     const double discount = std::pow(gamma, time_step * obs.self.v_pref);
     std::vector<float> values(next.size());
     for (size_t k = 0; k < next.size(); ++k) {

@@ -76,7 +76,8 @@ class Env {
 
   py::tuple Step(double vx, double vy) {
     if (!episodes_.started()) throw py::value_error("step() before reset()");
-    if (episodes_.episode().done()) throw py::value_error("step() after the episode ended: call reset()");
+    if (episodes_.episode().done())
+      throw py::value_error("step() after the episode ended: call reset()");
     const StepInfo info = episodes_.Step(Vec2(vx, vy));
     const EpisodeResult& r = episodes_.episode().result();
     py::dict obs = ObservationDict(episodes_.observation(), humans());
@@ -119,11 +120,14 @@ class Env {
   py::array_t<std::uint8_t> Render(double scale) const {
     const Episode& episode = Current();
     if (episode.result().trajectory.empty())
-      throw py::value_error("render() needs a recorded episode: Env(..., render_mode=\"rgb_array\")");
+      throw py::value_error(
+          "render() needs a recorded episode: Env(..., render_mode=\"rgb_array\")");
     const std::string title = row_->suite.name + " · " + row_->row.label + " · episode " +
                               std::to_string(episodes_.episode_index());
-    const render::RgbImage image = RenderEpisodeFrame(episodes_.scenario(), episode.result(), title, scale);
-    py::array_t<std::uint8_t> out({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
+    const render::RgbImage image =
+        RenderEpisodeFrame(episodes_.scenario(), episode.result(), title, scale);
+    py::array_t<std::uint8_t> out(
+        {py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
     std::copy(image.pixels.begin(), image.pixels.end(), out.mutable_data());
     return out;
   }
@@ -187,7 +191,8 @@ RunSummary RunWithoutGil(const Suite& suite, PluginRegistry& registry, const Run
 py::list Evaluate(py::object policy, const std::string& suite_path, const py::object& row,
                   const std::string& label, const std::string& out, int episodes, bool fresh,
                   const std::vector<std::string>& set, bool progress) {
-  if (!PyCallable_Check(policy.ptr())) throw py::type_error("policy must be callable: policy(obs) -> (vx, vy)");
+  if (!PyCallable_Check(policy.ptr()))
+    throw py::type_error("policy must be callable: policy(obs) -> (vx, vy)");
   PluginRegistry registry;
   Suite suite = LoadSuiteOrThrow(suite_path, registry, set);
   const RowSpec row_spec = WithPythonRobot(suite.rows[RowIndex(suite, row)], label);
@@ -196,7 +201,7 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
   suite.canonical += "\nrobot: python policy '" + label + "'";
   RunOptions options;
   options.out_dir = out.empty() ? DefaultRunDir(suite) : std::filesystem::path(out);
-  options.jobs = 1;  // one Python interpreter: episodes one after another
+  options.jobs = 1;                         // one Python interpreter: episodes one after another
   options.isolation = IsolationMode::kOff;  // the policy lives in this interpreter: no fork
   options.episodes = episodes;
   options.fresh = fresh;
@@ -227,7 +232,8 @@ py::list RunSuiteFile(const std::string& suite_path, const std::string& out, int
 PYBIND11_MODULE(_core, m) {
   using namespace crowdsim::python;
   m.doc() = "crowdsim-bench's C++ core (use the crowdsim_bench package)";
-  m.attr("__version__") = std::string(crowdsim::Version()) + " (commit " + crowdsim::GitCommit() + ")";
+  m.attr("__version__") =
+      std::string(crowdsim::Version()) + " (commit " + crowdsim::GitCommit() + ")";
   py::class_<Env>(m, "Env")
       .def(py::init<const std::string&, const py::object&, const std::vector<std::string>&>(),
            py::arg("suite"), py::arg("row"), py::arg("set") = std::vector<std::string>{})

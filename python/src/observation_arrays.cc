@@ -13,8 +13,8 @@ namespace crowdsim::python {
 void WriteRobotState(const Observation& obs, double* out) {
   const AgentState& s = obs.self;
   const double values[kRobotStateSize] = {s.position.x(), s.position.y(), s.velocity.x(),
-                                          s.velocity.y(),  s.goal.x(),     s.goal.y(),
-                                          s.radius,        s.v_pref,       s.heading};
+                                          s.velocity.y(), s.goal.x(),     s.goal.y(),
+                                          s.radius,       s.v_pref,       s.heading};
   std::copy(values, values + kRobotStateSize, out);
 }
 

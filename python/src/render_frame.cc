@@ -11,7 +11,8 @@ render::RgbImage RenderEpisodeFrame(const Scenario& scenario, const EpisodeResul
   figure.scenario = &scenario;
   figure.title = title;
   const std::string outcome = EpisodeStatusName(result.status);
-  figure.robots.push_back(render::RobotTrack{"robot: " + outcome, &result, render::palette::kRobot});
+  figure.robots.push_back(
+      render::RobotTrack{"robot: " + outcome, &result, render::palette::kRobot});
   const render::Drawing frame = render::DrawEpisodeFrame(figure, render::FrameCount(figure) - 1);
   return render::Rasterize(frame, scale);
 }

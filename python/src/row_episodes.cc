@@ -6,15 +6,19 @@
 namespace crowdsim::python {
 
 RowEpisodes::RowEpisodes(const Suite& suite, const RowSpec& row, PluginRegistry& registry)
-    : suite_(suite), row_(row), world_(registry.MakeWorld(*row.world.loaded, row.world.params)),
+    : suite_(suite),
+      row_(row),
+      world_(registry.MakeWorld(*row.world.loaded, row.world.params)),
       instance_(std::make_unique<RowInstance>(row, registry)),
       policy_(dynamic_cast<PythonPolicy*>(&instance_->robot())) {
-  if (policy_ == nullptr) throw std::logic_error("RowEpisodes: the row's robot is not the Python policy");
+  if (policy_ == nullptr)
+    throw std::logic_error("RowEpisodes: the row's robot is not the Python policy");
   instance_->Agents(static_cast<size_t>(row.humans.count));
 }
 
 const Observation& RowEpisodes::Reset(int episode, bool record) {
-  if (episode < 0) throw std::invalid_argument("episode must be >= 0, got " + std::to_string(episode));
+  if (episode < 0)
+    throw std::invalid_argument("episode must be >= 0, got " + std::to_string(episode));
   episode_.reset();
   scenario_ = world_->Make(MakeEpisodeRequest(suite_, row_, *world_, episode));
   try {

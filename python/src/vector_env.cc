@@ -89,7 +89,8 @@ void VectorEnv::Write(size_t i, const Observation& obs, Batch& b) const {
 }
 
 py::dict VectorEnv::Reset(int first) {
-  if (first < 0) throw py::value_error("the first episode must be >= 0, got " + std::to_string(first));
+  if (first < 0)
+    throw py::value_error("the first episode must be >= 0, got " + std::to_string(first));
   Batch b = MakeBatch();
   const int n = num_envs();
   {
@@ -109,7 +110,8 @@ py::dict VectorEnv::Reset(int first) {
   return obs;
 }
 
-py::tuple VectorEnv::Step(const py::array_t<double, py::array::c_style | py::array::forcecast>& actions) {
+py::tuple VectorEnv::Step(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& actions) {
   const py::ssize_t n = num_envs();
   if (actions.ndim() != 2 || actions.shape(0) != n || actions.shape(1) != 2) {
     throw py::value_error("actions must have shape (" + std::to_string(n) +

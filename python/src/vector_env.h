@@ -30,7 +30,8 @@ class VectorEnv {
   pybind11::dict Reset(int first);
   /// actions: (n, 2) velocities, m/s, world frame. Returns (obs, reward, terminated,
   /// truncated, status, episode): status as EpisodeStatus codes (0 = running).
-  pybind11::tuple Step(const pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>& actions);
+  pybind11::tuple Step(const pybind11::array_t<double, pybind11::array::c_style |
+                                                           pybind11::array::forcecast>& actions);
 
   int num_envs() const { return static_cast<int>(envs_.size()); }
   int threads() const { return pool_.threads(); }

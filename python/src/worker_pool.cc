@@ -5,7 +5,8 @@
 namespace crowdsim::python {
 
 WorkerPool::WorkerPool(int threads) {
-  for (int part = 1; part < std::max(1, threads); ++part) workers_.emplace_back([this, part] { Loop(part); });
+  for (int part = 1; part < std::max(1, threads); ++part)
+    workers_.emplace_back([this, part] { Loop(part); });
 }
 
 WorkerPool::~WorkerPool() {

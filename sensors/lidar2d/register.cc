@@ -4,9 +4,7 @@
 namespace crowdsim::lidar2d {
 
 extern "C++" const PluginDescriptor kDescriptor = SensorPlugin<Lidar2dSensor>(
-    "lidar2d",
-    "planar lidar: ranges to obstacles (and humans) along a fan of beams",
-    &Schema);
+    "lidar2d", "planar lidar: ranges to obstacles (and humans) along a fan of beams", &Schema);
 
 }  // namespace crowdsim::lidar2d
 

@@ -4,7 +4,12 @@ namespace crowdsim::person {
 
 ParamSchema Schema() {
   return {
-      {"max_range", ParamType::kDouble, 0.0, 0.0, kInfinity, {},
+      {"max_range",
+       ParamType::kDouble,
+       0.0,
+       0.0,
+       kInfinity,
+       {},
        "m; humans whose centre is farther are not reported; 0 = unlimited"},
   };
 }

@@ -4,8 +4,7 @@
 namespace crowdsim::person {
 
 extern "C++" const PluginDescriptor kDescriptor = SensorPlugin<PersonSensor>(
-    "person",
-    "people detector: every human's position, velocity and radius in the robot frame",
+    "person", "people detector: every human's position, velocity and radius in the robot frame",
     &Schema);
 
 }  // namespace crowdsim::person

@@ -37,12 +37,15 @@ struct Setup {
       agents.humans.push_back(humans.back().get());
     }
     // Three obstacles and humans crossing the room in both directions.
-    scenario = testing::MakeScenario(
-        testing::MakeRoom({Rect::FromCorners(-3.5, 1.0, -0.5, 4.0), Rect::FromCorners(1.0, -4.0, 4.0, -1.0),
-                           Rect::FromCorners(1.5, 1.5, 3.5, 3.5)}),
-        Vec2(-4.0, -4.0), Vec2(4.2, 4.2),
-        {{Vec2(-4, 0), Vec2(4, 0)}, {Vec2(4, 0.5), Vec2(-4, 0.3)}, {Vec2(0, -4.2), Vec2(0, 4.2)},
-         {Vec2(-1, 4.5), Vec2(0.5, -4.5)}, {Vec2(4.5, -0.2), Vec2(-4.5, -0.5)}});
+    scenario = testing::MakeScenario(testing::MakeRoom({Rect::FromCorners(-3.5, 1.0, -0.5, 4.0),
+                                                        Rect::FromCorners(1.0, -4.0, 4.0, -1.0),
+                                                        Rect::FromCorners(1.5, 1.5, 3.5, 3.5)}),
+                                     Vec2(-4.0, -4.0), Vec2(4.2, 4.2),
+                                     {{Vec2(-4, 0), Vec2(4, 0)},
+                                      {Vec2(4, 0.5), Vec2(-4, 0.3)},
+                                      {Vec2(0, -4.2), Vec2(0, 4.2)},
+                                      {Vec2(-1, 4.5), Vec2(0.5, -4.5)},
+                                      {Vec2(4.5, -0.2), Vec2(-4.5, -0.5)}});
   }
 };
 
@@ -61,11 +64,13 @@ void BM_EpisodeStep(benchmark::State& state, const std::string& human_policy) {
     episode->Step();
     ++steps;
   }
-  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
+  state.counters["steps_per_s"] =
+      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
 }
 
 BENCHMARK_CAPTURE(BM_EpisodeStep, orca_humans, std::string("orca"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_EpisodeStep, linear_humans, std::string("linear"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_EpisodeStep, linear_humans, std::string("linear"))
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace crowdsim

@@ -18,7 +18,7 @@ constexpr int kOrigins = 64;
 struct Scene {
   std::shared_ptr<const StaticMap> map;
   std::vector<Circle> humans;
-  std::vector<Vec2> origins;  // free of rectangles and humans; scans cycle through them
+  std::vector<Vec2> origins;   // free of rectangles and humans; scans cycle through them
   std::vector<double> angles;  // 45 beams over 180 deg, world frame
 };
 
@@ -145,8 +145,7 @@ BENCHMARK_CAPTURE(Scan, room_brute_force, &Room, Variant::kBruteForce)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Scan, room_bullet_no_humans, &Room, Variant::kBullet)
     ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(Scan, floorplan_fast, &FloorPlan, Variant::kFast)
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Scan, floorplan_fast, &FloorPlan, Variant::kFast)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Scan, floorplan_brute_force, &FloorPlan, Variant::kBruteForce)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Scan, floorplan_bullet_no_humans, &FloorPlan, Variant::kBullet)

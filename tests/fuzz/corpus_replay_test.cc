@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> CorpusFiles(const std::string& target) {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(testing::SourceDir() / "tests/fuzz/corpus" / target)) {
+  for (const auto& entry :
+       fs::directory_iterator(testing::SourceDir() / "tests/fuzz/corpus" / target)) {
     if (entry.is_regular_file()) files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());

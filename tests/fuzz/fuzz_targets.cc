@@ -39,8 +39,9 @@ std::vector<std::string> Overrides(std::string_view input) {
   constexpr std::string_view kPrefix = "#set ";
   while (input.starts_with(kPrefix)) {
     const size_t end = input.find('\n');
-    out.emplace_back(input.substr(kPrefix.size(), end == std::string_view::npos ? std::string_view::npos
-                                                                                : end - kPrefix.size()));
+    out.emplace_back(input.substr(kPrefix.size(), end == std::string_view::npos
+                                                      ? std::string_view::npos
+                                                      : end - kPrefix.size()));
     if (end == std::string_view::npos) break;
     input.remove_prefix(end + 1);
   }
@@ -49,12 +50,14 @@ std::vector<std::string> Overrides(std::string_view input) {
 
 /// Errors must exist exactly when there is no result, and each must name the file (or the
 /// `--set` override it is about) and say something.
-std::string CheckErrors(bool has_result, const std::vector<SuiteError>& errors, const fs::path& file) {
+std::string CheckErrors(bool has_result, const std::vector<SuiteError>& errors,
+                        const fs::path& file) {
   if (has_result == !errors.empty()) {
     return has_result ? "a result together with errors" : "neither a result nor an error";
   }
   for (const SuiteError& e : errors) {
-    if (e.file != file.string() && !e.file.starts_with("--set ")) return "an error names another file: " + e.Format();
+    if (e.file != file.string() && !e.file.starts_with("--set "))
+      return "an error names another file: " + e.Format();
     if (e.message.empty()) return "an error without a message: " + e.Format();
     if (e.line < 0 || e.column < 0) return "an error with a negative position: " + e.Format();
   }
@@ -68,7 +71,8 @@ std::string CheckPlugin(const PluginUse& use, const std::string& what) {
 std::string SuiteReader(std::string_view input) {
   const fs::path file = WriteScratch("suite.yaml", input);
   const SuiteLoadResult r = LoadSuite(file, Registry(), Overrides(input));
-  if (auto problem = CheckErrors(r.suite.has_value(), r.errors, file); !problem.empty()) return problem;
+  if (auto problem = CheckErrors(r.suite.has_value(), r.errors, file); !problem.empty())
+    return problem;
   if (!r.suite) return "";
   if (r.suite->rows.empty()) return "a suite without rows was accepted";
   for (const RowSpec& row : r.suite->rows) {
@@ -77,7 +81,8 @@ std::string SuiteReader(std::string_view input) {
       if (!problem.empty()) return "row '" + row.label + "': " + problem;
     }
     for (const PluginUse& sensor : row.sensors) {
-      if (auto problem = CheckPlugin(sensor, "sensor"); !problem.empty()) return "row '" + row.label + "': " + problem;
+      if (auto problem = CheckPlugin(sensor, "sensor"); !problem.empty())
+        return "row '" + row.label + "': " + problem;
     }
   }
   return "";
@@ -85,13 +90,15 @@ std::string SuiteReader(std::string_view input) {
 
 std::string TrainingReader(std::string_view input) {
   const fs::path file = WriteScratch("train.yaml", input);
-  const training::TrainSpecLoadResult r = training::LoadTrainSpec(file, Registry(), Overrides(input));
-  if (auto problem = CheckErrors(r.spec.has_value(), r.errors, file); !problem.empty()) return problem;
+  const training::TrainSpecLoadResult r =
+      training::LoadTrainSpec(file, Registry(), Overrides(input));
+  if (auto problem = CheckErrors(r.spec.has_value(), r.errors, file); !problem.empty())
+    return problem;
   if (!r.spec) return "";
   const RowSpec& row = r.spec->row;
-  for (const auto& problem : {CheckPlugin(row.policy, "policy"), CheckPlugin(row.world, "world"),
-                              CheckPlugin(row.humans.policy, "human policy"),
-                              CheckPlugin(r.spec->teacher, "teacher")}) {
+  for (const auto& problem :
+       {CheckPlugin(row.policy, "policy"), CheckPlugin(row.world, "world"),
+        CheckPlugin(row.humans.policy, "human policy"), CheckPlugin(r.spec->teacher, "teacher")}) {
     if (!problem.empty()) return problem;
   }
   for (const auto& sensor : row.sensors) {
@@ -119,7 +126,9 @@ std::string CheckWorld(const WorldFile& w) {
 
 /// A WorldFileError must name the file it is about.
 std::string CheckWorldError(const WorldFileError& e, const fs::path& file) {
-  return std::string_view(e.what()).starts_with(file.string()) ? "" : std::string("error without the file name: ") + e.what();
+  return std::string_view(e.what()).starts_with(file.string())
+             ? ""
+             : std::string("error without the file name: ") + e.what();
 }
 
 /// Both entry points of the world file reader: a single world and a world set.
@@ -144,9 +153,11 @@ std::string WorldReader(std::string_view input) {
 
 const std::vector<FuzzTarget>& FuzzTargets() {
   static const std::vector<FuzzTarget> targets = {
-      {"suite_reader", "LoadSuite: a suite file (with leading '#set k=v' lines as --set overrides)", SuiteReader},
+      {"suite_reader", "LoadSuite: a suite file (with leading '#set k=v' lines as --set overrides)",
+       SuiteReader},
       {"world_reader", "ReadWorldFile and ReadWorldSet: a world file or a world set", WorldReader},
-      {"training_reader", "LoadTrainSpec: a training file (leading '#set k=v' lines as --set)", TrainingReader},
+      {"training_reader", "LoadTrainSpec: a training file (leading '#set k=v' lines as --set)",
+       TrainingReader},
   };
   return targets;
 }

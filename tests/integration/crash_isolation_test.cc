@@ -23,7 +23,8 @@ using testing::TempDir;
 std::string MisbehavingSuite() {
   const std::string plugin = (testing::FixturePluginDir() / "crowdsim_throwing_policy.so").string();
   auto row = [&](const std::string& mode) {
-    return "  - {label: " + mode + ", policy: " + plugin + ", params: {mode: " + mode + ", fail_after_steps: 0, good_episodes: 2}}\n";
+    return "  - {label: " + mode + ", policy: " + plugin + ", params: {mode: " + mode +
+           ", fail_after_steps: 0, good_episodes: 2}}\n";
   };
   return "name: misbehaving\nepisodes: 4\nseed: 5\nepisode_timeout_s: 1\n"
          "world: {source: random_rect, obstacles: 1}\nhumans: {count: 2, policy: linear}\nrows:\n" +
@@ -61,9 +62,13 @@ class CrashIsolationTest : public ::testing::Test {
   }
   RunSummary Run(const Suite& s, const std::string& out, int jobs,
                  std::optional<IsolationMode> isolation = std::nullopt) {
-    return RunSuite(s, registry_, {.out_dir = dir_.path() / out, .jobs = jobs, .isolation = isolation, .progress = false});
+    return RunSuite(
+        s, registry_,
+        {.out_dir = dir_.path() / out, .jobs = jobs, .isolation = isolation, .progress = false});
   }
-  std::string Manifest(const std::string& out) { return ReadText(dir_.path() / out / "manifest.json"); }
+  std::string Manifest(const std::string& out) {
+    return ReadText(dir_.path() / out / "manifest.json");
+  }
 
   TempDir dir_;
   PluginRegistry registry_{{testing::PluginDir(), testing::FixturePluginDir()}};
@@ -79,7 +84,9 @@ TEST_F(CrashIsolationTest, CrashesAndHangsCostTheirEpisodeNotTheRun) {
   EXPECT_NE(Manifest("out").find("\"isolated\": true"), std::string::npos);
 
   const std::map<std::string, const char*> signal = {
-      {"segfault", "signal SIGSEGV"}, {"abort", "signal SIGABRT"}, {"exit", "exited with status 3"},
+      {"segfault", "signal SIGSEGV"},
+      {"abort", "signal SIGABRT"},
+      {"exit", "exited with status 3"},
       {"hang", "killed at the episode_timeout_s of 1 s"}};
   for (const TableRow& row : r.rows) {
     const RowMetrics& m = row.metrics;
@@ -90,7 +97,8 @@ TEST_F(CrashIsolationTest, CrashesAndHangsCostTheirEpisodeNotTheRun) {
                     m.policy_crash_rate + m.policy_timeout_rate,
                 1.0, 1e-12);
     const std::string label = row.Label();
-    EXPECT_DOUBLE_EQ(m.policy_crash_rate, label == "segfault" || label == "abort" || label == "exit" ? 0.25 : 0.0);
+    EXPECT_DOUBLE_EQ(m.policy_crash_rate,
+                     label == "segfault" || label == "abort" || label == "exit" ? 0.25 : 0.0);
     EXPECT_DOUBLE_EQ(m.policy_timeout_rate, label == "hang" ? 0.25 : 0.0);
     // A thrown int is a policy error like any other throw, in every episode after the second.
     EXPECT_DOUBLE_EQ(m.policy_error_rate, label == "throw_int" ? 0.5 : 0.0);
@@ -151,7 +159,9 @@ TEST_F(CrashIsolationTest, AutoIsolatesOnlyPluginsFromOutsideTheHarness) {
   Run(LoadOrDie(kPlainSuite), "own", 1);
   EXPECT_NE(Manifest("own").find("\"isolated\": false"), std::string::npos);
   // A fixture plugin (not in the harness's plugin folder) turns isolation on, off overrides.
-  const std::string outside = std::string(kPlainSuite) + "  - {label: fine, policy: throwing_policy, params: {good_episodes: 1000}}\n";
+  const std::string outside =
+      std::string(kPlainSuite) +
+      "  - {label: fine, policy: throwing_policy, params: {good_episodes: 1000}}\n";
   Run(LoadOrDie(outside), "outside", 1);
   EXPECT_NE(Manifest("outside").find("\"isolated\": true"), std::string::npos);
   Run(LoadOrDie(outside, {"isolation=off"}), "off", 1);
@@ -162,11 +172,14 @@ TEST_F(CrashIsolationTest, AutoIsolatesOnlyPluginsFromOutsideTheHarness) {
 }
 
 TEST_F(CrashIsolationTest, SuiteKeysAreChecked) {
-  const std::string base = "name: k\nepisodes: 2\nworld: {source: random_rect}\nrows:\n  - {label: a, policy: linear}\n";
-  EXPECT_NE(LoadErrors("isolation: sometimes\n" + base).find("isolation: unknown value 'sometimes' (valid: auto, on, off)"),
+  const std::string base =
+      "name: k\nepisodes: 2\nworld: {source: random_rect}\nrows:\n  - {label: a, policy: linear}\n";
+  EXPECT_NE(LoadErrors("isolation: sometimes\n" + base)
+                .find("isolation: unknown value 'sometimes' (valid: auto, on, off)"),
             std::string::npos)
       << LoadErrors("isolation: sometimes\n" + base);
-  EXPECT_NE(LoadErrors("episode_timeout_s: -1\n" + base).find("episode_timeout_s: value -1 is out of range"),
+  EXPECT_NE(LoadErrors("episode_timeout_s: -1\n" + base)
+                .find("episode_timeout_s: value -1 is out of range"),
             std::string::npos)
       << LoadErrors("episode_timeout_s: -1\n" + base);
   const std::string both = LoadErrors("isolation: off\nepisode_timeout_s: 5\n" + base);

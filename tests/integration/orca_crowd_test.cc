@@ -53,7 +53,8 @@ TEST(OrcaCrowd, HumansReachGoalsInThreeObstacleTestLayoutsAndStayOutOfObstacles)
         if (ep.world().DiscOverlaps(h.position, h.radius - 1e-6)) {
           if (overlaps++ == 0) {
             first_overlap = sc.layout + " at t=" + std::to_string(ep.time()) + " (" +
-                            std::to_string(h.position.x()) + ", " + std::to_string(h.position.y()) + ")";
+                            std::to_string(h.position.x()) + ", " + std::to_string(h.position.y()) +
+                            ")";
           }
         }
       }

@@ -2,8 +2,8 @@
 // errors recorded without stopping, and the CLI's contract.
 #include <gtest/gtest.h>
 
-#include <regex>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "crowdsim/results.h"
@@ -74,9 +74,11 @@ TEST_F(RunSuiteTest, SameResultsForOneAndTwoJobs) {
 // value with the one this test prints, rerun the committed results/ it affects, and say in the
 // commit message why the results changed.
 TEST_F(RunSuiteTest, QuickSuiteEpisodesHaveTheirGoldenHash) {
-  constexpr const char* kQuickEpisodesSha256 = "c63df6c07b87ad125aa8ab806b54f8184ffdbc18726cb91b736a62208a7d621b";
+  constexpr const char* kQuickEpisodesSha256 =
+      "c63df6c07b87ad125aa8ab806b54f8184ffdbc18726cb91b736a62208a7d621b";
   PluginRegistry registry;
-  const SuiteLoadResult loaded = LoadSuite(testing::SourceDir() / "suites" / "quick.yaml", registry);
+  const SuiteLoadResult loaded =
+      LoadSuite(testing::SourceDir() / "suites" / "quick.yaml", registry);
   ASSERT_TRUE(loaded.suite);
   RunOptions o;
   o.out_dir = dir_.path() / "quick";
@@ -89,7 +91,8 @@ TEST_F(RunSuiteTest, QuickSuiteEpisodesHaveTheirGoldenHash) {
   const auto [rc, sum] = Shell("sha256sum " + (dir_.path() / "kept.csv").string());
   ASSERT_EQ(rc, 0) << sum;
   EXPECT_EQ(sum.substr(0, sum.find(' ')), kQuickEpisodesSha256)
-      << "the quick suite's episodes changed (first line: " << kept.substr(kept.find('\n') + 1, 120) << ")";
+      << "the quick suite's episodes changed (first line: " << kept.substr(kept.find('\n') + 1, 120)
+      << ")";
 }
 
 TEST_F(RunSuiteTest, ResumesAfterInterruptionWithTheSameResults) {
@@ -184,7 +187,8 @@ rows:
 // (rerun the suite, commit its results, say why).
 TEST_F(RunSuiteTest, CommittedBaselinesAreReproducedExactly) {
   PluginRegistry registry;
-  const SuiteLoadResult loaded = LoadSuite(testing::SourceDir() / "suites" / "baselines.yaml", registry);
+  const SuiteLoadResult loaded =
+      LoadSuite(testing::SourceDir() / "suites" / "baselines.yaml", registry);
   ASSERT_TRUE(loaded.suite);
   constexpr int kEpisodes = 40;
   RunOptions o;
@@ -194,12 +198,14 @@ TEST_F(RunSuiteTest, CommittedBaselinesAreReproducedExactly) {
   o.progress = false;
   RunSuite(*loaded.suite, registry, o);
   // The committed file's lines of episodes 0..39 of each row, in the file's order.
-  std::istringstream committed(ReadText(testing::SourceDir() / "results" / "baselines" / "episodes.csv"));
+  std::istringstream committed(
+      ReadText(testing::SourceDir() / "results" / "baselines" / "episodes.csv"));
   std::string expected, line;
   for (int i = 0; std::getline(committed, line); ++i) {
     const auto first = line.find(',');
     const auto second = line.find(',', first + 1);
-    if (i == 0 || std::stoi(line.substr(first + 1, second - first - 1)) < kEpisodes) expected += line + "\n";
+    if (i == 0 || std::stoi(line.substr(first + 1, second - first - 1)) < kEpisodes)
+      expected += line + "\n";
   }
   const std::string ours = ReadText(dir_.path() / "golden" / "episodes.csv");
   EXPECT_EQ(std::count(ours.begin(), ours.end(), '\n'), 1 + 6 * kEpisodes);
@@ -276,8 +282,9 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
     o.progress = false;
     episodes += RunSuite(s, registry_, o).episodes_run;
     EXPECT_FALSE(std::filesystem::exists(o.out_dir / "table.md"));
-    EXPECT_NE(ReadText(o.out_dir / "manifest.json").find("\"shard\": \"" + std::to_string(k) + "/3\""),
-              std::string::npos);
+    EXPECT_NE(
+        ReadText(o.out_dir / "manifest.json").find("\"shard\": \"" + std::to_string(k) + "/3\""),
+        std::string::npos);
     shards.push_back(o.out_dir);
   }
   EXPECT_EQ(episodes, 2 * 12);  // disjoint slices that cover the suite
@@ -288,7 +295,8 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
             WithoutTimingColumns(ReadText(dir_.path() / "merged" / "episodes.csv")));
   EXPECT_EQ(ReadText(dir_.path() / "whole" / "table.csv").substr(0, 200),
             ReadText(dir_.path() / "merged" / "table.csv").substr(0, 200));
-  EXPECT_EQ(ReadManifestField(dir_.path() / "merged" / "manifest.json", "config_hash"), s.ConfigHash());
+  EXPECT_EQ(ReadManifestField(dir_.path() / "merged" / "manifest.json", "config_hash"),
+            s.ConfigHash());
 
   // A missing shard, a shard given twice, a shard of another configuration: each named.
   auto merge_error = [&](const std::vector<std::filesystem::path>& dirs) {
@@ -299,9 +307,12 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(merge_error({shards[0], shards[1]}).find("is in none of the 2 folders"), std::string::npos);
-  EXPECT_NE(merge_error({shards[0], shards[1], shards[1]}).find("shard 2/3 is given twice"), std::string::npos);
-  EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "whole"}).find("is in both"), std::string::npos);
+  EXPECT_NE(merge_error({shards[0], shards[1]}).find("is in none of the 2 folders"),
+            std::string::npos);
+  EXPECT_NE(merge_error({shards[0], shards[1], shards[1]}).find("shard 2/3 is given twice"),
+            std::string::npos);
+  EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "whole"}).find("is in both"),
+            std::string::npos);
   std::string other = kSuite;
   other.replace(other.find("seed: 11"), 8, "seed: 12");
   const Suite t = LoadOrDie(other);
@@ -311,7 +322,8 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   o.shard_index = 3;
   o.progress = false;
   RunSuite(t, registry_, o);
-  EXPECT_NE(merge_error({shards[0], shards[1], o.out_dir}).find("holds another configuration"), std::string::npos);
+  EXPECT_NE(merge_error({shards[0], shards[1], o.out_dir}).find("holds another configuration"),
+            std::string::npos);
 }
 
 TEST_F(RunSuiteTest, PolicyErrorIsRecordedAndTheSuiteGoesOn) {
@@ -336,7 +348,10 @@ TEST_F(RunSuiteTest, WritesTablesAndStrictManifest) {
   const Suite s = LoadOrDie(kSuite);
   const RunSummary r = Run(s, "out", 2, 4);
   const std::string md = ReadText(dir_.path() / "out" / "table.md");
-  EXPECT_NE(md.find("| row | label | sensors | success rate | collision rate | timeout rate | nav. time | danger freq. |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| row | label | sensors | success rate | collision rate | timeout rate | nav. "
+                    "time | danger freq. |"),
+            std::string::npos)
+      << md;
   EXPECT_EQ(md, r.table_markdown);
   const std::string manifest = ReadText(dir_.path() / "out" / "manifest.json");
   EXPECT_NE(manifest.find("\"config_hash\": \"" + s.ConfigHash() + "\""), std::string::npos);
@@ -350,24 +365,30 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
   const auto suite = dir_.Write("cli.yaml", kSuite);
   const std::string out = (dir_.path() / "cli-out").string();
-  auto [rc, text] = Shell(exe + " run " + suite.string() + " --episodes 2 --jobs 2 --quiet --out " + out);
+  auto [rc, text] =
+      Shell(exe + " run " + suite.string() + " --episodes 2 --jobs 2 --quiet --out " + out);
   EXPECT_EQ(rc, 0) << text;
   EXPECT_NE(text.find("| 1 | linear |"), std::string::npos) << text;
   EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / "manifest.json"));
 
   auto [vrc, vtext] = Shell(exe + " validate " + suite.string());
   EXPECT_EQ(vrc, 0) << vtext;
-  const auto bad = dir_.Write("bad.yaml", "name: bad\nworld: {source: random_rect}\nrows:\n  - {policy: orcaa}\n");
+  const auto bad = dir_.Write(
+      "bad.yaml", "name: bad\nworld: {source: random_rect}\nrows:\n  - {policy: orcaa}\n");
   auto [brc, btext] = Shell(exe + " validate " + bad.string());
   EXPECT_EQ(brc, 2) << btext;
-  EXPECT_NE(btext.find("bad.yaml:4:14: rows[0].policy: unknown policy plugin 'orcaa'"), std::string::npos) << btext;
+  EXPECT_NE(btext.find("bad.yaml:4:14: rows[0].policy: unknown policy plugin 'orcaa'"),
+            std::string::npos)
+      << btext;
 
   // validate builds the rows' plugins as run does: a missing frozen world set (obstacles: 2)
   // and a row whose policy lacks its sensor are found without running, each row named.
-  const auto unrunnable = dir_.Write("unrunnable.yaml",
-      "name: u\nworld: {source: random_rect, obstacles: 2, split: test}\nrows:\n"
-      "  - {label: two, policy: linear}\n"
-      "  - {label: fine, policy: linear, world: {source: random_rect, obstacles: 1, split: test}}\n");
+  const auto unrunnable =
+      dir_.Write("unrunnable.yaml",
+                 "name: u\nworld: {source: random_rect, obstacles: 2, split: test}\nrows:\n"
+                 "  - {label: two, policy: linear}\n"
+                 "  - {label: fine, policy: linear, world: {source: random_rect, obstacles: 1, "
+                 "split: test}}\n");
   auto [prc, ptext] = Shell(exe + " validate " + unrunnable.string());
   EXPECT_EQ(prc, 2) << ptext;
   EXPECT_NE(ptext.find("row 'two' (rows[0])"), std::string::npos) << ptext;
@@ -390,7 +411,8 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
   const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
   const fs::path models = testing::SourceDir() / "results" / "models" / "cadrl_crowdnav";
   // cadrl_crowdnav's best.pt: CADRL, person sensor, 81 actions.
-  const std::string cadrl_params = "{sensors: person, speed_samples: 5, rotation_samples: 16, stop_action: true}";
+  const std::string cadrl_params =
+      "{sensors: person, speed_samples: 5, rotation_samples: 16, stop_action: true}";
   const fs::path garbage = dir_.Write("garbage.pt", "not a torch archive");
   std::string bytes = ReadText(models / "best.pt");
   bytes[bytes.size() / 3] ^= 0x10;  // inside the tensors' data, far from the zip directory
@@ -406,33 +428,42 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
   };
   const std::vector<Case> cases = {
       {"missing weights",
-       "policy: cadrl, weights: " + (dir_.path() / "missing.pt").string() + ", params: " + cadrl_params,
+       "policy: cadrl, weights: " + (dir_.path() / "missing.pt").string() +
+           ", params: " + cadrl_params,
        "missing.pt' does not exist"},
-      {"garbage weights", "policy: cadrl, weights: " + garbage.string() + ", params: " + cadrl_params,
+      {"garbage weights",
+       "policy: cadrl, weights: " + garbage.string() + ", params: " + cadrl_params,
        "is not a libtorch archive"},
-      {"damaged weights", "policy: cadrl, weights: " + damaged.string() + ", params: " + cadrl_params,
+      {"damaged weights",
+       "policy: cadrl, weights: " + damaged.string() + ", params: " + cadrl_params,
        "damaged.pt' is damaged: entry '"},
       {"weights of another model",
        "policy: sarl, weights: " + (models / "best.pt").string() + ", params: " + cadrl_params,
        "was trained for another configuration (model: expected sarl, found cadrl"},
       {"weights of another sensor set",
        "policy: cadrl, sensors: [person, lidar2d], weights: " + (models / "best.pt").string() +
-           ", params: {sensors: lidar+person, speed_samples: 5, rotation_samples: 16, stop_action: true}",
+           ", params: {sensors: lidar+person, speed_samples: 5, rotation_samples: 16, stop_action: "
+           "true}",
        "sensors: expected lidar+person, found person"},
       {"world file with a bad rectangle",
-       "policy: linear, world: {source: floorplan, file: " + bad_world.string() + "}, humans: {count: 2}",
+       "policy: linear, world: {source: floorplan, file: " + bad_world.string() +
+           "}, humans: {count: 2}",
        "bad_world.yaml:"},
       {"cadrl without lidar2d", "policy: cadrl, params: {sensors: lidar+person}",
        "policy 'cadrl' needs the sensor 'lidar2d'"},
       {"impossible human count",
-       "policy: linear, world: {source: random_rect, obstacles: 1, split: test}, humans: {count: 500}",
+       "policy: linear, world: {source: random_rect, obstacles: 1, split: test}, humans: {count: "
+       "500}",
        "the scenario of episode 0 cannot be made: random_rect"},
   };
   for (const Case& c : cases) {
-    const fs::path suite = dir_.Write("preflight.yaml",
-        "name: preflight\nepisodes: 2\nseed: 1\nworld: {source: crowdnav, scenario: circle_crossing}\n"
-        "humans: {count: 5, policy: orca}\nrobot: {sensors: [person]}\nrows:\n"
-        "  - {label: fine, policy: linear}\n  - {label: bad, " + c.row + "}\n");
+    const fs::path suite =
+        dir_.Write("preflight.yaml",
+                   "name: preflight\nepisodes: 2\nseed: 1\nworld: {source: crowdnav, scenario: "
+                   "circle_crossing}\n"
+                   "humans: {count: 5, policy: orca}\nrobot: {sensors: [person]}\nrows:\n"
+                   "  - {label: fine, policy: linear}\n  - {label: bad, " +
+                       c.row + "}\n");
     auto [rc, text] = Shell(exe + " validate " + suite.string());
     EXPECT_EQ(rc, 2) << c.name << ": " << text;
     EXPECT_NE(text.find("row 'bad' (rows[1]): "), std::string::npos) << c.name << ": " << text;
@@ -441,9 +472,12 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
   }
   // The last suite (impossible human count): `run` stops at the same preflight, before any episode.
   const fs::path out = dir_.path() / "preflight-out";
-  auto [rc, text] = Shell(exe + " run " + (dir_.path() / "preflight.yaml").string() + " --quiet --out " + out.string());
+  auto [rc, text] = Shell(exe + " run " + (dir_.path() / "preflight.yaml").string() +
+                          " --quiet --out " + out.string());
   EXPECT_EQ(rc, 1) << text;
-  EXPECT_NE(text.find("row 'bad' (rows[1]): the scenario of episode 0 cannot be made"), std::string::npos) << text;
+  EXPECT_NE(text.find("row 'bad' (rows[1]): the scenario of episode 0 cannot be made"),
+            std::string::npos)
+      << text;
   EXPECT_FALSE(fs::exists(out / "episodes.csv"));
 }
 
@@ -463,26 +497,35 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   EXPECT_EQ(run_help.find("crowdsim-bench train"), std::string::npos) << run_help;
   const auto [h3, all] = Shell(exe + " help");
   EXPECT_EQ(h3, 0);
-  for (const char* word : {"exit codes:", "CROWDSIM_PLUGIN_PATH", "CROWDSIM_DATA_DIR", "crowdsim-bench train",
-                           "crowdsim-bench report"}) {
+  for (const char* word : {"exit codes:", "CROWDSIM_PLUGIN_PATH", "CROWDSIM_DATA_DIR",
+                           "crowdsim-bench train", "crowdsim-bench report"}) {
     EXPECT_NE(all.find(word), std::string::npos) << word;
   }
   const auto [h4, missing] = Shell(exe + " help frob");
   EXPECT_EQ(h4, 2);
-  EXPECT_NE(missing.find("no command 'frob' (valid: run, merge, validate, train"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("no command 'frob' (valid: run, merge, validate, train"),
+            std::string::npos)
+      << missing;
   // A usage error shows that command's usage.
   const auto [u, usage_error] = Shell(exe + " run");
   EXPECT_EQ(u, 2);
-  EXPECT_NE(usage_error.find("error: run needs exactly one suite file\nusage:\n  crowdsim-bench run"),
-            std::string::npos) << usage_error;
+  EXPECT_NE(
+      usage_error.find("error: run needs exactly one suite file\nusage:\n  crowdsim-bench run"),
+      std::string::npos)
+      << usage_error;
   // The completion script knows every command and each command's options, and is valid bash.
   const auto [c, completion] = Shell(exe + " completion bash");
   EXPECT_EQ(c, 0);
-  EXPECT_NE(completion.find("run merge validate train train-all floorplan render report list-plugins"),
-            std::string::npos) << completion;
-  EXPECT_NE(completion.find("train) COMPREPLY=($(compgen -W \"--resume --out --seed --quiet --set --help\""),
-            std::string::npos) << completion;
-  EXPECT_NE(completion.find("train-all) COMPREPLY=($(compgen -W \"--quiet --set --help\""), std::string::npos)
+  EXPECT_NE(
+      completion.find("run merge validate train train-all floorplan render report list-plugins"),
+      std::string::npos)
+      << completion;
+  EXPECT_NE(completion.find(
+                "train) COMPREPLY=($(compgen -W \"--resume --out --seed --quiet --set --help\""),
+            std::string::npos)
+      << completion;
+  EXPECT_NE(completion.find("train-all) COMPREPLY=($(compgen -W \"--quiet --set --help\""),
+            std::string::npos)
       << completion;
   const auto script = dir_.Write("completion.bash", completion);
   const auto [b, bash_text] = Shell("bash -n " + script.string());

@@ -30,7 +30,8 @@ class GoStraightPolicy final : public Policy {
 };
 
 /// A map with the given rectangles inside generous bounds.
-std::shared_ptr<const StaticMap> MakeMap(std::vector<Rect> rects, Rect bounds = Rect::FromCorners(-20, -20, 20, 20));
+std::shared_ptr<const StaticMap> MakeMap(std::vector<Rect> rects,
+                                         Rect bounds = Rect::FromCorners(-20, -20, 20, 20));
 
 /// A 10 x 10 m room ([-5, 5]^2) with 4 border walls 0.5 m thick and `obstacles` inside.
 std::shared_ptr<const StaticMap> MakeRoom(std::vector<Rect> obstacles = {});

@@ -1,8 +1,9 @@
 #include "temp_dir.h"
 
+#include <unistd.h>
+
 #include <random>
 #include <sstream>
-#include <unistd.h>
 
 namespace crowdsim::testing {
 

@@ -8,7 +8,7 @@ namespace crowdsim::testing {
 std::filesystem::path SourceDir();
 std::filesystem::path BinaryDir();
 std::filesystem::path PluginDir();
-std::filesystem::path FixturePluginDir();   ///< deliberately broken plugins
+std::filesystem::path FixturePluginDir();  ///< deliberately broken plugins
 /// ../shared next to the source tree (floor plans, references); may not exist.
 std::filesystem::path SharedDir();
 

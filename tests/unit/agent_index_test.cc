@@ -1,10 +1,11 @@
+#include "crowdsim/agent_index.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "crowdsim/agent_index.h"
 #include "crowdsim/rng.h"
 
 namespace crowdsim {
@@ -89,9 +90,11 @@ TEST(AgentIndex, NearestMatchesBruteForceForManyNeighboursAndSharedPositions) {
     AgentIndex index;
     index.Rebuild(agents);
     for (int q = 0; q < 30; ++q) {
-      const Vec2 p = q % 3 == 0 ? Vec2(2.0 * static_cast<double>(rng.Below(14)) - 2.0, 1.0 + 2.0 * static_cast<double>(rng.Below(12)))
+      const Vec2 p = q % 3 == 0 ? Vec2(2.0 * static_cast<double>(rng.Below(14)) - 2.0,
+                                       1.0 + 2.0 * static_cast<double>(rng.Below(12)))
                                 : agents[rng.Below(n)].position;
-      const double range = q % 5 == 0 ? 2.0 * static_cast<double>(1 + rng.Below(6)) : rng.Uniform(0.5, 30);
+      const double range =
+          q % 5 == 0 ? 2.0 * static_cast<double>(1 + rng.Below(6)) : rng.Uniform(0.5, 30);
       const int k = 1 + static_cast<int>(rng.Below(100));
       const int exclude = q % 7 == 0 ? -1 : static_cast<int>(rng.Below(n));
       SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));

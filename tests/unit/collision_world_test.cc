@@ -19,11 +19,11 @@ std::shared_ptr<const StaticMap> MakeMap(std::vector<Rect> rects) {
 // A 10 x 10 room with 0.1 m thick walls, a box and a 1 mm thin wall.
 std::shared_ptr<const StaticMap> Room() {
   return MakeMap({
-      Rect::FromCorners(-5.0, -5.0, 5.0, -4.9),  // 0 bottom
-      Rect::FromCorners(-5.0, 4.9, 5.0, 5.0),    // 1 top
-      Rect::FromCorners(-5.0, -5.0, -4.9, 5.0),  // 2 left
-      Rect::FromCorners(4.9, -5.0, 5.0, 5.0),    // 3 right
-      Rect::FromCorners(1.0, 1.0, 2.0, 3.0),     // 4 box
+      Rect::FromCorners(-5.0, -5.0, 5.0, -4.9),    // 0 bottom
+      Rect::FromCorners(-5.0, 4.9, 5.0, 5.0),      // 1 top
+      Rect::FromCorners(-5.0, -5.0, -4.9, 5.0),    // 2 left
+      Rect::FromCorners(4.9, -5.0, 5.0, 5.0),      // 3 right
+      Rect::FromCorners(1.0, 1.0, 2.0, 3.0),       // 4 box
       Rect::FromCorners(-2.0, -3.0, -1.999, 3.0),  // 5 thin wall
   });
 }
@@ -50,10 +50,10 @@ TEST(CollisionWorld, QueryRectsReturnsSortedOverlaps) {
 TEST(CollisionWorld, DiscOverlaps) {
   CollisionWorld world(Room());
   EXPECT_FALSE(world.DiscOverlaps(Vec2(0, 0), 0.3));
-  EXPECT_TRUE(world.DiscOverlaps(Vec2(0.8, 2.0), 0.3));    // 0.2 from the box's left face
-  EXPECT_FALSE(world.DiscOverlaps(Vec2(0.6, 2.0), 0.3));   // 0.4 from it
-  EXPECT_TRUE(world.DiscOverlaps(Vec2(4.7, 0.0), 0.3));    // 0.2 from the right wall
-  EXPECT_TRUE(world.DiscOverlaps(Vec2(1.5, 2.0), 0.1));    // centre inside the box
+  EXPECT_TRUE(world.DiscOverlaps(Vec2(0.8, 2.0), 0.3));   // 0.2 from the box's left face
+  EXPECT_FALSE(world.DiscOverlaps(Vec2(0.6, 2.0), 0.3));  // 0.4 from it
+  EXPECT_TRUE(world.DiscOverlaps(Vec2(4.7, 0.0), 0.3));   // 0.2 from the right wall
+  EXPECT_TRUE(world.DiscOverlaps(Vec2(1.5, 2.0), 0.1));   // centre inside the box
   // Rounded corner: (2.2, 3.2) is sqrt(0.08) = 0.283 from the corner (2, 3).
   EXPECT_FALSE(world.DiscOverlaps(Vec2(2.2, 3.2), 0.28));
   EXPECT_TRUE(world.DiscOverlaps(Vec2(2.2, 3.2), 0.29));
@@ -121,10 +121,10 @@ TEST(CollisionWorld, SweepMatchesBruteForce) {
 
 TEST(CollisionWorld, ClearanceAt) {
   CollisionWorld world(Room());
-  EXPECT_NEAR(world.ClearanceAt(Vec2(0.0, 2.0), 2.0), 1.0, 1e-12);   // box face
-  EXPECT_NEAR(world.ClearanceAt(Vec2(4.0, 0.0), 2.0), 0.9, 1e-12);   // right wall
+  EXPECT_NEAR(world.ClearanceAt(Vec2(0.0, 2.0), 2.0), 1.0, 1e-12);  // box face
+  EXPECT_NEAR(world.ClearanceAt(Vec2(4.0, 0.0), 2.0), 0.9, 1e-12);  // right wall
   EXPECT_EQ(world.ClearanceAt(Vec2(0.0, 0.0), 0.5), kInfinity);
-  EXPECT_EQ(world.ClearanceAt(Vec2(1.5, 2.0), 0.5), 0.0);            // inside the box
+  EXPECT_EQ(world.ClearanceAt(Vec2(1.5, 2.0), 0.5), 0.0);  // inside the box
   // The corner (2, 3) is sqrt(2) * 0.5 away: outside a 0.7 search, inside a 0.71 one.
   EXPECT_EQ(world.ClearanceAt(Vec2(2.5, 3.5), 0.7), kInfinity);
   EXPECT_NEAR(world.ClearanceAt(Vec2(2.5, 3.5), 0.71), std::sqrt(0.5), 1e-12);

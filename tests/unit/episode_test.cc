@@ -1,9 +1,10 @@
 // The episode loop on scripted episodes: outcomes, timing, metrics and the lookahead.
+#include "crowdsim/episode.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "crowdsim/episode.h"
 #include "scripted.h"
 
 namespace crowdsim {
@@ -59,8 +60,8 @@ class ContextRecorder final : public Policy {
 // The episode's constants reach a policy through Reset alone, and the map only where
 // Needs().map asks for it (robot and humans alike).
 TEST(Episode, ResetGivesTheMapOnlyToPoliciesThatNeedIt) {
-  const Scenario sc = MakeScenario(MakeRoom(), Vec2(0, -4), Vec2(0, 4), {{Vec2(-3, 0), Vec2(3, 0)},
-                                                                          {Vec2(3, 2), Vec2(-3, 2)}});
+  const Scenario sc = MakeScenario(MakeRoom(), Vec2(0, -4), Vec2(0, 4),
+                                   {{Vec2(-3, 0), Vec2(3, 0)}, {Vec2(3, 2), Vec2(-3, 2)}});
   SimConfig sim;
   sim.time_step = 0.1;
   for (const bool robot_wants : {false, true}) {
@@ -101,7 +102,8 @@ TEST(Episode, TimeoutAfterTimeLimit) {
 
 TEST(Episode, ThinWallAtHighSpeedIsACollisionNotATunnel) {
   // A 2 cm wall; the robot moves 2.5 m per step, far more than wall + diameter.
-  const Scenario sc = MakeScenario(MakeMap({Rect::FromCorners(-3, -0.01, 3, 0.01)}), Vec2(0, -1), Vec2(0, 4));
+  const Scenario sc =
+      MakeScenario(MakeMap({Rect::FromCorners(-3, -0.01, 3, 0.01)}), Vec2(0, -1), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(0, 10.0));
   EpisodeAgents agents{&robot, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
@@ -125,7 +127,8 @@ TEST(Episode, RoomWallsStopTheRobot) {
 TEST(Episode, SweptHumanCollisionCatchesAPassThrough) {
   // A still human on the robot's path; the robot jumps 2.5 m per step: an end-of-step
   // overlap test would miss it, CrowdNav's swept test does not.
-  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0, -2.75), Vec2(0, -2.75)}});
+  const Scenario sc =
+      MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0, -2.75), Vec2(0, -2.75)}});
   ConstantVelocityPolicy robot(Vec2(0, 10.0));
   ConstantVelocityPolicy still(Vec2(0, 0));
   EpisodeAgents agents{&robot, {&still}, {}};
@@ -148,8 +151,8 @@ TEST(Episode, ACollisionNamesWhatWasHit) {
   }
   {  // The second rectangle is the thin wall across the path.
     const Scenario sc = MakeScenario(
-        MakeMap({Rect::FromCorners(5, 5, 6, 6), Rect::FromCorners(-3, -0.01, 3, 0.01)}), Vec2(0, -1),
-        Vec2(0, 4));
+        MakeMap({Rect::FromCorners(5, 5, 6, 6), Rect::FromCorners(-3, -0.01, 3, 0.01)}),
+        Vec2(0, -1), Vec2(0, 4));
     Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {}, {}});
     const EpisodeResult& r = ep.Run();
     ASSERT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
@@ -169,7 +172,8 @@ TEST(Episode, ACollisionNamesWhatWasHit) {
 
 TEST(Episode, DangerStepsAndDiscomfortReward) {
   // The robot passes a still human at 0.7 m centre distance: 0.1 m surface gap < 0.2.
-  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0.7, 0.0), Vec2(0.7, 0.0)}});
+  const Scenario sc =
+      MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0.7, 0.0), Vec2(0.7, 0.0)}});
   ConstantVelocityPolicy robot(Vec2(0, 1.0));
   ConstantVelocityPolicy still(Vec2(0, 0));
   EpisodeAgents agents{&robot, {&still}, {}};
@@ -229,7 +233,8 @@ TEST(Episode, AVelocityFarAboveVPrefIsAPolicyError) {
   EpisodeAgents agents{&robot, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
-  EXPECT_NE(ep.result().error.find("more than 10 x v_pref"), std::string::npos) << ep.result().error;
+  EXPECT_NE(ep.result().error.find("more than 10 x v_pref"), std::string::npos)
+      << ep.result().error;
   // 10 x v_pref itself is allowed (the thin-wall test moves at it).
   ConstantVelocityPolicy fast(Vec2(0, 10.0));
   EpisodeAgents fast_agents{&fast, {}, {}};
@@ -249,12 +254,17 @@ TEST(Episode, MeaninglessScenariosAreRefusedWithTheReason) {
     return "";
   };
   const auto room = MakeRoom({Rect::FromCorners(-1, -1, 1, 1)});
-  EXPECT_NE(refused(MakeScenario(room, Vec2(0, 0), Vec2(0, 4))).find("start (0.000, 0.000) lies inside obstacle 4"),
-            std::string::npos) << refused(MakeScenario(room, Vec2(0, 0), Vec2(0, 4)));
-  EXPECT_NE(refused(MakeScenario(room, Vec2(0, -4), Vec2(0.5, 0.5))).find("goal (0.500, 0.500) lies inside obstacle"),
+  EXPECT_NE(refused(MakeScenario(room, Vec2(0, 0), Vec2(0, 4)))
+                .find("start (0.000, 0.000) lies inside obstacle 4"),
+            std::string::npos)
+      << refused(MakeScenario(room, Vec2(0, 0), Vec2(0, 4)));
+  EXPECT_NE(refused(MakeScenario(room, Vec2(0, -4), Vec2(0.5, 0.5)))
+                .find("goal (0.500, 0.500) lies inside obstacle"),
             std::string::npos);
-  EXPECT_NE(refused(MakeScenario(room, Vec2(3, -4), Vec2(3, -3.9))).find("starts at its goal"), std::string::npos);
-  EXPECT_NE(refused(MakeScenario(room, Vec2(0, -40), Vec2(0, 4))).find("outside the map"), std::string::npos);
+  EXPECT_NE(refused(MakeScenario(room, Vec2(3, -4), Vec2(3, -3.9))).find("starts at its goal"),
+            std::string::npos);
+  EXPECT_NE(refused(MakeScenario(room, Vec2(0, -40), Vec2(0, 4))).find("outside the map"),
+            std::string::npos);
   EXPECT_EQ(refused(MakeScenario(room, Vec2(3, -4), Vec2(3, 4))), "");
 }
 
@@ -263,7 +273,8 @@ class LookaheadProbe final : public Policy {
  public:
   PolicyNeeds Needs() const override { return {.map = false, .lookahead = true, .sensors = {}}; }
   Action Decide(const Observation& obs) override {
-    const std::vector<Action> actions = {Action{Vec2(0, 1)}, Action{Vec2(1, 0)}, Action{Vec2(0, 20)}};
+    const std::vector<Action> actions = {Action{Vec2(0, 1)}, Action{Vec2(1, 0)},
+                                         Action{Vec2(0, 20)}};
     obs.lookahead->Evaluate(actions, &outcomes);
     next_humans.assign(obs.lookahead->NextHumans().begin(), obs.lookahead->NextHumans().end());
     return actions[0];
@@ -273,7 +284,8 @@ class LookaheadProbe final : public Policy {
 };
 
 TEST(Episode, LookaheadPredictsTheRealStep) {
-  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(2, 0), Vec2(-2, 0)}});
+  const Scenario sc =
+      MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(2, 0), Vec2(-2, 0)}});
   LookaheadProbe robot;
   ConstantVelocityPolicy walker(Vec2(-1, 0));
   EpisodeAgents agents{&robot, {&walker}, {}};

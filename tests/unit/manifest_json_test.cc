@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <limits>
-
 #include <nlohmann/json.hpp>
 
 #include "crowdsim/plugin_registry.h"
@@ -18,7 +17,8 @@ namespace {
 
 TEST(ManifestJson, UserTextSurvivesTheRoundTrip) {
   testing::TempDir dir;
-  const auto file = dir.Write("s.yaml",
+  const auto file = dir.Write(
+      "s.yaml",
       "name: t\nepisodes: 1\ndescription: \"a \\\"quoted\\\" \\\\ back, \\u00fc, tab\\there\"\n"
       "world: {source: random_rect, obstacles: 1, split: test}\nrows:\n"
       "  - {label: \"x \\\"y\\\" [z]\", policy: linear, info: {note: \"a, b: \\\"c\\\"\"}}\n");
@@ -51,7 +51,8 @@ TEST(ManifestJson, MissingDamagedOrForeignFilesReadAsAbsent) {
   for (const auto& [name, text] :
        {std::pair{"garbage.json", "{\"config_hash\": \"abc\", "},  // cut: no value, not "abc"
         {"list.json", "[\"config_hash\", \"abc\"]"},
-        {"typed.json", "{\"config_hash\": 12, \"episodes\": \"12\", \"overrides\": \"a\", \"isolated\": 1}"},
+        {"typed.json",
+         "{\"config_hash\": 12, \"episodes\": \"12\", \"overrides\": \"a\", \"isolated\": 1}"},
         {"nested.json", "{\"rows\": [{\"config_hash\": \"abc\", \"episodes\": 3}]}"}}) {
     const auto file = dir.Write(name, text);
     EXPECT_EQ(ReadManifestField(file, "config_hash"), "") << name;

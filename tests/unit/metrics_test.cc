@@ -1,16 +1,18 @@
+#include "crowdsim/metrics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "crowdsim/metrics.h"
 #include "crowdsim/results.h"
 #include "temp_dir.h"
 
 namespace crowdsim {
 namespace {
 
-EpisodeOutcome Rec(EpisodeStatus s, double time, int steps, int danger, double path = 0, double dmin = kInfinity) {
+EpisodeOutcome Rec(EpisodeStatus s, double time, int steps, int danger, double path = 0,
+                   double dmin = kInfinity) {
   EpisodeOutcome r;
   r.status = s;
   r.time = time;
@@ -38,7 +40,7 @@ TEST(Metrics, PaperColumnsOnHandMadeEpisodes) {
   EXPECT_DOUBLE_EQ(m.collision_human_rate, 0.2);
   EXPECT_DOUBLE_EQ(m.collision_obstacle_rate, 0.2);
   EXPECT_DOUBLE_EQ(m.timeout_rate, 0.2);
-  EXPECT_DOUBLE_EQ(m.nav_time, 11.0);             // successful episodes only
+  EXPECT_DOUBLE_EQ(m.nav_time, 11.0);  // successful episodes only
   EXPECT_DOUBLE_EQ(m.path_length, 10.0);
   EXPECT_DOUBLE_EQ(m.danger_frequency, 16.0 / 220.0);  // danger steps / all steps
   EXPECT_DOUBLE_EQ(m.min_human_distance, (0.3 + 0.5 - 0.1 + 1.0) / 4.0);  // episodes with humans
@@ -90,9 +92,18 @@ TEST(Metrics, WilsonIntervalKnownValues) {
 
 TEST(Metrics, SummaryIsTheMeanOfItsRowsWithPooledCounts) {
   RowMetrics a, b;
-  a.episodes = 100; a.successes = 80; a.success_rate = 0.8; a.nav_time = 10.0; a.nav_time_se = 0.3;
-  b.episodes = 100; b.successes = 60; b.success_rate = 0.6; b.nav_time = 14.0; b.nav_time_se = 0.4;
-  a.timeouts = 5; b.collisions = 7;
+  a.episodes = 100;
+  a.successes = 80;
+  a.success_rate = 0.8;
+  a.nav_time = 10.0;
+  a.nav_time_se = 0.3;
+  b.episodes = 100;
+  b.successes = 60;
+  b.success_rate = 0.6;
+  b.nav_time = 14.0;
+  b.nav_time_se = 0.4;
+  a.timeouts = 5;
+  b.collisions = 7;
   const std::vector<RowMetrics> rows = {a, b};
   const RowMetrics m = SummarizeRows(rows);
   EXPECT_EQ(m.episodes, 200);
@@ -100,7 +111,7 @@ TEST(Metrics, SummaryIsTheMeanOfItsRowsWithPooledCounts) {
   EXPECT_EQ(m.timeouts, 5);
   EXPECT_EQ(m.collisions, 7);
   EXPECT_NEAR(m.success_rate, 0.7, 1e-12);
-  EXPECT_NEAR(m.nav_time, 12.0, 1e-12);  // the paper's average: the mean of the rows
+  EXPECT_NEAR(m.nav_time, 12.0, 1e-12);     // the paper's average: the mean of the rows
   EXPECT_NEAR(m.nav_time_se, 0.25, 1e-12);  // sqrt(0.3^2 + 0.4^2) / 2
   b.nav_time_se = std::numeric_limits<double>::quiet_NaN();
   EXPECT_TRUE(std::isnan(SummarizeRows(std::vector<RowMetrics>{a, b}).nav_time_se));
@@ -120,7 +131,8 @@ TEST(EpisodesCsv, RoundTripAndDamagedLastLine) {
   b.row = "plain";
   b.outcome = Rec(EpisodeStatus::kPolicyError, 1.0, 4, 0);
   b.outcome.error = "message with \"quotes\", commas";
-  const std::string text = EpisodeCsvHeader() + "\n" + FormatEpisodeLine(a) + "\n" + FormatEpisodeLine(b) + "\nplain,4,1,x,succ";
+  const std::string text = EpisodeCsvHeader() + "\n" + FormatEpisodeLine(a) + "\n" +
+                           FormatEpisodeLine(b) + "\nplain,4,1,x,succ";
   const auto file = dir.Write("episodes.csv", text);
   const auto lines = ReadEpisodesCsv(file);
   ASSERT_EQ(lines.size(), 2u);
@@ -156,8 +168,9 @@ std::string ReadError(const std::filesystem::path& file) {
 TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
   testing::TempDir dir;
   const std::string text = EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) + "\n" +
-                           "plain,two,42,x,timeout,1,4,0,1,1,1,1,0,\n" + FormatEpisodeLine(SomeLine(1)) +
-                           "\n" + "plain,3,42,x,teleported,1,4,0,1,1,1,1,0,\n" + "plain,4,42,x,succ";
+                           "plain,two,42,x,timeout,1,4,0,1,1,1,1,0,\n" +
+                           FormatEpisodeLine(SomeLine(1)) + "\n" +
+                           "plain,3,42,x,teleported,1,4,0,1,1,1,1,0,\n" + "plain,4,42,x,succ";
   const auto file = dir.Write("episodes.csv", text);
   const EpisodesCsvRead read = ReadEpisodesCsvChecked(file);
   ASSERT_EQ(read.lines.size(), 2u);
@@ -168,8 +181,9 @@ TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
   EXPECT_EQ(ReadEpisodesCsv(file).size(), 2u);
 
   // Whole-field numbers only (std::stoi read "4x" as 4), and the field count.
-  const auto partial = dir.Write("partial.csv", EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) +
-                                                   "\nplain,4x,42,x,timeout,1,4,0,1,1,1,1,0,\nplain,5\n");
+  const auto partial =
+      dir.Write("partial.csv", EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) +
+                                   "\nplain,4x,42,x,timeout,1,4,0,1,1,1,1,0,\nplain,5\n");
   const EpisodesCsvRead p = ReadEpisodesCsvChecked(partial);
   EXPECT_EQ(p.lines.size(), 1u);
   EXPECT_EQ(p.damaged, 2);
@@ -180,18 +194,23 @@ TEST(EpisodesCsv, AFileWithoutItsHeaderOrAReadableLineIsAnErrorNamingFileLineAnd
   testing::TempDir dir;
   const auto garbage = dir.Write("garbage.csv", "garbage\nmore garbage, x\n\x01\x02\n");
   std::string msg = ReadError(garbage);
-  EXPECT_NE(msg.find(garbage.string() + ":1: the header is 'garbage', expected 'row,episode,"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("not an episodes.csv written by `crowdsim-bench run`"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(garbage.string() + ":1: the header is 'garbage', expected 'row,episode,"),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("not an episodes.csv written by `crowdsim-bench run`"), std::string::npos)
+      << msg;
   EXPECT_NE(msg.find("--fresh"), std::string::npos) << msg;
   msg = ReadError(dir.Write("empty.csv", ""));
   EXPECT_NE(msg.find("empty.csv:1: the first line is empty"), std::string::npos) << msg;
 
-  const auto unreadable =
-      dir.Write("unreadable.csv", EpisodeCsvHeader() + "\nnot,an,episode\n\nplain,1,2,x,success,1,2.5,3,4,5,6,7,8,9\n");
+  const auto unreadable = dir.Write(
+      "unreadable.csv",
+      EpisodeCsvHeader() + "\nnot,an,episode\n\nplain,1,2,x,success,1,2.5,3,4,5,6,7,8,9\n");
   msg = ReadError(unreadable);
-  EXPECT_NE(msg.find(unreadable.string() + ": none of its 2 episode line(s) can be read (the first: " +
-                     unreadable.string() + ":2: it has 3 field(s), expected 14)"),
-            std::string::npos)
+  EXPECT_NE(
+      msg.find(unreadable.string() + ": none of its 2 episode line(s) can be read (the first: " +
+               unreadable.string() + ":2: it has 3 field(s), expected 14)"),
+      std::string::npos)
       << msg;
   EXPECT_NE(msg.find("--fresh"), std::string::npos) << msg;
 

@@ -13,9 +13,7 @@ constexpr double kPi = std::numbers::pi;
 
 class PersonPlugin : public ::testing::Test {
  protected:
-  PersonPlugin()
-      : registry_({testing::PluginDir()}),
-        world_(std::make_shared<StaticMap>()) {}
+  PersonPlugin() : registry_({testing::PluginDir()}), world_(std::make_shared<StaticMap>()) {}
 
   std::shared_ptr<Sensor> Make(double max_range) {
     const LoadedPlugin& p = registry_.Load("person", PluginKind::kSensor);
@@ -82,11 +80,11 @@ TEST_F(PersonPlugin, PositionsAndVelocitiesAreInTheRobotFrame) {
 TEST_F(PersonPlugin, MaxRangeDropsFarHumansAndKeepsOrder) {
   auto sensor = Make(3.0);
   const std::vector<AgentState> humans{
-      Human(Vec2(0, 2.9), Vec2(0, 0), 0.3),  // in
-      Human(Vec2(4, 0), Vec2(0, 0), 0.3),    // out (4 m)
-      Human(Vec2(-3, 0), Vec2(0, 0), 0.3),   // on the limit: in
+      Human(Vec2(0, 2.9), Vec2(0, 0), 0.3),    // in
+      Human(Vec2(4, 0), Vec2(0, 0), 0.3),      // out (4 m)
+      Human(Vec2(-3, 0), Vec2(0, 0), 0.3),     // on the limit: in
       Human(Vec2(2.2, 2.2), Vec2(0, 0), 0.5),  // 3.11 m: out, although its disc reaches in
-      Human(Vec2(1, -1), Vec2(1, 0), 0.3),   // in
+      Human(Vec2(1, -1), Vec2(1, 0), 0.3),     // in
   };
   const SensorReading r = Sense(*sensor, Vec2(0, 0), 0.0, humans);
   ASSERT_EQ(r.people.size(), 3u);

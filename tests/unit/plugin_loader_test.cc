@@ -28,7 +28,8 @@ TEST(PluginLoader, LoadsLinearByNameAndChecksKind) {
   auto policy = reg.MakePolicy(p, Params::Defaults(p.schema));
   ASSERT_NE(policy, nullptr);
   const std::string err = LoadError(reg, "linear", PluginKind::kSensor);
-  EXPECT_NE(err.find("is a policy plugin, but a sensor plugin is needed"), std::string::npos) << err;
+  EXPECT_NE(err.find("is a policy plugin, but a sensor plugin is needed"), std::string::npos)
+      << err;
 }
 
 TEST(PluginLoader, LoadsByExplicitPathOnce) {
@@ -84,8 +85,10 @@ TEST(PluginLoader, SharedLibraryWithoutAlias) {
 TEST(PluginLoader, WrongAbiVersionIsRefusedFirst) {
   PluginRegistry reg({FixturePluginDir()});
   const std::string err = LoadError(reg, "wrong_abi", PluginKind::kPolicy);
-  EXPECT_NE(err.find("ABI version " + std::to_string(kPluginAbiVersion + 998)), std::string::npos) << err;
-  EXPECT_NE(err.find("expects version " + std::to_string(kPluginAbiVersion)), std::string::npos) << err;
+  EXPECT_NE(err.find("ABI version " + std::to_string(kPluginAbiVersion + 998)), std::string::npos)
+      << err;
+  EXPECT_NE(err.find("expects version " + std::to_string(kPluginAbiVersion)), std::string::npos)
+      << err;
   EXPECT_NE(err.find("Rebuild"), std::string::npos) << err;
 }
 

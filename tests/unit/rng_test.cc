@@ -1,8 +1,8 @@
+#include "crowdsim/rng.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
-
-#include "crowdsim/rng.h"
 
 namespace crowdsim {
 namespace {

@@ -59,7 +59,8 @@ TEST_F(SuiteEdits, SweepExpandsARowIntoEveryCombination) {
   // Each row still has the suite's sensors and its own info besides the swept values.
   EXPECT_EQ(rows[11].sensors.size(), 2u);
   EXPECT_EQ(r.suite->info_columns,
-            (std::vector<std::string>{"model", "humans.count", "world.obstacles", "params.safety_space"}));
+            (std::vector<std::string>{"model", "humans.count", "world.obstacles",
+                                      "params.safety_space"}));
   EXPECT_EQ(rows[4].info.front(), (std::pair<std::string, std::string>{"model", "ORCA"}));
   // Other rows keep the suite's settings: nothing was changed in place.
   EXPECT_EQ(rows[12].humans.count, 5);
@@ -72,17 +73,21 @@ TEST_F(SuiteEdits, ErrorsInASweptValuePointAtThatValue) {
   const auto r = Load(yaml);
   ASSERT_FALSE(r.suite);
   EXPECT_NE(All(r).find("suite.yaml:12:87: rows[1].params.safety_space: value 7.5 is out of range"),
-            std::string::npos) << All(r);
+            std::string::npos)
+      << All(r);
   const auto bad = Load(std::string(kSuite).replace(std::string(kSuite).find("[2, 8]"), 6, "[]"));
   ASSERT_FALSE(bad.suite);
-  EXPECT_NE(All(bad).find("rows[0].sweep.humans.count: must be a non-empty list"), std::string::npos) << All(bad);
+  EXPECT_NE(All(bad).find("rows[0].sweep.humans.count: must be a non-empty list"),
+            std::string::npos)
+      << All(bad);
 }
 
 TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
   const auto base = Load(kSuite);
   ASSERT_TRUE(base.suite) << All(base);
-  const auto r = Load(kSuite, {"humans.count=7", "rows[linear].params.speed_factor=0.5",
-                               "robot.sensors[lidar2d].beams=9", "sim.time_limit=30", "episodes=2"});
+  const auto r =
+      Load(kSuite, {"humans.count=7", "rows[linear].params.speed_factor=0.5",
+                    "robot.sensors[lidar2d].beams=9", "sim.time_limit=30", "episodes=2"});
   ASSERT_TRUE(r.suite) << All(r);
   const Suite& s = *r.suite;
   EXPECT_EQ(s.episodes, 2);
@@ -108,7 +113,8 @@ TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
 TEST_F(SuiteEdits, BadOverridesAreNamedByTheOption) {
   auto r = Load(kSuite, {"rows[ocra].policy=orca"});
   ASSERT_FALSE(r.suite);
-  EXPECT_EQ(All(r), "--set rows[ocra].policy=orca: 'rows' has no item [ocra] (items: 0 orca, 1 linear)\n");
+  EXPECT_EQ(All(r),
+            "--set rows[ocra].policy=orca: 'rows' has no item [ocra] (items: 0 orca, 1 linear)\n");
   r = Load(kSuite, {"humans.count=abc"});
   ASSERT_FALSE(r.suite);
   EXPECT_EQ(All(r), "--set humans.count=abc: humans.count: must be a whole number, found 'abc'\n");
@@ -124,9 +130,11 @@ TEST_F(SuiteEdits, BadOverridesAreNamedByTheOption) {
 }
 
 TEST_F(SuiteEdits, TrainingFilesTakeOverridesToo) {
-  const auto file = dir_.Write("train.yaml",
-      "name: tr\nseed: 1\npolicy: cadrl\nparams: {sensors: person}\nsensors: [person]\n"
-      "world: {source: random_rect, obstacles: 0}\nhumans: {count: 1}\ntraining: {rl_episodes: 100}\n");
+  const auto file =
+      dir_.Write("train.yaml",
+                 "name: tr\nseed: 1\npolicy: cadrl\nparams: {sensors: person}\nsensors: [person]\n"
+                 "world: {source: random_rect, obstacles: 0}\nhumans: {count: 1}\ntraining: "
+                 "{rl_episodes: 100}\n");
   const auto r = training::LoadTrainSpec(file, registry_, {"training.rl_episodes=250", "seed=9"});
   ASSERT_TRUE(r.spec) << (r.errors.empty() ? "" : r.errors[0].Format());
   EXPECT_EQ(r.spec->training.rl_episodes, 250);

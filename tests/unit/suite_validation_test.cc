@@ -98,8 +98,13 @@ rows:
   EXPECT_NE(unknown.find("linear"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find(":6:14:"), std::string::npos) << unknown;
   // Parameter range and unknown parameter.
-  EXPECT_NE(Find(r, "rows[1].params.speed_factor: value 7 is out of range; valid: [0, 2]"), "") << all;
-  EXPECT_NE(Find(r, "rows[1].params.speedfactor: unknown parameter 'speedfactor' for policy plugin 'linear' (valid: speed_factor, slow_down)"), "") << all;
+  EXPECT_NE(Find(r, "rows[1].params.speed_factor: value 7 is out of range; valid: [0, 2]"), "")
+      << all;
+  EXPECT_NE(Find(r,
+                 "rows[1].params.speedfactor: unknown parameter 'speedfactor' for policy plugin "
+                 "'linear' (valid: speed_factor, slow_down)"),
+            "")
+      << all;
   // Type.
   EXPECT_NE(Find(r, "rows[2].sensors[0].beams: must be a whole number, found 'many'"), "") << all;
 }
@@ -152,7 +157,8 @@ TEST_F(SuiteValidation, EpisodesOfMoreThanAMillionStepsAreATypo) {
 }
 
 TEST_F(SuiteValidation, DuplicateLabels) {
-  auto r = Load("name: t\nworld: {source: random_rect}\nrows:\n  - {policy: linear}\n  - {policy: linear}\n");
+  auto r = Load(
+      "name: t\nworld: {source: random_rect}\nrows:\n  - {policy: linear}\n  - {policy: linear}\n");
   ASSERT_FALSE(r.suite);
   EXPECT_NE(Find(r, "label 'linear' is used by an earlier row"), "") << All(r);
 }
@@ -161,7 +167,8 @@ TEST_F(SuiteValidation, DuplicateLabels) {
 std::string GoodWithOpenLastRow() {
   std::string yaml = kGood;
   const std::string flow = "  - {label: b, policy: linear, params: {speed_factor: 0.5}}\n";
-  yaml.replace(yaml.find(flow), flow.size(), "  - label: b\n    policy: linear\n    params: {speed_factor: 0.5}\n");
+  yaml.replace(yaml.find(flow), flow.size(),
+               "  - label: b\n    policy: linear\n    params: {speed_factor: 0.5}\n");
   return yaml;
 }
 
@@ -170,7 +177,8 @@ TEST_F(SuiteValidation, ReferencesAndSummariesLoadWithoutChangingTheConfigHash) 
   ASSERT_TRUE(plain.suite) << All(plain);
   auto r = Load(GoodWithOpenLastRow() +
                 "    reference: {success: 0.67, nav_time: 12.9, source: \"Table 1\"}\n"
-                "summaries:\n  - {label: avg, rows: [a, b], info: {model: both}, reference: {success: 0.7}}\n");
+                "summaries:\n  - {label: avg, rows: [a, b], info: {model: both}, reference: "
+                "{success: 0.7}}\n");
   ASSERT_TRUE(r.suite) << All(r);
   ASSERT_TRUE(r.suite->rows[1].reference.has_value());
   EXPECT_DOUBLE_EQ(*r.suite->rows[1].reference->success, 0.67);
@@ -204,22 +212,29 @@ TEST_F(SuiteValidation, BadReferencesAndSummariesAreNamed) {
 }
 
 TEST_F(SuiteValidation, DuplicateKeysAreErrorsNotSilentChoices) {
-  auto r = Load("name: t\nepisodes: 3\nepisodes: 4\n"
-                "world: {source: random_rect, obstacles: 1, split: test}\n"
-                "rows:\n  - label: a\n    policy: linear\n    policy: orca\n");
+  auto r = Load(
+      "name: t\nepisodes: 3\nepisodes: 4\n"
+      "world: {source: random_rect, obstacles: 1, split: test}\n"
+      "rows:\n  - label: a\n    policy: linear\n    policy: orca\n");
   ASSERT_FALSE(r.suite);
-  EXPECT_NE(Find(r, "suite.yaml:3:1: key 'episodes' is given twice in this map (first at line 2)"), "") << All(r);
-  EXPECT_NE(Find(r, "suite.yaml:8:5: key 'policy' is given twice in this map (first at line 7)"), "") << All(r);
+  EXPECT_NE(Find(r, "suite.yaml:3:1: key 'episodes' is given twice in this map (first at line 2)"),
+            "")
+      << All(r);
+  EXPECT_NE(Find(r, "suite.yaml:8:5: key 'policy' is given twice in this map (first at line 7)"),
+            "")
+      << All(r);
 }
 
-// Found while writing the fuzz targets (tests/fuzz): an alias of a map or list inside itself made the
-// duplicate-key walk recurse until the stack overflowed (every reader: suites, world files,
+// Found while writing the fuzz targets (tests/fuzz): an alias of a map or list inside itself made
+// the duplicate-key walk recurse until the stack overflowed (every reader: suites, world files,
 // training files); aliases of aliases could stand for billions of values.
 TEST_F(SuiteValidation, SelfContainingAndExplodingAliasesAreErrors) {
-  for (const char* text : {"name: &a [*a]\n", "&a {x: *a}\n", "rows:\n  - &r {policy: linear, humans: [*r]}\n"}) {
+  for (const char* text :
+       {"name: &a [*a]\n", "&a {x: *a}\n", "rows:\n  - &r {policy: linear, humans: [*r]}\n"}) {
     auto r = Load(text);
     ASSERT_FALSE(r.suite) << text;
-    EXPECT_NE(Find(r, "contains an alias (*name) of itself, so it never ends"), "") << text << All(r);
+    EXPECT_NE(Find(r, "contains an alias (*name) of itself, so it never ends"), "")
+        << text << All(r);
   }
   // Eight levels of ten aliases each: 10^8 values in nine lines.
   std::ostringstream bomb;
@@ -231,7 +246,8 @@ TEST_F(SuiteValidation, SelfContainingAndExplodingAliasesAreErrors) {
   }
   auto r = Load(bomb.str() + "name: t\n");
   ASSERT_FALSE(r.suite);
-  EXPECT_NE(Find(r, "more than 1000000 values once its aliases (*name) are expanded"), "") << All(r);
+  EXPECT_NE(Find(r, "more than 1000000 values once its aliases (*name) are expanded"), "")
+      << All(r);
   // An alias that is only a shared value is fine.
   auto shared = Load(std::string("defaults: &d {count: 2, policy: linear}\n") + kGood);
   EXPECT_NE(Find(shared, "unknown key 'defaults'"), "") << All(shared);
@@ -241,24 +257,31 @@ TEST_F(SuiteValidation, SelfContainingAndExplodingAliasesAreErrors) {
 // Found by the suite_reader fuzz target (tests/fuzz): a `robot:` map without `sensors` threw
 // yaml-cpp's InvalidNode out of LoadSuite (the CLI ended with "terminate called").
 TEST_F(SuiteValidation, RobotMapWithoutSensorsIsAnErrorNotACrash) {
-  auto r = Load("name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
-                "robot: {sensor: [person]}\nrows:\n  - {label: a, policy: linear}\n");
+  auto r = Load(
+      "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "robot: {sensor: [person]}\nrows:\n  - {label: a, policy: linear}\n");
   ASSERT_FALSE(r.suite);
-  EXPECT_NE(Find(r, "suite.yaml:4:9: robot.sensor: unknown key 'sensor' (valid keys: sensors)"), "") << All(r);
-  auto empty = Load("name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
-                    "robot: {}\nrows:\n  - {label: a, policy: linear}\n");
+  EXPECT_NE(Find(r, "suite.yaml:4:9: robot.sensor: unknown key 'sensor' (valid keys: sensors)"), "")
+      << All(r);
+  auto empty = Load(
+      "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "robot: {}\nrows:\n  - {label: a, policy: linear}\n");
   EXPECT_TRUE(empty.suite) << All(empty);
 }
 
 // Suites and training files share the row reader; a count range is a training file's (drawn
 // per episode), and a suite row that gives one is told what to write instead.
 TEST_F(SuiteValidation, AHumanCountRangeIsForTrainingFiles) {
-  auto r = Load("name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
-                "rows:\n  - {label: a, policy: linear, humans: {count: [2, 4]}}\n");
+  auto r = Load(
+      "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "rows:\n  - {label: a, policy: linear, humans: {count: [2, 4]}}\n");
   ASSERT_FALSE(r.suite);
-  EXPECT_NE(Find(r, "suite.yaml:5:48: rows[0].humans.count: a range of counts is for training files "
-                    "(drawn per episode); a suite row runs one count: give one number, or "
-                    "`sweep: {humans.count: [...]}` for a row per count"), "") << All(r);
+  EXPECT_NE(Find(r,
+                 "suite.yaml:5:48: rows[0].humans.count: a range of counts is for training files "
+                 "(drawn per episode); a suite row runs one count: give one number, or "
+                 "`sweep: {humans.count: [...]}` for a row per count"),
+            "")
+      << All(r);
   EXPECT_EQ(r.errors.size(), 1u) << All(r);
 }
 
@@ -266,9 +289,10 @@ TEST_F(SuiteValidation, AHumanCountRangeIsForTrainingFiles) {
 // file that leaves humans.policy out gets the default there, and a missing defaults file is
 // named with the fix.
 TEST_F(SuiteValidation, PluginDefaultsComeFromTheSchemaDefaultsFile) {
-  const std::string suite = "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
-                            "rows:\n  - {label: a, policy: linear}\n"
-                            "  - {label: b, policy: linear, humans: {count: 0}}\n";
+  const std::string suite =
+      "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "rows:\n  - {label: a, policy: linear}\n"
+      "  - {label: b, policy: linear, humans: {count: 0}}\n";
   auto r = Load(suite);
   ASSERT_TRUE(r.suite) << All(r);
   EXPECT_EQ(r.suite->rows[0].humans.policy.plugin, "orca");
@@ -276,8 +300,9 @@ TEST_F(SuiteValidation, PluginDefaultsComeFromTheSchemaDefaultsFile) {
 
   TempDir data;
   std::filesystem::create_directories(data.path() / "suites/schema");
-  data.Write("suites/schema/defaults.yaml", "humans: {policy: linear, policy_without_humans: linear}\n"
-                                            "training: {il_policy: orca}\n");
+  data.Write("suites/schema/defaults.yaml",
+             "humans: {policy: linear, policy_without_humans: linear}\n"
+             "training: {il_policy: orca}\n");
   ::setenv("CROWDSIM_DATA_DIR", data.path().c_str(), 1);
   auto moved = Load(suite);
   ASSERT_TRUE(moved.suite) << All(moved);
@@ -286,15 +311,19 @@ TEST_F(SuiteValidation, PluginDefaultsComeFromTheSchemaDefaultsFile) {
   auto none = Load(suite);
   ::unsetenv("CROWDSIM_DATA_DIR");
   ASSERT_FALSE(none.suite);
-  EXPECT_NE(Find(none, (data.path() / "suites/schema/defaults.yaml").string() +
-                       ": schema defaults file does not exist (every suite and training file "
-                       "needs it: restore suites/schema/defaults.yaml from the source tree, or set "
-                       "CROWDSIM_DATA_DIR to the project's root folder)"), "") << All(none);
+  EXPECT_NE(
+      Find(none, (data.path() / "suites/schema/defaults.yaml").string() +
+                     ": schema defaults file does not exist (every suite and training file "
+                     "needs it: restore suites/schema/defaults.yaml from the source tree, or set "
+                     "CROWDSIM_DATA_DIR to the project's root folder)"),
+      "")
+      << All(none);
 }
 
 TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
-  auto dotdot = Load("name: ..\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
-                     "rows:\n  - {label: \"a\\nb\", policy: linear}\n  - {label: \"a\\tb\", policy: linear}\n");
+  auto dotdot = Load(
+      "name: ..\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "rows:\n  - {label: \"a\\nb\", policy: linear}\n  - {label: \"a\\tb\", policy: linear}\n");
   ASSERT_FALSE(dotdot.suite);
   EXPECT_NE(Find(dotdot, "name: '..' must not start with '.'"), "") << All(dotdot);
   EXPECT_NE(Find(dotdot, "rows[0].label: must not contain control characters"), "") << All(dotdot);
@@ -302,7 +331,8 @@ TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
   // A folder given as the suite file.
   const SuiteLoadResult folder = LoadSuite(dir_.path(), registry_);
   ASSERT_FALSE(folder.suite);
-  EXPECT_NE(Find(folder, "is a folder; give the suite file (a .yaml file) in it"), "") << All(folder);
+  EXPECT_NE(Find(folder, "is a folder; give the suite file (a .yaml file) in it"), "")
+      << All(folder);
 }
 
 }  // namespace

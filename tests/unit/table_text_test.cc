@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "crowdsim/csv.h"
@@ -28,7 +27,8 @@ TEST(TableText, CsvFieldsKeepOneRecordPerLine) {
 
 TEST(TableText, MarkdownCellsEscapeThePipe) {
   testing::TempDir dir;
-  const auto file = dir.Write("s.yaml",
+  const auto file = dir.Write(
+      "s.yaml",
       "name: t\nepisodes: 1\nworld: {source: random_rect, obstacles: 1, split: test}\n"
       "columns: [model]\nrows:\n  - {label: a, policy: linear, info: {model: \"x | y\"}}\n");
   PluginRegistry registry{{testing::PluginDir()}};
@@ -40,7 +40,8 @@ TEST(TableText, MarkdownCellsEscapeThePipe) {
   // In each of table.md's tables, every line has as many unescaped cell separators as its header.
   std::vector<std::vector<int>> tables(1);
   std::size_t start = 0;
-  for (std::size_t end = md.find('\n'); end != std::string::npos; start = end + 1, end = md.find('\n', start)) {
+  for (std::size_t end = md.find('\n'); end != std::string::npos;
+       start = end + 1, end = md.find('\n', start)) {
     if (md[start] != '|') {
       if (!tables.back().empty()) tables.emplace_back();
       continue;
@@ -73,9 +74,11 @@ RowMetrics Made(int episodes, int successes, int collisions, double nav_time, do
 
 TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
   testing::TempDir dir;
-  const auto file = dir.Write("s.yaml",
+  const auto file = dir.Write(
+      "s.yaml",
       "name: t\nepisodes: 1\nworld: {source: random_rect, obstacles: 1, split: test}\nrows:\n"
-      "  - {label: a, policy: linear, reference: {success: 0.70, collision: 0.30, nav_time: 12.0, source: \"Paper, line 1\"}}\n"
+      "  - {label: a, policy: linear, reference: {success: 0.70, collision: 0.30, nav_time: 12.0, "
+      "source: \"Paper, line 1\"}}\n"
       "  - {label: b, policy: linear}\n"
       "summaries:\n  - {label: avg, rows: [a, b], reference: {success: 0.6}}\n");
   PluginRegistry registry{{testing::PluginDir()}};
@@ -92,8 +95,10 @@ TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
   EXPECT_EQ(rows[2].metrics.successes, 648);
 
   const std::string md = FormatTableMarkdown(*loaded.suite, rows);
-  EXPECT_NE(md.find("| 1 | a | 0.6960 [0.6543, 0.7347] | 0.7000 | -0.0040 | 0.0200 [0.0109, 0.0364] | 0.3000 | -0.2800 * |"),
-            std::string::npos) << md;
+  EXPECT_NE(md.find("| 1 | a | 0.6960 [0.6543, 0.7347] | 0.7000 | -0.0040 | 0.0200 [0.0109, "
+                    "0.0364] | 0.3000 | -0.2800 * |"),
+            std::string::npos)
+      << md;
   EXPECT_NE(md.find("| 14.00 ± 0.20 | 12.00 | +2.00 * |"), std::string::npos) << md;
   EXPECT_NE(md.find("Paper, line 1"), std::string::npos) << md;
   // The summary line has no row number, its rows' range, and its own reference.
@@ -103,7 +108,8 @@ TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
   const std::string csv = FormatTableCsv(*loaded.suite, rows);
   std::vector<std::vector<std::string>> lines;
   std::size_t start = 0;
-  for (std::size_t end = csv.find('\n'); end != std::string::npos; start = end + 1, end = csv.find('\n', start)) {
+  for (std::size_t end = csv.find('\n'); end != std::string::npos;
+       start = end + 1, end = csv.find('\n', start)) {
     lines.push_back(SplitCsvLine(csv.substr(start, end - start)));
   }
   ASSERT_EQ(lines.size(), 4u);
@@ -126,11 +132,14 @@ TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
   EXPECT_EQ(manifest["summaries"][0]["label"], "avg") << text;
   EXPECT_EQ(manifest["summaries"][0]["rows"], nlohmann::json({"a", "b"})) << text;
   // The published values as the suite gave them: only those given, and their source.
-  EXPECT_EQ(manifest["rows"][0]["reference"],
-            nlohmann::json({{"success", 0.7}, {"collision", 0.3}, {"nav_time", 12.0}, {"source", "Paper, line 1"}}))
+  EXPECT_EQ(
+      manifest["rows"][0]["reference"],
+      nlohmann::json(
+          {{"success", 0.7}, {"collision", 0.3}, {"nav_time", 12.0}, {"source", "Paper, line 1"}}))
       << text;
   EXPECT_FALSE(manifest["rows"][1].contains("reference")) << text;
-  EXPECT_NEAR(manifest["summaries"][0]["metrics"]["success_rate"].get<double>(), 0.648, 1e-12) << text;
+  EXPECT_NEAR(manifest["summaries"][0]["metrics"]["success_rate"].get<double>(), 0.648, 1e-12)
+      << text;
 }
 
 TEST(ResultFiles, AFullDiskIsNamedAndLeavesNoTemporaryFile) {
@@ -146,7 +155,8 @@ TEST(ResultFiles, AFullDiskIsNamedAndLeavesNoTemporaryFile) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
   }
-  EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(dir.path() / "table.md.tmp")));
+  EXPECT_FALSE(
+      std::filesystem::exists(std::filesystem::symlink_status(dir.path() / "table.md.tmp")));
   EXPECT_EQ(testing::ReadText(target), "the previous table\n");
 }
 

@@ -1,5 +1,7 @@
 // The world file: the optional run-length `mask:` section round-trips byte-stably, reaches the
 // static map, and malformed masks are rejected with file:line and the key.
+#include "crowdsim/world_file.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -7,7 +9,6 @@
 #include <string>
 #include <tuple>
 
-#include "crowdsim/world_file.h"
 #include "temp_dir.h"
 
 namespace crowdsim {
@@ -126,8 +127,10 @@ TEST(WorldFileMask, WriterRejectsAMaskOfTheWrongSize) {
 TEST(WorldFileValues, NonFiniteCoordinatesAreRejected) {
   TempDir dir;
   for (const char* bad : {"[-.inf, -1, 1, 1]", "[0, 0, .nan, 1]", "[0, 0, 1, .Inf]"}) {
-    const auto file = dir.Write("w.yaml", std::string("format: crowdsim-world/1\nname: \"w\"\nbounds: [-5, -5, 5, 5]\n"
-                                                      "rectangles:\n  - ") + bad + "\n");
+    const auto file = dir.Write(
+        "w.yaml", std::string("format: crowdsim-world/1\nname: \"w\"\nbounds: [-5, -5, 5, 5]\n"
+                              "rectangles:\n  - ") +
+                      bad + "\n");
     try {
       ReadWorldFile(file);
       ADD_FAILURE() << "accepted " << bad;
@@ -200,8 +203,10 @@ TEST(WorldFileValues, WrongKindsOfValuesAreLocatedErrors) {
   const std::string head = "format: crowdsim-world/1\nbounds: [0, 0, 1, 1]\n";
   // {file text, line of the error, text the message must hold}
   const std::tuple<std::string, int, std::string> cases[] = {
-      {head + "stats: {free_area_m2: [1]}\n", 3, "'stats.free_area_m2' holds a value that is not a number"},
-      {head + "stats: {free_area_m2: .nan}\n", 3, "'stats.free_area_m2' holds '.nan', not a finite number"},
+      {head + "stats: {free_area_m2: [1]}\n", 3,
+       "'stats.free_area_m2' holds a value that is not a number"},
+      {head + "stats: {free_area_m2: .nan}\n", 3,
+       "'stats.free_area_m2' holds '.nan', not a finite number"},
       {head + "stats: [1, 2]\n", 3, "'stats' must be a map of names to numbers"},
       {head + "stats: {[a]: 1}\n", 3, "'stats key' must be a single text value"},
       {head + "name: [a, b]\n", 3, "'name' must be a single text value"},
@@ -209,10 +214,12 @@ TEST(WorldFileValues, WrongKindsOfValuesAreLocatedErrors) {
       {head + "? [bounds]\n: 1\n", 3, "'key' must be a single text value"},
       {head + "robot_pairs: 5\n", 3, "'robot_pairs' must be a map"},
       {head + "free_points: {a: 1}\n", 3, "'free_points' must be a list of [x, y]"},
-      {"format: [crowdsim-world/1]\nbounds: [0, 0, 1, 1]\n", 1, "'format' must be a single text value"},
+      {"format: [crowdsim-world/1]\nbounds: [0, 0, 1, 1]\n", 1,
+       "'format' must be a single text value"},
       {"just text\n", 1, "a world must be a map"},
-      {head + "mask: {resolution: 1, origin: [0, 0], width: 2000000000, height: 1, rows: [\"2000000000\"]}\n", 3,
-       "'mask' of 2000000000 x 1 cells is larger than 100000000 cells"},
+      {head + "mask: {resolution: 1, origin: [0, 0], width: 2000000000, height: 1, rows: "
+              "[\"2000000000\"]}\n",
+       3, "'mask' of 2000000000 x 1 cells is larger than 100000000 cells"},
   };
   int k = 0;
   for (const auto& [text, line, hint] : cases) {
@@ -222,7 +229,8 @@ TEST(WorldFileValues, WrongKindsOfValuesAreLocatedErrors) {
       ADD_FAILURE() << "no error for\n" << text;
     } catch (const WorldFileError& e) {
       const std::string what = e.what();
-      EXPECT_NE(what.find(path.string() + ":" + std::to_string(line) + ":"), std::string::npos) << what;
+      EXPECT_NE(what.find(path.string() + ":" + std::to_string(line) + ":"), std::string::npos)
+          << what;
       EXPECT_NE(what.find(hint), std::string::npos) << what;
     }
   }

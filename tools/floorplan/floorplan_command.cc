@@ -65,11 +65,11 @@ PlanKind ParseKind(const std::string& kind) {
 }
 
 int Import(const std::vector<std::string>& args) {
-  const Args a = Args::Parse(args,
-                             {"--out", "--resolution", "--kind", "--max-rectangles", "--seed",
-                              "--test-pairs", "--train-pairs", "--free-points", "--min-distance",
-                              "--mask-png", "--agent-radius"},
-                             {});
+  const Args a = Args::Parse(
+      args,
+      {"--out", "--resolution", "--kind", "--max-rectangles", "--seed", "--test-pairs",
+       "--train-pairs", "--free-points", "--min-distance", "--mask-png", "--agent-radius"},
+      {});
   if (a.positional.size() != 1) throw UsageError("floorplan import needs exactly one IMAGE");
   const auto out = a.Get("--out");
   if (!out) throw UsageError("floorplan import needs --out WORLD.yaml");

@@ -74,7 +74,8 @@ std::vector<std::filesystem::path> ListSourcePlans(const std::filesystem::path& 
 int BuildDataset(const DatasetOptions& o, std::ostream& log) {
   const auto plans = ListSourcePlans(o.source);
   if (plans.empty()) {
-    throw FloorplanError(o.source.string() + ": no floor plans (expected gibson/maps/*.png and "
+    throw FloorplanError(o.source.string() +
+                         ": no floor plans (expected gibson/maps/*.png and "
                          "hm3d/*_0.1m.png; pass --source ../shared/floorplans)");
   }
   std::vector<Entry> entries;
@@ -94,8 +95,8 @@ int BuildDataset(const DatasetOptions& o, std::ostream& log) {
       e.reason = Curate(e.world, o.rules);
       e.curated = e.reason.empty();
       if (r.seconds > slowest) slowest = r.seconds, slowest_name = e.world.name;
-      log << (e.curated ? "curated  " : "dropped  ") << e.world.name << "  ("
-          << Num(r.seconds) << " s)" << (e.curated ? "" : ": " + e.reason) << "\n";
+      log << (e.curated ? "curated  " : "dropped  ") << e.world.name << "  (" << Num(r.seconds)
+          << " s)" << (e.curated ? "" : ": " + e.reason) << "\n";
     } catch (const FloorplanError& err) {
       e.error = err.what();
       log << "failed   " << image.filename().string() << ": " << e.error << "\n";
@@ -155,7 +156,8 @@ int BuildDataset(const DatasetOptions& o, std::ostream& log) {
     pool.push_back(&e);
   }
   if (pool.size() < 3) {
-    throw FloorplanError("only " + std::to_string(pool.size()) + " plans qualify for easy/medium/"
+    throw FloorplanError("only " + std::to_string(pool.size()) +
+                         " plans qualify for easy/medium/"
                          "hard; relax the pick rules in floorplan_dataset.h");
   }
   std::stable_sort(pool.begin(), pool.end(), [](const Entry* a, const Entry* b) {

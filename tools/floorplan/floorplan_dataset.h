@@ -28,12 +28,12 @@ struct DifficultyPick {
 
 /// What `floorplan dataset` does and where it writes.
 struct DatasetOptions {
-  std::filesystem::path source;        ///< folder with gibson/ and hm3d/ (../shared/floorplans)
-  std::filesystem::path out;           ///< index.csv, curated.csv and curated world files
-  std::filesystem::path gibson_out;    ///< easy/medium/hard.yaml; empty = skip
+  std::filesystem::path source;      ///< folder with gibson/ and hm3d/ (../shared/floorplans)
+  std::filesystem::path out;         ///< index.csv, curated.csv and curated world files
+  std::filesystem::path gibson_out;  ///< easy/medium/hard.yaml; empty = skip
   std::uint64_t seed = 1;
-  int train_pairs = 200;               ///< per curated world (size of the committed set)
-  int picked_train_pairs = 2000;       ///< per easy/medium/hard world
+  int train_pairs = 200;          ///< per curated world (size of the committed set)
+  int picked_train_pairs = 2000;  ///< per easy/medium/hard world
   CurationRules rules;
   DifficultyPick pick;
 };

@@ -78,7 +78,8 @@ double ResolveResolution(const std::filesystem::path& image, const ImportOptions
     res = 0.1;
   } else {
     Fail(image, "unknown resolution: pass --resolution M_PER_PX, or put maps_metadata/" +
-                    image.stem().string() + ".yaml (with 'scale: M_PER_PX') next to the maps folder");
+                    image.stem().string() +
+                    ".yaml (with 'scale: M_PER_PX') next to the maps folder");
   }
   if (!(res >= 0.005 && res <= 2.0 * o.cell_size)) {
     Fail(image, "resolution " + std::to_string(res) + " m/px is out of range [0.005, " +
@@ -137,7 +138,8 @@ Grid PrepareNavigable(const std::filesystem::path& image, const Grid& raw, const
     }
     if (g.Count() == 0) {
       Fail(image, "no interior found: the building outline is open wider than the door gap (" +
-                      std::to_string(o.door_gap) + " m) or the image is not an outline map "
+                      std::to_string(o.door_gap) +
+                      " m) or the image is not an outline map "
                       "(try --kind navmesh)");
     }
   }
@@ -164,8 +166,8 @@ std::shared_ptr<const NavigableMask> ToNavigableMask(const Grid& mask, const Ras
 }
 
 double MetadataResolution(const std::filesystem::path& image) {
-  const auto meta = image.parent_path().parent_path() / "maps_metadata" /
-                    (image.stem().string() + ".yaml");
+  const auto meta =
+      image.parent_path().parent_path() / "maps_metadata" / (image.stem().string() + ".yaml");
   std::error_code ec;
   if (!std::filesystem::is_regular_file(meta, ec)) return 0.0;
   try {
@@ -174,7 +176,8 @@ double MetadataResolution(const std::filesystem::path& image) {
     if (!(scale > 0.0)) throw FloorplanError("");
     return scale;
   } catch (const std::exception&) {
-    throw FloorplanError(meta.string() + ": needs 'scale: M_PER_PX' (a positive number); fix the "
+    throw FloorplanError(meta.string() +
+                         ": needs 'scale: M_PER_PX' (a positive number); fix the "
                          "file or pass --resolution");
   }
 }

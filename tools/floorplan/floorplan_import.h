@@ -50,12 +50,12 @@ struct ImportOptions {
 
 /// One import: the world file and what the report, the preview and the dataset need.
 struct ImportResult {
-  WorldFile world;                      ///< world.mask holds `mask` (the one sampled from)
-  PlanKind kind = PlanKind::kOutline;   ///< the resolved kind
-  double source_resolution = 0.0;       ///< m/px used
-  Grid mask;                            ///< navigable mask of the world (cropped)
-  RasterFrame frame;                    ///< where `mask` lies in world coordinates
-  double seconds = 0.0;                 ///< wall time of the import
+  WorldFile world;                     ///< world.mask holds `mask` (the one sampled from)
+  PlanKind kind = PlanKind::kOutline;  ///< the resolved kind
+  double source_resolution = 0.0;      ///< m/px used
+  Grid mask;                           ///< navigable mask of the world (cropped)
+  RasterFrame frame;                   ///< where `mask` lies in world coordinates
+  double seconds = 0.0;                ///< wall time of the import
 };
 
 /// Imports one floor-plan image. Throws FloorplanError naming the file and the fix (bad

@@ -19,7 +19,10 @@ std::tuple<long, long, long, long> Key(const StartGoal& p) {
 
 FreeSpace::FreeSpace(const Grid& mask, const Grid& centres, const RasterFrame& frame,
                      std::vector<Rect> rectangles, double clearance)
-    : mask_(mask), centres_(centres), frame_(frame), rectangles_(std::move(rectangles)),
+    : mask_(mask),
+      centres_(centres),
+      frame_(frame),
+      rectangles_(std::move(rectangles)),
       clearance_(clearance) {
   for (size_t i = 0; i < centres_.cells.size(); ++i) {
     if (centres_.cells[i]) candidates_.push_back(static_cast<int>(i));

@@ -29,8 +29,9 @@ struct RasterFrame {
   }
   /// The cell rectangle rows row0..row1, cols col0..col1 (inclusive) in metres.
   Rect CellsToRect(int row0, int col0, int row1, int col1) const {
-    return Rect::FromCorners(origin.x() + col0 * cell_size, origin.y() + (height - 1 - row1) * cell_size,
-                             origin.x() + (col1 + 1) * cell_size, origin.y() + (height - row0) * cell_size);
+    return Rect::FromCorners(
+        origin.x() + col0 * cell_size, origin.y() + (height - 1 - row1) * cell_size,
+        origin.x() + (col1 + 1) * cell_size, origin.y() + (height - row0) * cell_size);
   }
 };
 

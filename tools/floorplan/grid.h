@@ -22,7 +22,9 @@ struct Grid {
   /// Index of (row, col); no bounds check.
   std::size_t Index(int row, int col) const { return static_cast<std::size_t>(row) * width + col; }
   /// True inside the image.
-  bool Inside(int row, int col) const { return row >= 0 && row < height && col >= 0 && col < width; }
+  bool Inside(int row, int col) const {
+    return row >= 0 && row < height && col >= 0 && col < width;
+  }
   /// The cell value; 0 (blocked) outside the image.
   std::uint8_t At(int row, int col) const { return Inside(row, col) ? cells[Index(row, col)] : 0; }
   /// Writable cell; no bounds check.

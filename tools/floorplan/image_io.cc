@@ -57,7 +57,8 @@ Grid DecodePng(const std::filesystem::path& path, const std::vector<unsigned cha
   // Deflate compresses at most ~1032:1, and a stored row holds at least one byte per pixel
   // plus a filter byte: a header that claims more than the data can hold is a broken file.
   const std::uint64_t width = image.width, height = image.height;
-  if (width * height > kMaxPixels || height * (width + 1) > 1100 * static_cast<std::uint64_t>(bytes.size())) {
+  if (width * height > kMaxPixels ||
+      height * (width + 1) > 1100 * static_cast<std::uint64_t>(bytes.size())) {
     png_image_free(&image);
     if (width * height > kMaxPixels) CheckSize(path, width, height);
     Fail(path, "the header claims " + std::to_string(width) + " x " + std::to_string(height) +
@@ -90,7 +91,8 @@ std::string NextToken(const std::vector<unsigned char>& b, size_t* pos) {
     }
   }
   std::string tok;
-  while (*pos < b.size() && !std::isspace(b[*pos]) && b[*pos] != '#') tok += static_cast<char>(b[(*pos)++]);
+  while (*pos < b.size() && !std::isspace(b[*pos]) && b[*pos] != '#')
+    tok += static_cast<char>(b[(*pos)++]);
   return tok;
 }
 
@@ -118,7 +120,8 @@ Grid DecodePgm(const std::filesystem::path& path, const std::vector<unsigned cha
   // ASCII: at least a digit and a separator a pixel).
   if (binary ? bytes.size() < pos + 1 + n * bpp : bytes.size() - pos < 2 * n - 1) {
     Fail(path, "truncated PGM pixel data: the header claims " + std::to_string(w) + " x " +
-                   std::to_string(h) + " pixels, the file holds " + std::to_string(bytes.size()) + " bytes");
+                   std::to_string(h) + " pixels, the file holds " + std::to_string(bytes.size()) +
+                   " bytes");
   }
   Grid g(w, h);
   if (binary) {
@@ -155,8 +158,9 @@ Grid ReadBinaryImage(const std::filesystem::path& path) {
       std::isspace(bytes[2])) {
     return DecodePgm(path, bytes);
   }
-  Fail(path, "not a PNG or PGM image (convert it to a gray or RGBA PNG: navigable white, "
-             "blocked black)");
+  Fail(path,
+       "not a PNG or PGM image (convert it to a gray or RGBA PNG: navigable white, "
+       "blocked black)");
 }
 
 std::string EncodePng(const Grid& grid, unsigned char blocked_gray) {

@@ -25,7 +25,9 @@ Grid SquareAny(const Grid& g, int radius, std::uint8_t hit, std::uint8_t outside
   Grid out(g.width, g.height, miss);
   for (int c = 0; c < g.width; ++c) {
     int count = 0;
-    auto value = [&](int r) { return r < 0 || r >= g.height ? outside : tmp.cells[tmp.Index(r, c)]; };
+    auto value = [&](int r) {
+      return r < 0 || r >= g.height ? outside : tmp.cells[tmp.Index(r, c)];
+    };
     for (int r = -radius; r <= radius; ++r) count += value(r) == hit;
     for (int r = 0; r < g.height; ++r) {
       out(r, c) = count > 0 ? hit : miss;
@@ -165,7 +167,8 @@ std::vector<double> SquaredDistanceToZero(const Grid& g, bool outside_is_zero) {
   }
   std::vector<double> out(g.cells.size());
   for (int r = 0; r < g.height; ++r) {
-    for (int c = 0; c < g.width; ++c) out[g.Index(r, c)] = grid[static_cast<size_t>(r + 1) * w + c + 1];
+    for (int c = 0; c < g.width; ++c)
+      out[g.Index(r, c)] = grid[static_cast<size_t>(r + 1) * w + c + 1];
   }
   return out;
 }

@@ -10,8 +10,8 @@ namespace crowdsim::floorplan {
 
 /// Result of LargestDiscComponent; all grids have the input's size.
 struct DiscComponent {
-  Grid centres;   ///< cells whose centre has clearance >= radius, in the largest component
-  Grid reach;     ///< navigable cells within radius of a centre cell: the usable free space
+  Grid centres;  ///< cells whose centre has clearance >= radius, in the largest component
+  Grid reach;    ///< navigable cells within radius of a centre cell: the usable free space
   long centre_cells_all = 0;  ///< centre cells over all components
   int components = 0;         ///< number of components of centre cells
 };

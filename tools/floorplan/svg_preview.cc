@@ -66,7 +66,8 @@ std::string RenderPreviewSvg(const WorldFile& world, const PreviewMask& mask, in
        << "\" fill=\"#203040\" fill-opacity=\"0.8\" stroke=\"#e04020\" stroke-width=\"1\"/>\n";
   }
   for (const Vec2& p : world.free_points) {
-    os << "<circle cx=\"" << X(p.x()) << "\" cy=\"" << Y(p.y()) << "\" r=\"1.5\" fill=\"#3070e0\"/>\n";
+    os << "<circle cx=\"" << X(p.x()) << "\" cy=\"" << Y(p.y())
+       << "\" r=\"1.5\" fill=\"#3070e0\"/>\n";
   }
   const int shown = std::min<int>(pairs_shown, world.test_pairs.size());
   for (int k = 0; k < shown; ++k) {

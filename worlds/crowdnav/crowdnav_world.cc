@@ -42,14 +42,15 @@ struct Placed {
   const double placed = std::max(1, human);
   std::string where, fix;
   if (circle) {
-    where = "circle_crossing (circle_radius " + Number(size) + " m: " +
-            Number(std::round(n / (2.0 * std::numbers::pi * size) * 100.0) / 100.0) +
+    where = "circle_crossing (circle_radius " + Number(size) +
+            " m: " + Number(std::round(n / (2.0 * std::numbers::pi * size) * 100.0) / 100.0) +
             " humans per metre of circle)";
     fix = "circle_radius >= ~" + Number(std::ceil(1.25 * size * n / placed * 10.0) / 10.0);
   } else {
-    where = "square_crossing (square_width " + Number(size) + " m: " +
-            Number(std::round(n / (size * size) * 100.0) / 100.0) + " humans per m^2)";
-    fix = "square_width >= ~" + Number(std::ceil(1.25 * size * std::sqrt(n / placed) * 10.0) / 10.0);
+    where = "square_crossing (square_width " + Number(size) +
+            " m: " + Number(std::round(n / (size * size) * 100.0) / 100.0) + " humans per m^2)";
+    fix =
+        "square_width >= ~" + Number(std::ceil(1.25 * size * std::sqrt(n / placed) * 10.0) / 10.0);
   }
   throw std::runtime_error("crowdnav: cannot place human " + std::to_string(human + 1) + " of " +
                            std::to_string(request.num_humans) + " in " + where + ": after " +

@@ -10,9 +10,19 @@ namespace crowdsim::floorplan {
 
 ParamSchema Schema() {
   return {
-      {"file", ParamType::kString, std::string("worlds/gibson/easy.yaml"), -kInfinity, kInfinity,
-       {}, "world file of an imported floor plan (relative: suite folder, then data root)"},
-      {"split", ParamType::kString, std::string("test"), -kInfinity, kInfinity, {"train", "test"},
+      {"file",
+       ParamType::kString,
+       std::string("worlds/gibson/easy.yaml"),
+       -kInfinity,
+       kInfinity,
+       {},
+       "world file of an imported floor plan (relative: suite folder, then data root)"},
+      {"split",
+       ParamType::kString,
+       std::string("test"),
+       -kInfinity,
+       kInfinity,
+       {"train", "test"},
        "which precomputed robot start/goal pairs to use"},
   };
 }
@@ -29,8 +39,11 @@ FloorplanWorld::FloorplanWorld(const Params& params) : split_(params.GetString("
   const std::string value = params.GetString("file");
   const std::filesystem::path path = ResolveWorldPath(params, value);
   if (!std::filesystem::exists(path)) {
-    throw std::invalid_argument("floorplan: world '" + value + "' not found (looked in the suite "
-                                "folder and " + DataRoot().string() + "); import one with "
+    throw std::invalid_argument("floorplan: world '" + value +
+                                "' not found (looked in the suite "
+                                "folder and " +
+                                DataRoot().string() +
+                                "); import one with "
                                 "`crowdsim-bench floorplan import`");
   }
   WorldFile world = ReadWorldFile(path);
@@ -40,7 +53,8 @@ FloorplanWorld::FloorplanWorld(const Params& params) : split_(params.GetString("
                                 " (re-import the plan, or use the other split)");
   }
   if (world.free_points.empty()) {
-    throw std::invalid_argument(path.string() + ": no free_points for placing humans "
+    throw std::invalid_argument(path.string() +
+                                ": no free_points for placing humans "
                                 "(re-import the plan with `crowdsim-bench floorplan import`)");
   }
   name_ = world.name;
@@ -66,8 +80,7 @@ Scenario FloorplanWorld::Make(const ScenarioRequest& request) const {
   // Goals leave room to pass: a human who stays on its goal must not close a passage.
   const auto goal_space =
       std::make_shared<DiscFreeSpace>(map_, PassableGoalClearance(request.sim.human_radius));
-  PlacementArea area{[free](const Vec2& p) { return free->Contains(p); },
-                     ListSampler(free_points_),
+  PlacementArea area{[free](const Vec2& p) { return free->Contains(p); }, ListSampler(free_points_),
                      [goal_space](const Vec2& p) { return goal_space->Contains(p); }};
   Rng rng(request.seed);
   s.humans = PlaceHumans(area, s.robot_start, s.robot_goal, request,

@@ -176,11 +176,10 @@ Scenario RandomRectWorld::Make(const ScenarioRequest& request) const {
   const auto human_space = std::make_shared<const DiscFreeSpace>(
       map, request.sim.human_radius + options_.clearance_margin);
   // Goals leave room to pass: a human who stays on its goal must not close a passage.
-  const auto goal_space = std::make_shared<const DiscFreeSpace>(
-      map, PassableGoalClearance(request.sim.human_radius));
+  const auto goal_space =
+      std::make_shared<const DiscFreeSpace>(map, PassableGoalClearance(request.sim.human_radius));
   const PlacementArea area{[human_space](const Vec2& p) { return human_space->Contains(p); },
-                           sample,
-                           [goal_space](const Vec2& p) { return goal_space->Contains(p); }};
+                           sample, [goal_space](const Vec2& p) { return goal_space->Contains(p); }};
   HumanPlacementOptions placement = HumanPlacementOptions::FromRequest(request);
   placement.goal_min_dist = options_.human_goal_min_dist;
   placement.new_goal_count = options_.new_goal_count;

@@ -5,8 +5,7 @@ namespace crowdsim::random_rect {
 
 extern "C++" const PluginDescriptor kDescriptor = WorldPlugin<RandomRectWorld>(
     "random_rect",
-    "10 x 10 m rooms with random rectangular obstacles (frozen sets, CrowdSim++ 4.1)",
-    &Schema);
+    "10 x 10 m rooms with random rectangular obstacles (frozen sets, CrowdSim++ 4.1)", &Schema);
 
 }  // namespace crowdsim::random_rect
 

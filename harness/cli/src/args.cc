@@ -34,7 +34,8 @@ Args Args::Parse(const std::vector<std::string>& args, const std::vector<std::st
       std::string valid;
       for (const auto& o : with_value) valid += " " + o;
       for (const auto& o : flags) valid += " " + o;
-      throw UsageError("unknown option '" + name + "' (valid:" + (valid.empty() ? " none" : valid) + ")");
+      throw UsageError("unknown option '" + name + "' (valid:" + (valid.empty() ? " none" : valid) +
+                       ")");
     }
   }
   return a;

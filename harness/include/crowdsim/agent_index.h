@@ -30,8 +30,8 @@ class AgentIndex {
   int nx_ = 0, ny_ = 0;
   std::vector<int> cell_start_;  // CSR layout: agents of cell c are order_[start[c]..start[c+1])
   std::vector<int> order_;
-  std::vector<Vec2> position_;   // position_[k] = agents_[order_[k]].position: cells contiguous
-  std::vector<int> cell_of_;     // Rebuild's scratch
+  std::vector<Vec2> position_;  // position_[k] = agents_[order_[k]].position: cells contiguous
+  std::vector<int> cell_of_;    // Rebuild's scratch
 };
 
 }  // namespace crowdsim

@@ -46,8 +46,8 @@ class CollisionWorld {
 
   /// Reference scan: btCollisionWorld::rayTest per beam against the boxes only (slow;
   /// kept for tests and benchmarks that check the fast scan).
-  void CastRaysBullet(const Vec2& origin, std::span<const double> world_angles,
-                      double max_range, double* ranges) const;
+  void CastRaysBullet(const Vec2& origin, std::span<const double> world_angles, double max_range,
+                      double* ranges) const;
 
  private:
   struct Impl;

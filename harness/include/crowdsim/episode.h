@@ -20,8 +20,14 @@ namespace crowdsim {
 /// an episode whose isolated worker process died (a signal, an exit) or ran past the suite's
 /// episode_timeout_s (worker_process.h).
 enum class EpisodeStatus {
-  kRunning, kSuccess, kCollisionHuman, kCollisionObstacle, kTimeout, kPolicyError,
-  kPolicyCrash, kPolicyTimeout
+  kRunning,
+  kSuccess,
+  kCollisionHuman,
+  kCollisionObstacle,
+  kTimeout,
+  kPolicyError,
+  kPolicyCrash,
+  kPolicyTimeout
 };
 
 const char* EpisodeStatusName(EpisodeStatus s);
@@ -38,7 +44,7 @@ void CheckScenario(const Scenario& scenario, const SimConfig& sim);
 
 /// A sensor configured on the robot.
 struct MountedSensor {
-  std::string name;       ///< plugin name, copied into SensorReading::sensor
+  std::string name;  ///< plugin name, copied into SensorReading::sensor
   const Sensor* sensor = nullptr;
 };
 
@@ -62,22 +68,22 @@ struct EpisodeFrame {
 /// (episode_columns.h).
 struct EpisodeOutcome {
   EpisodeStatus status = EpisodeStatus::kRunning;
-  double time = 0.0;             ///< s at the end
+  double time = 0.0;  ///< s at the end
   int steps = 0;
-  int danger_steps = 0;          ///< steps with a human closer than discomfort_dist
-  double path_length = 0.0;      ///< m travelled by the robot
+  int danger_steps = 0;                   ///< steps with a human closer than discomfort_dist
+  double path_length = 0.0;               ///< m travelled by the robot
   double min_human_distance = kInfinity;  ///< min surface distance robot-human over the episode
-  double discounted_return = 0.0;  ///< sum_t gamma^(t*dt*v_pref) r_t
-  double decision_time_us = 0.0;   ///< mean wall time of the robot's Decide
-  int humans_at_goal = 0;          ///< humans that reached their (first) goal
-  std::string error;               ///< policy_error message
+  double discounted_return = 0.0;         ///< sum_t gamma^(t*dt*v_pref) r_t
+  double decision_time_us = 0.0;          ///< mean wall time of the robot's Decide
+  int humans_at_goal = 0;                 ///< humans that reached their (first) goal
+  std::string error;                      ///< policy_error message
 };
 
 /// An episode's outcome with what only a live episode knows (not stored in episodes.csv):
 /// whom it hit and, when recording, the trajectory (rendering, tests).
 struct EpisodeResult : EpisodeOutcome {
-  int collided_human = -1;         ///< collision_human: which human (index into the scenario's)
-  int collided_rect = -1;          ///< collision_obstacle: which rectangle of the map
+  int collided_human = -1;  ///< collision_human: which human (index into the scenario's)
+  int collided_rect = -1;   ///< collision_obstacle: which rectangle of the map
   std::vector<EpisodeFrame> trajectory;  ///< when recording
 };
 
@@ -141,7 +147,7 @@ class Episode {
   std::vector<std::size_t> human_goal_index_;
   std::vector<bool> human_reached_;
   std::vector<Action> human_actions_;
-  std::vector<AgentState> human_view_;   // agents humans see (humans + robot if visible)
+  std::vector<AgentState> human_view_;  // agents humans see (humans + robot if visible)
   AgentIndex human_index_;
   Observation robot_obs_;
   bool robot_obs_current_ = false;  ///< robot_obs_ shows the current state (ObserveRobot)

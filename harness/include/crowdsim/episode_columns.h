@@ -35,13 +35,21 @@ using EpisodeField =
 /// The member a column names, in a line (an identity member) or in its outcome
 /// (std::visit over EpisodeColumn::field).
 template <typename T>
-const T& ColumnValue(const EpisodeLine& e, T EpisodeLine::*member) { return e.*member; }
+const T& ColumnValue(const EpisodeLine& e, T EpisodeLine::*member) {
+  return e.*member;
+}
 template <typename T>
-const T& ColumnValue(const EpisodeLine& e, T EpisodeOutcome::*member) { return e.outcome.*member; }
+const T& ColumnValue(const EpisodeLine& e, T EpisodeOutcome::*member) {
+  return e.outcome.*member;
+}
 template <typename T>
-T& ColumnValue(EpisodeLine& e, T EpisodeLine::*member) { return e.*member; }
+T& ColumnValue(EpisodeLine& e, T EpisodeLine::*member) {
+  return e.*member;
+}
 template <typename T>
-T& ColumnValue(EpisodeLine& e, T EpisodeOutcome::*member) { return e.outcome.*member; }
+T& ColumnValue(EpisodeLine& e, T EpisodeOutcome::*member) {
+  return e.outcome.*member;
+}
 
 /// How a table row averages a column over its episodes.
 enum class RowMean {
@@ -75,16 +83,35 @@ inline constexpr EpisodeColumn kEpisodeColumns[] = {
     {.name = "time", .field = &EpisodeOutcome::time, .decimals = 2},
     {.name = "steps", .field = &EpisodeOutcome::steps},
     {.name = "danger_steps", .field = &EpisodeOutcome::danger_steps},
-    {.name = "path_length", .field = &EpisodeOutcome::path_length, .decimals = 6, .mean = RowMean::kSuccesses,
-     .row_mean = &RowMetrics::path_length, .table_header = "path length", .table_decimals = 3},
-    {.name = "min_human_distance", .field = &EpisodeOutcome::min_human_distance, .decimals = 6,
-     .empty_is_infinity = true, .mean = RowMean::kFinite, .row_mean = &RowMetrics::min_human_distance,
-     .table_header = "min. dist.", .table_decimals = 3},
-    {.name = "discounted_return", .field = &EpisodeOutcome::discounted_return, .decimals = 8,
-     .mean = RowMean::kAll, .row_mean = &RowMetrics::discounted_return, .table_header = "return",
+    {.name = "path_length",
+     .field = &EpisodeOutcome::path_length,
+     .decimals = 6,
+     .mean = RowMean::kSuccesses,
+     .row_mean = &RowMetrics::path_length,
+     .table_header = "path length",
+     .table_decimals = 3},
+    {.name = "min_human_distance",
+     .field = &EpisodeOutcome::min_human_distance,
+     .decimals = 6,
+     .empty_is_infinity = true,
+     .mean = RowMean::kFinite,
+     .row_mean = &RowMetrics::min_human_distance,
+     .table_header = "min. dist.",
+     .table_decimals = 3},
+    {.name = "discounted_return",
+     .field = &EpisodeOutcome::discounted_return,
+     .decimals = 8,
+     .mean = RowMean::kAll,
+     .row_mean = &RowMetrics::discounted_return,
+     .table_header = "return",
      .table_decimals = 4},
-    {.name = "decision_time_us", .field = &EpisodeOutcome::decision_time_us, .decimals = 3, .timing = true,
-     .mean = RowMean::kAll, .row_mean = &RowMetrics::decision_time_us, .table_header = "decision µs",
+    {.name = "decision_time_us",
+     .field = &EpisodeOutcome::decision_time_us,
+     .decimals = 3,
+     .timing = true,
+     .mean = RowMean::kAll,
+     .row_mean = &RowMetrics::decision_time_us,
+     .table_header = "decision µs",
      .table_decimals = 1},
     {.name = "humans_at_goal", .field = &EpisodeOutcome::humans_at_goal},
     {.name = "error", .field = &EpisodeOutcome::error},

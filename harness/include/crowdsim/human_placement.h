@@ -80,8 +80,9 @@ struct HumanPlacementOptions {
 /// 2 r_h + discomfort_dist apart and r_h + r_robot + discomfort_dist from the robot's start;
 /// goals likewise from each other (goal k against goal k) and from the robot's goal; each goal
 /// at least goal_min_dist from the point before it and where area.is_goal_free holds (if
-/// set), both relaxed over the second half of the tries when the room is too small. kStay gives one goal, kNewGoal new_goal_count goals.
-/// Deterministic for a given rng state. Throws PlacementError when a point cannot be placed.
+/// set), both relaxed over the second half of the tries when the room is too small. kStay gives one
+/// goal, kNewGoal new_goal_count goals. Deterministic for a given rng state. Throws PlacementError
+/// when a point cannot be placed.
 std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_start,
                                    const Vec2& robot_goal, const ScenarioRequest& request,
                                    const HumanPlacementOptions& options, Rng& rng);

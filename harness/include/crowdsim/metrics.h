@@ -12,7 +12,7 @@ namespace crowdsim {
 struct RowMetrics {
   int episodes = 0;
   double success_rate = 0.0;
-  double collision_rate = 0.0;           ///< human + obstacle
+  double collision_rate = 0.0;  ///< human + obstacle
   double collision_human_rate = 0.0;
   double collision_obstacle_rate = 0.0;
   double timeout_rate = 0.0;
@@ -22,17 +22,19 @@ struct RowMetrics {
   /// denominator, never as successes, collisions or timeouts (docs/metrics.md).
   double policy_crash_rate = 0.0;
   double policy_timeout_rate = 0.0;
-  double nav_time = 0.0;        ///< mean time of successful episodes (time_limit if none, CrowdNav)
+  double nav_time = 0.0;  ///< mean time of successful episodes (time_limit if none, CrowdNav)
   double danger_frequency = 0.0;  ///< danger steps / all steps
   // Row means of episode columns (kEpisodeColumns says which mean each is).
-  double path_length = 0.0;     ///< mean over successful episodes (0 if none)
+  double path_length = 0.0;         ///< mean over successful episodes (0 if none)
   double min_human_distance = 0.0;  ///< mean over episodes with humans of the episode minimum
   double discounted_return = 0.0;   ///< mean
   double decision_time_us = 0.0;    ///< mean of per-episode means
   int successes = 0;                ///< counts behind the rates (for their intervals)
   int collisions = 0;
   int timeouts = 0;
-  double nav_time_se = std::numeric_limits<double>::quiet_NaN();  ///< standard error of nav_time (NaN with fewer than 2 successes)
+  double nav_time_se =
+      std::numeric_limits<double>::quiet_NaN();  ///< standard error of nav_time (NaN with fewer
+                                                 ///< than 2 successes)
 };
 
 /// A two-sided interval [low, high].

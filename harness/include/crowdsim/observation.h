@@ -33,9 +33,9 @@ struct SensorReading {
 
 /// Everything one policy receives at one decision.
 struct Observation {
-  double time = 0.0;                  ///< s since the episode start
-  AgentState self;                    ///< own state, world frame
-  Frame frame;                        ///< sensor frame (robot: x towards the goal)
+  double time = 0.0;                    ///< s since the episode start
+  AgentState self;                      ///< own state, world frame
+  Frame frame;                          ///< sensor frame (robot: x towards the goal)
   std::vector<SensorReading> readings;  ///< robot only: one per configured sensor, in order
   /// Ground-truth agents this policy may react to (humans: the other humans, plus the robot
   /// when visible), with its own index in `self_index` (-1 if absent). Null for the robot.

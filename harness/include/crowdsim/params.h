@@ -21,10 +21,10 @@ struct ParamSpec {
   std::string name;
   ParamType type = ParamType::kDouble;
   ParamValue default_value = 0.0;
-  double min = -kInfinity;               ///< inclusive, numbers (and list items) only
-  double max = kInfinity;                ///< inclusive
-  std::vector<std::string> choices;      ///< strings only; empty = free text
-  std::string doc;                       ///< one line, with units
+  double min = -kInfinity;           ///< inclusive, numbers (and list items) only
+  double max = kInfinity;            ///< inclusive
+  std::vector<std::string> choices;  ///< strings only; empty = free text
+  std::string doc;                   ///< one line, with units
 };
 
 using ParamSchema = std::vector<ParamSpec>;

@@ -2,10 +2,9 @@
 // Boost.DLL alias. The host reads `abi_version` (always the first field) before anything else.
 #pragma once
 
+#include <boost/dll/alias.hpp>
 #include <cstdint>
 #include <memory>
-
-#include <boost/dll/alias.hpp>
 
 #include "crowdsim/params.h"
 #include "crowdsim/policy.h"
@@ -28,8 +27,8 @@ const char* PluginKindName(PluginKind k);
 struct PluginDescriptor {
   std::uint32_t abi_version;  ///< must stay the first member
   PluginKind kind;
-  const char* name;           ///< unique name used in suites (e.g. "orca")
-  const char* description;    ///< one line
+  const char* name;         ///< unique name used in suites (e.g. "orca")
+  const char* description;  ///< one line
   ParamSchema (*schema)();
   std::unique_ptr<Policy> (*make_policy)(const Params&);
   std::unique_ptr<Sensor> (*make_sensor)(const Params&);
@@ -47,24 +46,42 @@ std::unique_ptr<Interface> ConstructFromParams(const Params& params) {
 template <typename T>
 constexpr PluginDescriptor PolicyPlugin(const char* name, const char* description,
                                         ParamSchema (*schema)()) {
-  return {kPluginAbiVersion, PluginKind::kPolicy, name, description, schema,
-          &ConstructFromParams<Policy, T>, nullptr, nullptr};
+  return {kPluginAbiVersion,
+          PluginKind::kPolicy,
+          name,
+          description,
+          schema,
+          &ConstructFromParams<Policy, T>,
+          nullptr,
+          nullptr};
 }
 
 /// The descriptor of a sensor plugin whose class `T` takes `const Params&`.
 template <typename T>
 constexpr PluginDescriptor SensorPlugin(const char* name, const char* description,
                                         ParamSchema (*schema)()) {
-  return {kPluginAbiVersion, PluginKind::kSensor, name, description, schema,
-          nullptr, &ConstructFromParams<Sensor, T>, nullptr};
+  return {kPluginAbiVersion,
+          PluginKind::kSensor,
+          name,
+          description,
+          schema,
+          nullptr,
+          &ConstructFromParams<Sensor, T>,
+          nullptr};
 }
 
 /// The descriptor of a world plugin whose class `T` takes `const Params&`.
 template <typename T>
 constexpr PluginDescriptor WorldPlugin(const char* name, const char* description,
                                        ParamSchema (*schema)()) {
-  return {kPluginAbiVersion, PluginKind::kWorld, name, description, schema,
-          nullptr, nullptr, &ConstructFromParams<WorldSource, T>};
+  return {kPluginAbiVersion,
+          PluginKind::kWorld,
+          name,
+          description,
+          schema,
+          nullptr,
+          nullptr,
+          &ConstructFromParams<WorldSource, T>};
 }
 
 }  // namespace crowdsim

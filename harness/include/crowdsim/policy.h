@@ -30,8 +30,8 @@ struct EpisodeContext {
   const StaticMap* map = nullptr;
   SimConfig sim;  ///< sim.time_step: s between decisions
   AgentRole role = AgentRole::kRobot;
-  std::uint64_t seed = 0;   ///< this agent's own stream for the episode
-  int agent_id = 0;         ///< 0 = robot, 1.. = humans
+  std::uint64_t seed = 0;  ///< this agent's own stream for the episode
+  int agent_id = 0;        ///< 0 = robot, 1.. = humans
 };
 
 class Policy {

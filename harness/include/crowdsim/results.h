@@ -73,7 +73,8 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
 /// A string field, e.g. "config_hash", "git_commit" ("" if absent).
 std::string ReadManifestField(const std::filesystem::path& path, const std::string& key);
 /// A list of strings, e.g. "overrides" (empty if absent; non-strings in it are skipped).
-std::vector<std::string> ReadManifestStrings(const std::filesystem::path& path, const std::string& key);
+std::vector<std::string> ReadManifestStrings(const std::filesystem::path& path,
+                                             const std::string& key);
 /// A whole number, e.g. "episodes" (-1 if absent).
 long ReadManifestInteger(const std::filesystem::path& path, const std::string& key);
 /// A true/false field, e.g. a summary's "finished" (nullopt if absent).

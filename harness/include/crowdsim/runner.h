@@ -26,9 +26,9 @@ struct RunOptions {
   /// Overrides the suite's `isolation` when set (e.g. off for a policy that lives in this
   /// process's Python interpreter, which a forked worker must not run).
   std::optional<IsolationMode> isolation;
-  int episodes = -1;              ///< overrides the suite's count when > 0
-  bool fresh = false;             ///< discard stored episodes instead of resuming
-  bool progress = true;           ///< progress line on stderr
+  int episodes = -1;     ///< overrides the suite's count when > 0
+  bool fresh = false;    ///< discard stored episodes instead of resuming
+  bool progress = true;  ///< progress line on stderr
   /// Shard `shard_index` (1-based) of `shard_count`: only the (row, episode) pairs whose
   /// position in row-major order is shard_index - 1 modulo shard_count; no table is written
   /// (`merge` joins the shards). 1 of 1 is the whole suite.
@@ -51,8 +51,9 @@ struct RunSummary {
 /// manifests'. The merged manifest records the shards' commit (shards_git_commit, "mixed" if
 /// several) and each shard's (shard_commits). Throws RunError naming the folders at fault.
 RunSummary MergeShards(const std::vector<std::filesystem::path>& shard_dirs,
-                       const std::filesystem::path& out_dir, const std::filesystem::path& suite_file,
-                       PluginRegistry& registry, bool allow_mixed_commits = false);
+                       const std::filesystem::path& out_dir,
+                       const std::filesystem::path& suite_file, PluginRegistry& registry,
+                       bool allow_mixed_commits = false);
 
 /// Where a run writes without an explicit folder: runs/<suite name>/ under the working folder
 /// (ignored by git). The committed reference outputs under results/ are only ever written

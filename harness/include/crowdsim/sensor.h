@@ -13,9 +13,9 @@ class CollisionWorld;
 /// A read-only snapshot a sensor reads (the real state, or a lookahead's propagated state).
 struct SenseInput {
   const AgentState& robot;
-  const Frame& frame;                    ///< the robot's sensor frame
+  const Frame& frame;  ///< the robot's sensor frame
   std::span<const AgentState> humans;
-  const CollisionWorld& world;           ///< static rectangles (Bullet) and ray casts
+  const CollisionWorld& world;  ///< static rectangles (Bullet) and ray casts
 };
 
 class Sensor {

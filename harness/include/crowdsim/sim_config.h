@@ -13,26 +13,26 @@ namespace crowdsim {
 /// the ones every other default (an Observation's time step, a plugin's before its first
 /// episode) takes as SimConfig{}.<member>.
 struct SimConfig {
-  double time_step = 0.25;         ///< s
-  double time_limit = 25.0;        ///< s; the episode times out when time reaches it
-  double goal_radius = 0.2;        ///< m; success when the robot centre is this close (CrowdNav: 0.3)
-  double discomfort_dist = 0.2;    ///< m; surface distance counted as danger
-  double robot_radius = 0.3;       ///< m
-  double robot_v_pref = 1.0;       ///< m/s
-  double human_radius = 0.3;       ///< m
-  double human_v_pref = 1.0;       ///< m/s
-  bool robot_visible = false;      ///< humans react to the robot (paper: false)
+  double time_step = 0.25;       ///< s
+  double time_limit = 25.0;      ///< s; the episode times out when time reaches it
+  double goal_radius = 0.2;      ///< m; success when the robot centre is this close (CrowdNav: 0.3)
+  double discomfort_dist = 0.2;  ///< m; surface distance counted as danger
+  double robot_radius = 0.3;     ///< m
+  double robot_v_pref = 1.0;     ///< m/s
+  double human_radius = 0.3;     ///< m
+  double human_v_pref = 1.0;     ///< m/s
+  bool robot_visible = false;    ///< humans react to the robot (paper: false)
   double success_reward = 1.0;
   double collision_penalty = -0.25;
   double discomfort_penalty_factor = 0.5;
-  double gamma = 0.9;              ///< discount per second at v_pref (CrowdNav: gamma^(dt*v_pref))
+  double gamma = 0.9;  ///< discount per second at v_pref (CrowdNav: gamma^(dt*v_pref))
 };
 
 /// One `sim:` setting: its key, its member and, for a number, the values a file may give it.
 struct SimField {
   const char* key;
   std::variant<double SimConfig::*, bool SimConfig::*> member;
-  double lo = 0.0;       ///< numbers: the valid range [lo, hi]
+  double lo = 0.0;  ///< numbers: the valid range [lo, hi]
   double hi = 0.0;
   bool lo_open = false;  ///< numbers: lo itself is not valid
 };

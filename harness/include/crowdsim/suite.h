@@ -18,8 +18,8 @@ namespace crowdsim {
 /// One problem in a suite file, located exactly.
 struct SuiteError {
   std::string file;
-  int line = 0;    ///< 1-based; 0 = whole file
-  int column = 0;  ///< 1-based
+  int line = 0;          ///< 1-based; 0 = whole file
+  int column = 0;        ///< 1-based
   std::string key_path;  ///< e.g. rows[1].sensors[0].beams
   std::string message;   ///< what is wrong, the offending value and the valid choices
   std::string Format() const;

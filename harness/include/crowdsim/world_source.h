@@ -13,11 +13,11 @@ enum class HumanGoalMode { kStay, kNewGoal };
 
 /// What the harness asks a world for.
 struct ScenarioRequest {
-  std::uint64_t seed = 0;        ///< episode seed (DeriveSeed)
+  std::uint64_t seed = 0;  ///< episode seed (DeriveSeed)
   std::int64_t episode_index = 0;
   int num_humans = 5;
   HumanGoalMode goal_mode = HumanGoalMode::kStay;
-  SimConfig sim;                 ///< radii and speeds
+  SimConfig sim;  ///< radii and speeds
 };
 
 class WorldSource {

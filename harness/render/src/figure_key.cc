@@ -9,11 +9,11 @@
 namespace crowdsim::render {
 namespace {
 
-constexpr double kLine = 20.0;        // px per key line
-constexpr double kFont = 11.0;        // px
-constexpr double kMarkBox = 18.0;     // px reserved for an entry's mark
-constexpr double kGap = 16.0;         // px between entries
-constexpr double kCharWidth = 0.56;   // of the font size: a wide estimate for the sans fonts used
+constexpr double kLine = 20.0;       // px per key line
+constexpr double kFont = 11.0;       // px
+constexpr double kMarkBox = 18.0;    // px reserved for an entry's mark
+constexpr double kGap = 16.0;        // px between entries
+constexpr double kCharWidth = 0.56;  // of the font size: a wide estimate for the sans fonts used
 
 double TextWidth(const std::string& s) {
   // UTF-8 continuation bytes take no width of their own.
@@ -39,7 +39,8 @@ void DrawMark(Drawing* d, KeyMark m, const Vec2& c) {
       d->AddPolygon("key-mark", Diamond(c, 4.5), Stroke(human, 1.4));
       break;
     case KeyMark::kTimeDot:
-      d->AddPolyline("key-mark", {c - Vec2(8.0, 0.0), c + Vec2(8.0, 0.0)}, Stroke(palette::kRobot, 2.0));
+      d->AddPolyline("key-mark", {c - Vec2(8.0, 0.0), c + Vec2(8.0, 0.0)},
+                     Stroke(palette::kRobot, 2.0));
       d->AddCircle("key-mark", c, 3.0, Filled(palette::kRobot, palette::kRobot, 0.0));
       break;
     case KeyMark::kEndDisc:

@@ -4,8 +4,7 @@
 
 namespace crowdsim::render {
 
-View View::Fit(const Rect& world, double max_side, double margin, double header,
-               double footer) {
+View View::Fit(const Rect& world, double max_side, double margin, double header, double footer) {
   View v;
   v.world_ = world;
   const Vec2 size = world.Size().cwiseMax(Vec2(1e-6, 1e-6));

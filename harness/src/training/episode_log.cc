@@ -11,7 +11,8 @@ void EpisodeLog::Open(const std::filesystem::path& file, std::int64_t keep_bytes
   std::error_code ec;
   if (keep_bytes >= 0 && fs::exists(file)) {
     if (static_cast<std::int64_t>(fs::file_size(file)) < keep_bytes) {
-      throw std::runtime_error("'" + file.string() + "' is shorter than its checkpoint recorded; "
+      throw std::runtime_error("'" + file.string() +
+                               "' is shorter than its checkpoint recorded; "
                                "it was edited or cut: move it away to continue without it");
     }
     fs::resize_file(file, static_cast<std::uintmax_t>(keep_bytes), ec);

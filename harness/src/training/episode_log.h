@@ -15,13 +15,13 @@
 namespace crowdsim::training {
 
 struct EpisodeLogRow {
-  const char* phase = "";      ///< demonstration, imitation (one line per epoch), rl
-  int index = 0;               ///< episode (or epoch) within its phase
+  const char* phase = "";  ///< demonstration, imitation (one line per epoch), rl
+  int index = 0;           ///< episode (or epoch) within its phase
   double epsilon = 0.0;
-  std::string outcome;         ///< success, collision_human, ..., or empty for an epoch
+  std::string outcome;  ///< success, collision_human, ..., or empty for an epoch
   double discounted_return = 0.0;
   int steps = 0;
-  double loss = 0.0;           ///< mean loss of the SGD steps that followed
+  double loss = 0.0;  ///< mean loss of the SGD steps that followed
   std::size_t memory_size = 0;
   std::array<std::size_t, kMemorySources> memory{};  ///< entries by MemorySource
 };

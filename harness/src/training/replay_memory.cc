@@ -8,7 +8,7 @@ namespace crowdsim::training {
 
 namespace {
 
-constexpr std::uint64_t kMagic = 0x32594d4552524353ULL;  // "SCRREMY2": entries carry their source
+constexpr std::uint64_t kMagic = 0x32594d4552524353ULL;    // "SCRREMY2": entries carry their source
 constexpr std::uint64_t kMagicV1 = 0x31594d4552524353ULL;  // before sources
 
 template <typename T>
@@ -60,7 +60,8 @@ void ReplayMemory::Load(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   const auto magic = Get<std::uint64_t>(in);
   if (in && magic == kMagicV1) {
-    throw std::runtime_error("'" + file.string() + "' is a replay memory of an older crowdsim-bench "
+    throw std::runtime_error("'" + file.string() +
+                             "' is a replay memory of an older crowdsim-bench "
                              "(without entry sources); restart that training without --resume");
   }
   if (!in || magic != kMagic) {

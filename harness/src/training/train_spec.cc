@@ -36,8 +36,9 @@ void UseTrainSplit(Reader& r, const YAML::Node& n, PluginUse* world) {
   if (!Present(n["split"])) {
     world->params.Set("split", std::string("train"));
   } else if (world->params.GetString("split") != "train") {
-    r.Error(n["split"], "world.split",
-            "training uses the world's train split (the test split is for suites); set split: train");
+    r.Error(
+        n["split"], "world.split",
+        "training uses the world's train split (the test split is for suites); set split: train");
   }
 }
 
@@ -57,7 +58,8 @@ void ReadChoice(Reader& r, const YAML::Node& training, const std::string& key,
     }
     expected += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].first;
   }
-  r.Error(node, "training." + key, "expected " + expected + ", got " + suite_internal::Scalar(node));
+  r.Error(node, "training." + key,
+          "expected " + expected + ", got " + suite_internal::Scalar(node));
 }
 
 /// The teacher's parameters that the schema defaults give unless `il_params` does, where the
@@ -70,11 +72,14 @@ void DefaultTeacherParams(Reader& r, const YAML::Node& given,
   for (const auto& kv : defaults) {
     const std::string key = kv.first.Scalar();
     if (Present(given) && given.IsMap() && Present(given[key])) continue;
-    const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& p) { return p.name == key; });
+    const auto spec =
+        std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& p) { return p.name == key; });
     if (spec == specs.end()) continue;
     // A node without the defaults file's marks: an error names the key and that file.
-    const YAML::Node value = kv.second.IsScalar() ? YAML::Node(kv.second.Scalar()) : YAML::Node(kv.second);
-    const std::string path = "training.il_params." + key + " (default, " + schema.file.string() + ")";
+    const YAML::Node value =
+        kv.second.IsScalar() ? YAML::Node(kv.second.Scalar()) : YAML::Node(kv.second);
+    const std::string path =
+        "training.il_params." + key + " (default, " + schema.file.string() + ")";
     if (auto v = r.Value(*spec, value, path)) s->teacher.params.Set(key, *v);
   }
 }
@@ -120,16 +125,19 @@ void ReadTraining(Reader& r, const YAML::Node& n, const suite_internal::SchemaDe
     r.CheckKeys(n, "training", keys);
     for (const auto& f : ints) {
       if (Present(n[f.key])) {
-        if (auto v = r.Integer(n[f.key], Reader::Child("training", f.key), f.lo, f.hi)) *f.target = static_cast<int>(*v);
+        if (auto v = r.Integer(n[f.key], Reader::Child("training", f.key), f.lo, f.hi))
+          *f.target = static_cast<int>(*v);
       }
     }
     for (const auto& f : reals) {
       if (Present(n[f.key])) {
-        if (auto v = r.Number(n[f.key], Reader::Child("training", f.key), f.lo, f.hi)) *f.target = *v;
+        if (auto v = r.Number(n[f.key], Reader::Child("training", f.key), f.lo, f.hi))
+          *f.target = *v;
       }
     }
     ReadChoice(r, n, "store_timeouts",
-               {{"off", StoreTimeouts::kOff}, {"terminal", StoreTimeouts::kTerminal},
+               {{"off", StoreTimeouts::kOff},
+                {"terminal", StoreTimeouts::kTerminal},
                 {"bootstrap", StoreTimeouts::kBootstrap}},
                &t.store_timeouts);
     ReadChoice(r, n, "exploration",
@@ -142,11 +150,14 @@ void ReadTraining(Reader& r, const YAML::Node& n, const suite_internal::SchemaDe
   const std::string teacher_path =
       named ? "training.il_policy" : "training.il_policy (default, " + schema.file.string() + ")";
   const YAML::Node teacher_params = map ? n["il_params"] : YAML::Node(YAML::NodeType::Undefined);
-  if (Present(teacher_params) && !r.IsMap(teacher_params, "training.il_params", "policy parameters")) return;
+  if (Present(teacher_params) &&
+      !r.IsMap(teacher_params, "training.il_params", "policy parameters"))
+    return;
   s->teacher.plugin = teacher.Scalar();
   s->teacher.loaded = r.Plugin(teacher, teacher_path, PluginKind::kPolicy);
   if (!s->teacher.loaded) return;
-  s->teacher.params = r.ParamsFor(*s->teacher.loaded, teacher_params, {}, "training.il_params", base);
+  s->teacher.params =
+      r.ParamsFor(*s->teacher.loaded, teacher_params, {}, "training.il_params", base);
   DefaultTeacherParams(r, teacher_params, schema, s);
 }
 
@@ -172,8 +183,8 @@ std::string Canonical(const TrainSpec& s) {
      << t.rl_episodes << "," << t.rl_learning_rate << "," << t.momentum << "," << t.epsilon_start
      << "," << t.epsilon_end << "," << t.epsilon_decay_episodes << "," << t.target_update_interval
      << "," << t.capacity << "," << t.batch_size << "," << t.train_batches << ","
-     << t.validation_interval << "," << t.validation_episodes << ",store_timeouts="
-     << ToString(t.store_timeouts);
+     << t.validation_interval << "," << t.validation_episodes
+     << ",store_timeouts=" << ToString(t.store_timeouts);
   // Written only when not the default, so that the hashes of earlier trainings stay valid.
   if (t.exploration != ExplorationRule::kUniform) os << ",exploration=" << ToString(t.exploration);
   os << "\n";
@@ -188,9 +199,12 @@ const char* ToString(ExplorationRule e) {
 
 const char* ToString(StoreTimeouts s) {
   switch (s) {
-    case StoreTimeouts::kTerminal: return "terminal";
-    case StoreTimeouts::kBootstrap: return "bootstrap";
-    case StoreTimeouts::kOff: break;
+    case StoreTimeouts::kTerminal:
+      return "terminal";
+    case StoreTimeouts::kBootstrap:
+      return "bootstrap";
+    case StoreTimeouts::kOff:
+      break;
   }
   return "off";
 }
@@ -210,9 +224,11 @@ void OverrideSeed(TrainSpec& spec, std::uint64_t seed) {
 std::vector<std::string> TrainSpecWarnings(const TrainSpec& spec) {
   std::vector<std::string> w;
   const TrainingSettings& t = spec.training;
-  if (t.rl_episodes > 0 && t.epsilon_decay_episodes > t.rl_episodes && t.epsilon_start != t.epsilon_end) {
+  if (t.rl_episodes > 0 && t.epsilon_decay_episodes > t.rl_episodes &&
+      t.epsilon_start != t.epsilon_end) {
     w.push_back("training.epsilon_decay_episodes (" + std::to_string(t.epsilon_decay_episodes) +
-                ") exceeds rl_episodes (" + std::to_string(t.rl_episodes) + "): epsilon never reaches " +
+                ") exceeds rl_episodes (" + std::to_string(t.rl_episodes) +
+                "): epsilon never reaches " +
                 "epsilon_end; shorten the decay or lengthen the RL phase");
   }
   if (t.rl_episodes > 0 && t.epsilon_end >= 0.3 && t.store_timeouts == StoreTimeouts::kOff) {
@@ -233,7 +249,9 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
     if (!result.errors.empty()) return result;
   }
   if (!root.IsMap()) {
-    result.errors.push_back({file.string(), 0, 0, "", "a training file is a YAML map with name, policy, sensors, world, humans and training"});
+    result.errors.push_back(
+        {file.string(), 0, 0, "",
+         "a training file is a YAML map with name, policy, sensors, world, humans and training"});
     return result;
   }
   const std::optional<suite_internal::SchemaDefaults> schema =
@@ -252,7 +270,8 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
   s.description = std::move(head.description);
   s.seed = head.seed;
   s.sim = head.sim;
-  suite_internal::ReadRowSpec(r, root, "", suite_internal::RowDefaults{*schema}, kTrainingRowRules, base, &s.row);
+  suite_internal::ReadRowSpec(r, root, "", suite_internal::RowDefaults{*schema}, kTrainingRowRules,
+                              base, &s.row);
   s.row.label = s.name;
   UseTrainSplit(r, root["world"], &s.row.world);
   ReadTraining(r, root["training"], *schema, base, &s);

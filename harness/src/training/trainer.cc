@@ -7,9 +7,9 @@
 #include <csignal>
 #include <fstream>
 #include <iterator>
-#include <optional>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "crowdsim/episode.h"
@@ -84,13 +84,16 @@ double Since(Clock::time_point t0) {
 /// timeouts too when the training says so.
 std::optional<MemorySource> SourceOf(EpisodeStatus s, bool rl, StoreTimeouts timeouts) {
   switch (s) {
-    case EpisodeStatus::kSuccess: return rl ? MemorySource::kSuccess : MemorySource::kImitation;
+    case EpisodeStatus::kSuccess:
+      return rl ? MemorySource::kSuccess : MemorySource::kImitation;
     case EpisodeStatus::kCollisionHuman:
-    case EpisodeStatus::kCollisionObstacle: return rl ? MemorySource::kCollision : MemorySource::kImitation;
+    case EpisodeStatus::kCollisionObstacle:
+      return rl ? MemorySource::kCollision : MemorySource::kImitation;
     case EpisodeStatus::kTimeout:
       if (rl && timeouts != StoreTimeouts::kOff) return MemorySource::kTimeout;
       return std::nullopt;
-    default: return std::nullopt;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -114,8 +117,8 @@ class Trainer {
         t_(spec.training),
         memory_(static_cast<std::size_t>(t_.capacity)),
         progress_(spec.name, options.progress) {
-    summary_.out_dir = options.out_dir.empty() ? fs::path("results") / "train" / spec.name
-                                               : options.out_dir;
+    summary_.out_dir =
+        options.out_dir.empty() ? fs::path("results") / "train" / spec.name : options.out_dir;
     Build();
   }
 
@@ -124,7 +127,8 @@ class Trainer {
  private:
   void Build();
   Scenario MakeScenario(const char* stream, int index) const;
-  Trajectory RunEpisode(Policy* robot, const Scenario& scenario, bool encode, bool observe_timeout_end = false);
+  Trajectory RunEpisode(Policy* robot, const Scenario& scenario, bool encode,
+                        bool observe_timeout_end = false);
   void LogEpisode(const char* phase, int index, double epsilon, const Trajectory& tr, double loss);
   void Demonstrations();
   void Imitation();
@@ -133,15 +137,16 @@ class Trainer {
   double TrainOn(std::span<const std::size_t> indices);
   void SaveCheckpoint();
   void LoadCheckpoint();
-  /// Accepts a checkpoint whose configuration differs only in training.rl_episodes (throws otherwise).
+  /// Accepts a checkpoint whose configuration differs only in training.rl_episodes (throws
+  /// otherwise).
   void AcceptNewRlLength(const fs::path& dir);
   void WriteSummaryJson() const;
   void OpenEpisodeLog(std::int64_t keep_bytes);
   void WriteLearningCurve();
   /// True when the run must stop now (signal, or the test hook's episode budget).
   bool ShouldStop() const {
-    return g_signal != 0 ||
-           (options_.stop_after_episodes >= 0 && summary_.episodes_run >= options_.stop_after_episodes);
+    return g_signal != 0 || (options_.stop_after_episodes >= 0 &&
+                             summary_.episodes_run >= options_.stop_after_episodes);
   }
   fs::path Out(const char* name) const { return summary_.out_dir / name; }
 
@@ -169,7 +174,6 @@ class Trainer {
   TrainSummary summary_;
 };
 
-
 void Trainer::Build() {
   const RowSpec& row = spec_.row;
   try {
@@ -194,7 +198,8 @@ void Trainer::Build() {
 
 Scenario Trainer::MakeScenario(const char* stream, int index) const {
   ScenarioRequest req;
-  req.seed = DeriveSeed(spec_.seed, world_->Identity() + "/" + stream, static_cast<std::uint64_t>(index));
+  req.seed =
+      DeriveSeed(spec_.seed, world_->Identity() + "/" + stream, static_cast<std::uint64_t>(index));
   req.episode_index = index;
   const HumansSpec& humans = spec_.row.humans;
   req.num_humans = humans.count;
@@ -231,7 +236,8 @@ Trajectory Trainer::RunEpisode(Policy* robot, const Scenario& scenario, bool enc
   return tr;
 }
 
-void Trainer::LogEpisode(const char* phase, int index, double epsilon, const Trajectory& tr, double loss) {
+void Trainer::LogEpisode(const char* phase, int index, double epsilon, const Trajectory& tr,
+                         double loss) {
   EpisodeLogRow row;
   row.phase = phase;
   row.index = index;
@@ -246,21 +252,24 @@ void Trainer::LogEpisode(const char* phase, int index, double epsilon, const Tra
 }
 
 void Trainer::Demonstrations() {
-  progress_.Phase("IL demonstrations (" + spec_.teacher.plugin + ")", state_.counter, t_.il_episodes);
+  progress_.Phase("IL demonstrations (" + spec_.teacher.plugin + ")", state_.counter,
+                  t_.il_episodes);
   const double discount = std::pow(spec_.sim.gamma, spec_.sim.time_step * spec_.sim.robot_v_pref);
   while (state_.counter < t_.il_episodes && !ShouldStop()) {
     const auto t0 = Clock::now();
     Trajectory tr = RunEpisode(teacher_.get(), MakeScenario("il", state_.counter), true);
     if (const auto source = SourceOf(tr.result.status, false, t_.store_timeouts)) {
       const std::vector<float> values = MonteCarloReturns(tr.rewards, discount);
-      for (std::size_t i = 0; i < values.size(); ++i) memory_.Push(std::move(tr.states[i]), values[i], *source);
+      for (std::size_t i = 0; i < values.size(); ++i)
+        memory_.Push(std::move(tr.states[i]), values[i], *source);
     }
     LogEpisode("demonstration", state_.counter, 0.0, tr, 0.0);
     ++state_.counter;
     ++summary_.episodes_run;
     summary_.times.demonstrations += Since(t0);
     progress_.Episode(tr.result.status, 0.0, 0.0);
-    if (state_.counter % t_.checkpoint_interval == 0 && state_.counter < t_.il_episodes) SaveCheckpoint();
+    if (state_.counter % t_.checkpoint_interval == 0 && state_.counter < t_.il_episodes)
+      SaveCheckpoint();
   }
   if (state_.counter >= t_.il_episodes) {
     // Probe states: evenly spread over the demonstrations, fixed for the rest of the training.
@@ -337,10 +346,17 @@ ValidationResult Trainer::Validate(int rl_episode) {
   for (int k = 0; k < t_.validation_episodes; ++k) {
     const Trajectory tr = RunEpisode(learner_policy_, MakeScenario("val", k), false);
     switch (tr.result.status) {
-      case EpisodeStatus::kSuccess: ++success; nav += tr.result.time; break;
+      case EpisodeStatus::kSuccess:
+        ++success;
+        nav += tr.result.time;
+        break;
       case EpisodeStatus::kCollisionHuman:
-      case EpisodeStatus::kCollisionObstacle: ++collision; break;
-      default: ++timeout; break;
+      case EpisodeStatus::kCollisionObstacle:
+        ++collision;
+        break;
+      default:
+        ++timeout;
+        break;
     }
   }
   if (probe_.size() > 0) {
@@ -359,8 +375,8 @@ ValidationResult Trainer::Validate(int rl_episode) {
   summary_.times.validation += Since(t0);
   std::ostringstream os;
   os << "validation after " << rl_episode << " RL episodes: success " << v.success << ", collision "
-     << v.collision << ", timeout " << v.timeout << ", nav time " << v.nav_time
-     << ", probe value " << v.probe_value;
+     << v.collision << ", timeout " << v.timeout << ", nav time " << v.nav_time << ", probe value "
+     << v.probe_value;
   if (v.success > state_.best_success) {
     state_.best_success = v.success;
     state_.best_episode = rl_episode;
@@ -398,9 +414,11 @@ void Trainer::Reinforcement() {
       std::vector<const EncodedState*> next;
       for (std::size_t i = 1; i < tr.states.size(); ++i) next.push_back(&tr.states[i]);
       if (tr.final_state) next.push_back(&*tr.final_state);
-      const std::vector<float> v_next = next.empty() ? std::vector<float>{} : learner_->TargetValues(next);
+      const std::vector<float> v_next =
+          next.empty() ? std::vector<float>{} : learner_->TargetValues(next);
       const std::vector<float> targets = TdTargets(tr.rewards, v_next, discount);
-      for (std::size_t i = 0; i < targets.size(); ++i) memory_.Push(std::move(tr.states[i]), targets[i], *source);
+      for (std::size_t i = 0; i < targets.size(); ++i)
+        memory_.Push(std::move(tr.states[i]), targets[i], *source);
       summary_.times.rl_targets += Since(t0);
     }
     t0 = Clock::now();
@@ -412,7 +430,8 @@ void Trainer::Reinforcement() {
       std::iota(perm.begin(), perm.end(), std::size_t{0});
       const std::size_t b = std::min<std::size_t>(t_.batch_size, memory_.size());
       for (int k = 0; k < t_.train_batches; ++k) {
-        for (std::size_t j = 0; j < b; ++j) std::swap(perm[j], perm[j + rng.Below(perm.size() - j)]);
+        for (std::size_t j = 0; j < b; ++j)
+          std::swap(perm[j], perm[j + rng.Below(perm.size() - j)]);
         loss += TrainOn(std::span<const std::size_t>(perm.data(), b));
       }
       loss /= t_.train_batches;
@@ -423,7 +442,8 @@ void Trainer::Reinforcement() {
     ++summary_.episodes_run;
     if (state_.counter % t_.target_update_interval == 0) learner_->UpdateTargetNetwork();
     progress_.Episode(tr.result.status, epsilon, loss);
-    if (state_.counter % t_.checkpoint_interval == 0 && state_.counter < t_.rl_episodes) SaveCheckpoint();
+    if (state_.counter % t_.checkpoint_interval == 0 && state_.counter < t_.rl_episodes)
+      SaveCheckpoint();
   }
   if (state_.counter >= t_.rl_episodes) {
     if (t_.validation_interval > 0 &&
@@ -460,11 +480,14 @@ void Trainer::AcceptNewRlLength(const fs::path& dir) {
   // The RL length the checkpoint ran toward: recorded in it (v4), else in the folder's
   // summary.json (written when the run stopped).
   int before = state_.rl_episodes;
-  if (before < 0) before = static_cast<int>(ReadManifestInteger(Out("summary.json"), "/procedure/rl_episodes"));
+  if (before < 0)
+    before = static_cast<int>(ReadManifestInteger(Out("summary.json"), "/procedure/rl_episodes"));
   if (before < 0 || spec_.ConfigHashWithRlEpisodes(before) != state_.config_hash) {
-    throw TrainError("--resume: the checkpoint in '" + dir.string() + "' belongs to another "
-                     "configuration (config hash " + state_.config_hash + ", the training file now " +
-                     spec_.ConfigHash() + "); restore the file or train into another --out (only "
+    throw TrainError("--resume: the checkpoint in '" + dir.string() +
+                     "' belongs to another "
+                     "configuration (config hash " +
+                     state_.config_hash + ", the training file now " + spec_.ConfigHash() +
+                     "); restore the file or train into another --out (only "
                      "training.rl_episodes may change between runs)");
   }
   if (state_.phase == TrainPhase::kReinforcement && t_.rl_episodes < state_.counter) {
@@ -563,7 +586,8 @@ TrainSummary Trainer::Run() {
   std::error_code ec;
   fs::create_directories(summary_.out_dir, ec);
   if (ec || !fs::is_directory(summary_.out_dir)) {
-    throw TrainError("cannot create the output folder '" + summary_.out_dir.string() + "': " + ec.message());
+    throw TrainError("cannot create the output folder '" + summary_.out_dir.string() +
+                     "': " + ec.message());
   }
   if (options_.resume) {
     LoadCheckpoint();
@@ -571,14 +595,16 @@ TrainSummary Trainer::Run() {
     progress_.Note("resumed from " + (summary_.out_dir / "checkpoint").string());
   } else {
     if (fs::exists(Out("checkpoint")) || fs::exists(Out("weights.pt"))) {
-      throw TrainError("'" + summary_.out_dir.string() + "' already holds a training; pass --resume to "
+      throw TrainError("'" + summary_.out_dir.string() +
+                       "' already holds a training; pass --resume to "
                        "continue it, or --out to train into another folder");
     }
     state_.config_hash = spec_.ConfigHash();
     learner_->InitWeights(spec_.seed);
     OpenEpisodeLog(-1);
   }
-  WriteFileAtomically(Out("training.yaml"), "# copy of " + spec_.file.string() + "\n" + spec_.canonical);
+  WriteFileAtomically(Out("training.yaml"),
+                      "# copy of " + spec_.file.string() + "\n" + spec_.canonical);
   progress_.Note(learner_->Describe());
   if (state_.phase == TrainPhase::kDemonstrations) Demonstrations();
   if (state_.phase == TrainPhase::kImitation && !ShouldStop()) Imitation();
@@ -603,7 +629,8 @@ TrainSummary Trainer::Run() {
 
 }  // namespace
 
-TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry, const TrainOptions& options) {
+TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry,
+                         const TrainOptions& options) {
   Trainer trainer(spec, registry, options);
   return trainer.Run();
 }

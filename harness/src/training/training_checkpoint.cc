@@ -3,8 +3,8 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <string>
 #include <sstream>
+#include <string>
 
 namespace crowdsim::training {
 
@@ -48,7 +48,8 @@ CheckpointState ReadCheckpointState(const std::filesystem::path& file) {
     if (version >= 3) {
       std::string probe;  // "nan" does not read as a double
       in >> probe;
-      v.probe_value = probe == "nan" || probe == "-nan" ? std::numeric_limits<double>::quiet_NaN() : std::stod(probe);
+      v.probe_value = probe == "nan" || probe == "-nan" ? std::numeric_limits<double>::quiet_NaN()
+                                                        : std::stod(probe);
     }
     s.validations.push_back(v);
   }

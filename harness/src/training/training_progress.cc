@@ -55,9 +55,12 @@ void TrainingProgress::Episode(EpisodeStatus status, double epsilon, double loss
 void TrainingProgress::Print() {
   int success = 0, collision = 0, timeout = 0;
   for (EpisodeStatus s : recent_) {
-    if (s == EpisodeStatus::kSuccess) ++success;
-    else if (s == EpisodeStatus::kCollisionHuman || s == EpisodeStatus::kCollisionObstacle) ++collision;
-    else if (s == EpisodeStatus::kTimeout) ++timeout;
+    if (s == EpisodeStatus::kSuccess)
+      ++success;
+    else if (s == EpisodeStatus::kCollisionHuman || s == EpisodeStatus::kCollisionObstacle)
+      ++collision;
+    else if (s == EpisodeStatus::kTimeout)
+      ++timeout;
   }
   const double n = recent_.empty() ? 1.0 : static_cast<double>(recent_.size());
   const double secs = std::chrono::duration<double>(Clock::now() - start_).count();

@@ -25,12 +25,17 @@ std::vector<EncodedState> RandomStates(const ValueRlConfig& c, int n, std::uint6
   Rng rng(seed);
   std::vector<EncodedState> states(n);
   for (auto& s : states) {
-    s.values = {static_cast<float>(rng.Uniform(0, 10)), 1.0f, 0.0f, 0.3f,
-                static_cast<float>(rng.Uniform(-1, 1)), static_cast<float>(rng.Uniform(-1, 1))};
+    s.values = {static_cast<float>(rng.Uniform(0, 10)),
+                1.0f,
+                0.0f,
+                0.3f,
+                static_cast<float>(rng.Uniform(-1, 1)),
+                static_cast<float>(rng.Uniform(-1, 1))};
     for (int b = 0; b < c.LidarInputs(); ++b) s.values.push_back(static_cast<float>(rng.Uniform()));
     if (UsesPerson(c.sensors)) {
       for (int h = 0; h < 5; ++h) {
-        const float x = static_cast<float>(rng.Uniform(-5, 5)), y = static_cast<float>(rng.Uniform(-5, 5));
+        const float x = static_cast<float>(rng.Uniform(-5, 5)),
+                    y = static_cast<float>(rng.Uniform(-5, 5));
         s.values.insert(s.values.end(), {x, y, static_cast<float>(rng.Uniform(-1, 1)),
                                          static_cast<float>(rng.Uniform(-1, 1)), 0.3f,
                                          std::sqrt(x * x + y * y), 0.6f});
@@ -54,7 +59,8 @@ void Args(benchmark::internal::Benchmark* b) {
 }
 
 ValueRlConfig FromArgs(const benchmark::State& state) {
-  return Config(state.range(0) ? Model::kSarl : Model::kCadrl, static_cast<SensorSet>(state.range(1)));
+  return Config(state.range(0) ? Model::kSarl : Model::kCadrl,
+                static_cast<SensorSet>(state.range(1)));
 }
 
 void BM_Value16Candidates(benchmark::State& state) {
@@ -124,8 +130,10 @@ void BM_GreedyEpisode(benchmark::State& state) {
     Episode episode(scenario, w.sim, w.agents);
     steps += episode.Run().steps;
   }
-  state.counters["steps/s"] = benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
-  state.counters["steps/episode"] = static_cast<double>(steps) / static_cast<double>(state.iterations());
+  state.counters["steps/s"] =
+      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
+  state.counters["steps/episode"] =
+      static_cast<double>(steps) / static_cast<double>(state.iterations());
 }
 BENCHMARK(BM_GreedyEpisode)->Apply(Args)->Unit(benchmark::kMillisecond);
 

@@ -67,17 +67,21 @@ std::uint32_t Crc32(const std::string& bytes) {
 }
 
 std::string BigEndian(std::uint32_t x) {
-  return {static_cast<char>(x >> 24), static_cast<char>(x >> 16), static_cast<char>(x >> 8), static_cast<char>(x)};
+  return {static_cast<char>(x >> 24), static_cast<char>(x >> 16), static_cast<char>(x >> 8),
+          static_cast<char>(x)};
 }
 
 /// A PNG whose header claims width x height (8-bit gray) and whose data is a few bytes.
 std::string LyingPng(std::uint32_t width, std::uint32_t height) {
   auto chunk = [](const std::string& type, const std::string& data) {
-    return BigEndian(static_cast<std::uint32_t>(data.size())) + type + data + BigEndian(Crc32(type + data));
+    return BigEndian(static_cast<std::uint32_t>(data.size())) + type + data +
+           BigEndian(Crc32(type + data));
   };
-  const std::string ihdr = BigEndian(width) + BigEndian(height) + std::string("\x08\x00\x00\x00\x00", 5);
+  const std::string ihdr =
+      BigEndian(width) + BigEndian(height) + std::string("\x08\x00\x00\x00\x00", 5);
   const std::string idat("\x78\x9c\x63\x00\x00\x00\x01\x00\x01", 9);  // zlib of one zero byte
-  return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", idat) + chunk("IEND", "");
+  return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", idat) +
+         chunk("IEND", "");
 }
 
 TEST(ImageIoTest, HeadersClaimingMorePixelsThanAllowedOrStoredAreRefusedBeforeAllocating) {
@@ -91,14 +95,18 @@ TEST(ImageIoTest, HeadersClaimingMorePixelsThanAllowedOrStoredAreRefusedBeforeAl
     return "";
   };
   // 23 bytes claiming 10^10 pixels (once ~10 GB and 44 s before failing).
-  EXPECT_NE(error(dir.Write("huge.pgm", "P5\n100000 100000\n255\nab")).find("more than the 100 million"),
-            std::string::npos);
+  EXPECT_NE(
+      error(dir.Write("huge.pgm", "P5\n100000 100000\n255\nab")).find("more than the 100 million"),
+      std::string::npos);
   EXPECT_NE(error(dir.Write("lie.pgm", "P5\n9000 9000\n255\nab")).find("truncated PGM pixel data"),
             std::string::npos);
-  EXPECT_NE(error(dir.Write("lie_ascii.pgm", "P2\n9000 9000\n255\n0 1 0\n")).find("truncated PGM pixel data"),
+  EXPECT_NE(error(dir.Write("lie_ascii.pgm", "P2\n9000 9000\n255\n0 1 0\n"))
+                .find("truncated PGM pixel data"),
             std::string::npos);
-  EXPECT_NE(error(dir.Write("huge.png", LyingPng(30000, 30000))).find("more than the 100 million"), std::string::npos);
-  EXPECT_NE(error(dir.Write("lie.png", LyingPng(9000, 9000))).find("more than its"), std::string::npos)
+  EXPECT_NE(error(dir.Write("huge.png", LyingPng(30000, 30000))).find("more than the 100 million"),
+            std::string::npos);
+  EXPECT_NE(error(dir.Write("lie.png", LyingPng(9000, 9000))).find("more than its"),
+            std::string::npos)
       << error(dir.path() / "lie.png");
 }
 
@@ -116,9 +124,9 @@ TEST(ResampleTest, MajorityAndThinStrokes) {
 
 TEST(MorphologyTest, ClosingFillsOnePixelGapsAndKeepsWalls) {
   Grid g(20, 20, 1);
-  g(5, 5) = 0;               // a speck
-  Fill(g, 10, 2, 10, 8, 0);  // a one-cell crack
-  Fill(g, 2, 12, 17, 14, 0); // a three-cell wall
+  g(5, 5) = 0;                // a speck
+  Fill(g, 10, 2, 10, 8, 0);   // a one-cell crack
+  Fill(g, 2, 12, 17, 14, 0);  // a three-cell wall
   const Grid closed = CloseNavigable(g, 1);
   EXPECT_EQ(closed(5, 5), 1);
   for (int c = 2; c <= 8; ++c) EXPECT_EQ(closed(10, c), 1) << c;
@@ -167,7 +175,8 @@ TEST(ComponentTest, NarrowDoorSplitsComponents) {
 
 TEST(DecompositionTest, KnownRectanglesComeBackExactly) {
   Grid g(40, 30, 1);
-  const std::vector<CellRect> want = {{2, 3, 21, 12}, {5, 20, 14, 35}, {24, 1, 27, 30}, {0, 38, 1, 39}};
+  const std::vector<CellRect> want = {
+      {2, 3, 21, 12}, {5, 20, 14, 35}, {24, 1, 27, 30}, {0, 38, 1, 39}};
   for (const auto& r : want) Fill(g, r.row0, r.col0, r.row1, r.col1, 0);
   std::vector<CellRect> got = DecomposeBlocked(g);
   ASSERT_EQ(got.size(), want.size());

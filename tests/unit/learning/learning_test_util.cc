@@ -4,16 +4,18 @@
 #include <stdexcept>
 
 #include "crowdsim/plugin_registry.h"
-#include "value_rl/state_encoding.h"
 #include "crowdsim/training/train_spec.h"
+#include "value_rl/state_encoding.h"
 #include "value_rl/value_policy.h"
 
 namespace crowdsim::testing {
 
-std::filesystem::path WriteTrainFile(const TempDir& dir, const TrainFile& f, const std::string& name) {
-  std::string text = "name: test_training\nseed: " + std::to_string(f.seed) + "\npolicy: " + f.policy +
-                     "\nparams: {sensors: " + f.sensors_param + ", lidar_beams: 15}\nsensors: " +
-                     f.sensors + "\nworld: " + f.world + "\nhumans: " + f.humans + "\n";
+std::filesystem::path WriteTrainFile(const TempDir& dir, const TrainFile& f,
+                                     const std::string& name) {
+  std::string text = "name: test_training\nseed: " + std::to_string(f.seed) +
+                     "\npolicy: " + f.policy + "\nparams: {sensors: " + f.sensors_param +
+                     ", lidar_beams: 15}\nsensors: " + f.sensors + "\nworld: " + f.world +
+                     "\nhumans: " + f.humans + "\n";
   if (!f.training.empty()) text += "training: " + f.training + "\n";
   if (!f.sim.empty()) text += "sim: " + f.sim + "\n";
   return dir.Write(name, text);

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "crowdsim/trainable.h"
-#include "temp_dir.h"
 #include "crowdsim/training/trainer.h"
+#include "temp_dir.h"
 
 namespace crowdsim::testing {
 
@@ -24,7 +24,8 @@ struct TrainFile {
 };
 
 /// Writes the training file into `dir` and returns its path.
-std::filesystem::path WriteTrainFile(const TempDir& dir, const TrainFile& f, const std::string& name = "train.yaml");
+std::filesystem::path WriteTrainFile(const TempDir& dir, const TrainFile& f,
+                                     const std::string& name = "train.yaml");
 
 /// Loads (ASSERT-free: throws std::runtime_error with the errors) and runs a training.
 training::TrainSummary Train(const std::filesystem::path& file, const std::filesystem::path& out,

@@ -3,12 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "crowdsim/plugin_registry.h"
-#include "crowdsim/runner.h"
 #include "crowdsim/results.h"
+#include "crowdsim/runner.h"
 #include "crowdsim/suite.h"
+#include "crowdsim/training/train_spec.h"
 #include "learning_test_util.h"
 #include "test_paths.h"
-#include "crowdsim/training/train_spec.h"
 
 namespace crowdsim::testing {
 namespace {
@@ -73,8 +73,10 @@ TEST(TrainSpecTest, StoreTimeoutsIsAProcedureKey) {
   f.training = "{store_timeouts: yes}";
   const auto bad = Load(WriteTrainFile(dir, f));
   ASSERT_FALSE(bad.spec);
-  EXPECT_NE(bad.errors[0].Format().find("training.store_timeouts: expected off, terminal or bootstrap, got 'yes'"),
-            std::string::npos) << bad.errors[0].Format();
+  EXPECT_NE(bad.errors[0].Format().find(
+                "training.store_timeouts: expected off, terminal or bootstrap, got 'yes'"),
+            std::string::npos)
+      << bad.errors[0].Format();
 }
 
 TEST(TrainSpecTest, ExplorationIsAProcedureKeyAndTheDefaultKeepsEarlierHashes) {
@@ -101,14 +103,17 @@ TEST(TrainSpecTest, ExplorationIsAProcedureKeyAndTheDefaultKeepsEarlierHashes) {
   f.training = "{exploration: careful}";
   const auto bad = Load(WriteTrainFile(dir, f));
   ASSERT_FALSE(bad.spec);
-  EXPECT_NE(bad.errors[0].Format().find("training.exploration: expected uniform or collision_free, got 'careful'"),
-            std::string::npos) << bad.errors[0].Format();
+  EXPECT_NE(bad.errors[0].Format().find(
+                "training.exploration: expected uniform or collision_free, got 'careful'"),
+            std::string::npos)
+      << bad.errors[0].Format();
 }
 
 TEST(TrainSpecTest, SeedOverrideChangesTheConfigurationAndDecayWarns) {
   TempDir dir;
   TrainFile f;
-  f.training = "{rl_episodes: 100, epsilon_decay_episodes: 400, epsilon_end: 0.1, store_timeouts: terminal}";
+  f.training =
+      "{rl_episodes: 100, epsilon_decay_episodes: 400, epsilon_end: 0.1, store_timeouts: terminal}";
   PluginRegistry registry;  // the spec points into it
   auto r = training::LoadTrainSpec(WriteTrainFile(dir, f), registry);
   ASSERT_TRUE(r.spec) << r.errors[0].Format();
@@ -119,7 +124,8 @@ TEST(TrainSpecTest, SeedOverrideChangesTheConfigurationAndDecayWarns) {
   EXPECT_EQ(r.spec->canonical.rfind("seed=2020\n", 0), 0u);
   const auto warnings = training::TrainSpecWarnings(*r.spec);
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("epsilon_decay_episodes (400) exceeds rl_episodes (100)"), std::string::npos);
+  EXPECT_NE(warnings[0].find("epsilon_decay_episodes (400) exceeds rl_episodes (100)"),
+            std::string::npos);
 }
 
 TEST(TrainSpecTest, ErrorsAreLocated) {
@@ -133,23 +139,27 @@ TEST(TrainSpecTest, ErrorsAreLocated) {
   std::string all;
   for (const auto& e : r.errors) all += e.Format() + "\n";
   EXPECT_NE(all.find("train.yaml:6:"), std::string::npos) << all;  // world line
-  EXPECT_NE(all.find("world.split: training uses the world's train split"), std::string::npos) << all;
+  EXPECT_NE(all.find("world.split: training uses the world's train split"), std::string::npos)
+      << all;
   EXPECT_NE(all.find("humans.count: min is larger than max"), std::string::npos) << all;
   EXPECT_NE(all.find("training.epsilon: unknown key 'epsilon'"), std::string::npos) << all;
-  EXPECT_NE(all.find("training.rl_learning_rate: value -1 is out of range"), std::string::npos) << all;
+  EXPECT_NE(all.find("training.rl_learning_rate: value -1 is out of range"), std::string::npos)
+      << all;
   EXPECT_EQ(r.errors.size(), 4u) << all;
 }
 
 TEST(TrainSpecTest, UnknownTopKeyAndPolicyParameter) {
   TempDir dir;
-  const auto file = dir.Write("bad.yaml",
-      "name: bad\npolicy: sarl\nparams: {sensors: lidar, beams: 3}\nsensors: [person]\n"
-      "world: {source: crowdnav}\nepisodes: 10\n");
+  const auto file =
+      dir.Write("bad.yaml",
+                "name: bad\npolicy: sarl\nparams: {sensors: lidar, beams: 3}\nsensors: [person]\n"
+                "world: {source: crowdnav}\nepisodes: 10\n");
   const auto r = Load(file);
   ASSERT_FALSE(r.spec);
   std::string all;
   for (const auto& e : r.errors) all += e.Format() + "\n";
-  EXPECT_NE(all.find("bad.yaml:3:26: params.beams: unknown parameter 'beams'"), std::string::npos) << all;
+  EXPECT_NE(all.find("bad.yaml:3:26: params.beams: unknown parameter 'beams'"), std::string::npos)
+      << all;
   EXPECT_NE(all.find("bad.yaml:6:1: episodes: unknown key 'episodes'"), std::string::npos) << all;
 }
 
@@ -157,19 +167,27 @@ TEST(TrainSpecTest, UnknownTopKeyAndPolicyParameter) {
 // the same messages (file:line:col, key path, the offending value, the valid choices or the fix).
 TEST(TrainSpecTest, TheRowPartIsReadByTheSuitesRowReader) {
   TempDir dir;
-  const auto file = dir.Write("row.yaml",
+  const auto file = dir.Write(
+      "row.yaml",
       "name: row\npolicy: linear\nweights: w.pt\nsensors: [person, {type: lidar2d, beamz: 9}]\n"
       "world: {source: random_rect, obstacles: 1}\nhumans: {count: 2, goal_mode: sideways}\n");
   const auto r = Load(file);
   ASSERT_FALSE(r.spec);
   std::string all;
   for (const auto& e : r.errors) all += e.Format() + "\n";
-  EXPECT_NE(all.find("row.yaml:3:10: weights: policy 'linear' takes no weights (it has no 'weights' "
-                     "parameter)"), std::string::npos) << all;
+  EXPECT_NE(
+      all.find("row.yaml:3:10: weights: policy 'linear' takes no weights (it has no 'weights' "
+               "parameter)"),
+      std::string::npos)
+      << all;
   EXPECT_NE(all.find("row.yaml:4:35: sensors[1].beamz: unknown parameter 'beamz' for sensor plugin "
-                     "'lidar2d' (valid: "), std::string::npos) << all;
+                     "'lidar2d' (valid: "),
+            std::string::npos)
+      << all;
   EXPECT_NE(all.find("row.yaml:6:31: humans.goal_mode: value 'sideways' is not valid; valid: stay, "
-                     "new_goal"), std::string::npos) << all;
+                     "new_goal"),
+            std::string::npos)
+      << all;
   EXPECT_EQ(r.errors.size(), 3u) << all;
 
   // What a training file must give that a suite row may take from its suite.
@@ -177,12 +195,18 @@ TEST(TrainSpecTest, TheRowPartIsReadByTheSuitesRowReader) {
   ASSERT_FALSE(bare.spec);
   all.clear();
   for (const auto& e : bare.errors) all += e.Format() + "\n";
-  EXPECT_NE(all.find("bare.yaml:1:1: policy: missing key 'policy' (the policy to train: cadrl or sarl)"),
-            std::string::npos) << all;
+  EXPECT_NE(
+      all.find("bare.yaml:1:1: policy: missing key 'policy' (the policy to train: cadrl or sarl)"),
+      std::string::npos)
+      << all;
   EXPECT_NE(all.find("bare.yaml:1:1: sensors: missing key 'sensors' (e.g. [person, {type: lidar2d, "
-                     "beams: 45}])"), std::string::npos) << all;
+                     "beams: 45}])"),
+            std::string::npos)
+      << all;
   EXPECT_NE(all.find("bare.yaml:1:1: world: missing key 'world' (e.g. {source: random_rect, "
-                     "obstacles: 1, split: train})"), std::string::npos) << all;
+                     "obstacles: 1, split: train})"),
+            std::string::npos)
+      << all;
   EXPECT_EQ(bare.errors.size(), 3u) << all;
 }
 
@@ -203,7 +227,8 @@ TEST(TrainSpecTest, HumansAreASuiteRowsWithACountRange) {
   f.humans = "{count: 3}";
   const auto plain = Load(WriteTrainFile(dir, f));
   ASSERT_TRUE(plain.spec) << plain.errors[0].Format();
-  EXPECT_NE(plain.spec->canonical.find("\nhumans:3-3,orca{"), std::string::npos) << plain.spec->canonical;
+  EXPECT_NE(plain.spec->canonical.find("\nhumans:3-3,orca{"), std::string::npos)
+      << plain.spec->canonical;
   f.humans = "{count: 3, goal_mode: stay}";
   const auto stay = Load(WriteTrainFile(dir, f));
   ASSERT_TRUE(stay.spec) << stay.errors[0].Format();
@@ -212,8 +237,10 @@ TEST(TrainSpecTest, HumansAreASuiteRowsWithACountRange) {
   f.humans = "{count: [1, 2, 3]}";
   const auto bad = Load(WriteTrainFile(dir, f));
   ASSERT_FALSE(bad.spec);
-  EXPECT_NE(bad.errors[0].Format().find("train.yaml:7:17: humans.count: a range is a list of two counts [min, max]"),
-            std::string::npos) << bad.errors[0].Format();
+  EXPECT_NE(bad.errors[0].Format().find(
+                "train.yaml:7:17: humans.count: a range is a list of two counts [min, max]"),
+            std::string::npos)
+      << bad.errors[0].Format();
 }
 
 // Every committed model was trained from its training file as it is now (or that file with
@@ -221,7 +248,8 @@ TEST(TrainSpecTest, HumansAreASuiteRowsWithACountRange) {
 // change to the reader or a training file that altered the configuration would be seen here.
 TEST(TrainSpecTest, CommittedModelsMatchTheirTrainingFiles) {
   int checked = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(SourceDir() / "results" / "models")) {
+  for (const auto& entry :
+       std::filesystem::directory_iterator(SourceDir() / "results" / "models")) {
     const auto summary = entry.path() / "summary.json";
     if (!std::filesystem::exists(summary)) continue;
     std::string name = entry.path().filename().string();
@@ -234,7 +262,9 @@ TEST(TrainSpecTest, CommittedModelsMatchTheirTrainingFiles) {
     PluginRegistry registry;
     auto r = training::LoadTrainSpec(file, registry);
     ASSERT_TRUE(r.spec) << r.errors[0].Format();
-    if (reseeded) training::OverrideSeed(*r.spec, static_cast<std::uint64_t>(ReadManifestInteger(summary, "seed")));
+    if (reseeded)
+      training::OverrideSeed(*r.spec,
+                             static_cast<std::uint64_t>(ReadManifestInteger(summary, "seed")));
     EXPECT_EQ(ReadManifestField(summary, "config_hash"), r.spec->ConfigHash()) << r.spec->canonical;
     ++checked;
   }

@@ -24,14 +24,17 @@ const char* kTiny =
 
 /// Greedy success rates of the trained and the untrained network on the same 100 test episodes.
 std::pair<double, double> Evaluate(const TempDir& dir, const fs::path& weights) {
-  const fs::path suite_file = dir.Write("eval.yaml",
-      "name: eval\nepisodes: 100\nseed: 99\n"
-      "world: {source: random_rect, obstacles: 0, split: test}\n"
-      "humans: {count: 1, policy: orca}\n"
-      "robot: {sensors: [person]}\n"
-      "rows:\n"
-      "  - {label: trained, policy: cadrl, params: {sensors: person}, weights: " + weights.string() + "}\n"
-      "  - {label: untrained, policy: cadrl, params: {sensors: person}}\n");
+  const fs::path suite_file =
+      dir.Write("eval.yaml",
+                "name: eval\nepisodes: 100\nseed: 99\n"
+                "world: {source: random_rect, obstacles: 0, split: test}\n"
+                "humans: {count: 1, policy: orca}\n"
+                "robot: {sensors: [person]}\n"
+                "rows:\n"
+                "  - {label: trained, policy: cadrl, params: {sensors: person}, weights: " +
+                    weights.string() +
+                    "}\n"
+                    "  - {label: untrained, policy: cadrl, params: {sensors: person}}\n");
   PluginRegistry registry;
   SuiteLoadResult loaded = LoadSuite(suite_file, registry);
   EXPECT_TRUE(loaded.suite) << (loaded.errors.empty() ? "" : loaded.errors[0].Format());
@@ -105,8 +108,11 @@ TEST(TrainingTest, ResumeContinuesExactly) {
   // Validations with the mean value of the fixed probe states, identical after resuming.
   const std::string validations = ReadText(dir.path() / "whole" / "training_log.csv");
   EXPECT_EQ(ReadText(dir.path() / "parts" / "training_log.csv"), validations);
-  EXPECT_EQ(validations.rfind("rl_episode,success_rate,collision_rate,timeout_rate,nav_time,probe_value\n", 0), 0u);
-  EXPECT_EQ(validations.find(",\n"), std::string::npos) << validations;  // every probe value present
+  EXPECT_EQ(validations.rfind(
+                "rl_episode,success_rate,collision_rate,timeout_rate,nav_time,probe_value\n", 0),
+            0u);
+  EXPECT_EQ(validations.find(",\n"), std::string::npos)
+      << validations;  // every probe value present
   // Restarting over a finished training without --resume is refused.
   EXPECT_THROW(Train(file, dir.path() / "parts"), training::TrainError);
 }
@@ -151,7 +157,8 @@ TEST(TrainingTest, LengtheningTheRlPhaseContinuesLikeALongerTraining) {
     Train(WriteTrainFile(dir, f, "shorter.yaml"), dir.path() / "grown", true);
     ADD_FAILURE() << "shortened the RL phase below the episodes done";
   } catch (const training::TrainError& e) {
-    EXPECT_NE(std::string(e.what()).find("fewer than the 15 RL episodes"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("fewer than the 15 RL episodes"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -172,7 +179,8 @@ TEST(TrainingTest, AnIncompleteOrDamagedCheckpointIsNamedNotAStackTrace) {
     }
     return "";
   };
-  EXPECT_NE(message().find("lacks optimizer.pt (incomplete or damaged)"), std::string::npos) << message();
+  EXPECT_NE(message().find("lacks optimizer.pt (incomplete or damaged)"), std::string::npos)
+      << message();
   std::ofstream(optimizer) << "not a torch archive";
   const std::string damaged = message();
   EXPECT_NE(damaged.find("cannot read"), std::string::npos) << damaged;
@@ -187,7 +195,8 @@ std::vector<long> LastMemoryComposition(const fs::path& log_file) {
   std::stringstream line(log.substr(start));
   for (std::string f; std::getline(line, f, ',');) fields.push_back(f);
   std::vector<long> counts;
-  for (std::size_t i = fields.size() - 4; i < fields.size(); ++i) counts.push_back(std::stol(fields[i]));
+  for (std::size_t i = fields.size() - 4; i < fields.size(); ++i)
+    counts.push_back(std::stol(fields[i]));
   return counts;
 }
 
@@ -199,9 +208,11 @@ TEST(TrainingTest, TimeoutsReachTheMemoryOnlyWhenTheProcedureSaysSo) {
   for (const char* mode : {"off", "terminal", "bootstrap"}) {
     SCOPED_TRACE(mode);
     TempDir dir;
-    f.training = std::string("{il_episodes: 3, il_epochs: 1, rl_episodes: 6, epsilon_start: 0.5, "
-                             "epsilon_end: 0.1, epsilon_decay_episodes: 4, batch_size: 8, "
-                             "train_batches: 2, validation_interval: 0, store_timeouts: ") + mode + "}";
+    f.training = std::string(
+                     "{il_episodes: 3, il_epochs: 1, rl_episodes: 6, epsilon_start: 0.5, "
+                     "epsilon_end: 0.1, epsilon_decay_episodes: 4, batch_size: 8, "
+                     "train_batches: 2, validation_interval: 0, store_timeouts: ") +
+                 mode + "}";
     const auto s = Train(WriteTrainFile(dir, f), dir.path() / "out");
     ASSERT_TRUE(s.finished);
     const auto counts = LastMemoryComposition(dir.path() / "out" / "training_episodes.csv");

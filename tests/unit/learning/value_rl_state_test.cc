@@ -5,8 +5,8 @@
 #include <cmath>
 #include <set>
 
-#include "value_rl/action_space.h"
 #include "crowdsim/lookahead.h"
+#include "value_rl/action_space.h"
 #include "value_rl/state_encoding.h"
 #include "value_rl/value_policy.h"
 
@@ -44,10 +44,11 @@ TEST(StateEncodingTest, MatchesRotateByHand) {
   people.sensor = "person";
   people.people.push_back(Person(frame));
   const std::vector<SensorReading> readings = {people};
-  const EncodedState s = EncodeState(Config(Model::kCadrl, SensorSet::kPerson), robot, frame, readings);
+  const EncodedState s =
+      EncodeState(Config(Model::kCadrl, SensorSet::kPerson), robot, frame, readings);
   // dg, v_pref, theta, radius, vx, vy | px1, py1, vx1, vy1, radius1, da, radius_sum
-  const std::vector<double> expected = {5.0, 1.0, 0.0, 0.3, -0.1, -0.7,
-                                        3.0, 1.0, 0.6, -0.8, 0.25, std::sqrt(10.0), 0.55};
+  const std::vector<double> expected = {
+      5.0, 1.0, 0.0, 0.3, -0.1, -0.7, 3.0, 1.0, 0.6, -0.8, 0.25, std::sqrt(10.0), 0.55};
   ASSERT_EQ(s.values.size(), expected.size());
   for (size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(s.values[i], expected[i], 1e-6) << i;
 }
@@ -84,7 +85,8 @@ TEST(StateEncodingTest, NobodySeenGivesTheFarStandIn) {
   SensorReading people;
   people.sensor = "person";
   const std::vector<SensorReading> readings = {people};
-  const EncodedState s = EncodeState(Config(Model::kCadrl, SensorSet::kPerson), robot, frame, readings);
+  const EncodedState s =
+      EncodeState(Config(Model::kCadrl, SensorSet::kPerson), robot, frame, readings);
   ASSERT_EQ(s.values.size(), 13u);
   EXPECT_FLOAT_EQ(s.values[6], -static_cast<float>(kAbsentHumanDistance));
   EXPECT_FLOAT_EQ(s.values[11], static_cast<float>(kAbsentHumanDistance));
@@ -147,7 +149,8 @@ EncodedState StateWith(int n, float shift) {
 TEST(ValueNetworkTest, PaddedBatchEqualsOneByOne) {
   for (Model model : {Model::kCadrl, Model::kSarl}) {
     ValuePolicy policy(Config(model, SensorSet::kPerson));
-    const std::vector<EncodedState> states = {StateWith(1, 0.0f), StateWith(5, 0.1f), StateWith(3, 0.2f)};
+    const std::vector<EncodedState> states = {StateWith(1, 0.0f), StateWith(5, 0.1f),
+                                              StateWith(3, 0.2f)};
     std::vector<const EncodedState*> all;
     for (const auto& s : states) all.push_back(&s);
     const std::vector<float> batch = policy.Values(all);
@@ -164,7 +167,8 @@ class FixedLookahead final : public Lookahead {
   explicit FixedLookahead(std::vector<double> rewards, std::vector<StepEvent> events = {})
       : rewards_(std::move(rewards)), events_(std::move(events)) {}
   std::span<const AgentState> NextHumans() const override { return {}; }
-  void Evaluate(std::span<const Action> actions, std::vector<LookaheadOutcome>* out) const override {
+  void Evaluate(std::span<const Action> actions,
+                std::vector<LookaheadOutcome>* out) const override {
     out->assign(actions.size(), LookaheadOutcome{});
     for (size_t k = 0; k < actions.size(); ++k) {
       LookaheadOutcome& o = (*out)[k];

@@ -4,8 +4,8 @@
 
 #include <fstream>
 
-#include "value_rl/state_encoding.h"
 #include "temp_dir.h"
+#include "value_rl/state_encoding.h"
 #include "value_rl/value_network.h"
 #include "value_rl/value_policy.h"
 
@@ -64,7 +64,8 @@ TEST(WeightsFileTest, RoundTripIsIdentical) {
     for (SensorSet sensors : {SensorSet::kPerson, SensorSet::kLidar, SensorSet::kLidarPerson}) {
       const ValueRlConfig c = Config(model, sensors, 7);
       ValuePolicy saved(c);
-      const auto file = dir.path() / (std::string(ModelName(model)) + "_" + SensorSetName(sensors) + ".pt");
+      const auto file =
+          dir.path() / (std::string(ModelName(model)) + "_" + SensorSetName(sensors) + ".pt");
       saved.SaveWeights(file);
       ValuePolicy other(Config(model, sensors, 8));
       const auto states = SomeStates(c);
@@ -99,7 +100,8 @@ TEST(WeightsFileTest, MismatchesAreClearErrors) {
   const auto file = dir.path() / "cadrl_person.pt";
   ValuePolicy(Config(Model::kCadrl, SensorSet::kPerson)).SaveWeights(file);
 
-  ExpectRejected(Config(Model::kSarl, SensorSet::kPerson), file, "model: expected sarl, found cadrl");
+  ExpectRejected(Config(Model::kSarl, SensorSet::kPerson), file,
+                 "model: expected sarl, found cadrl");
   ExpectRejected(Config(Model::kCadrl, SensorSet::kLidarPerson), file,
                  "sensors: expected lidar+person, found person");
   ValueRlConfig with_stop = Config(Model::kCadrl, SensorSet::kPerson);
@@ -112,7 +114,8 @@ TEST(WeightsFileTest, MismatchesAreClearErrors) {
   more_beams.lidar_beams = 45;
   ExpectRejected(more_beams, lidar_file, "lidar_beams: expected 45, found 9");
 
-  ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), dir.path() / "missing.pt", "does not exist");
+  ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), dir.path() / "missing.pt",
+                 "does not exist");
   const auto junk = dir.Write("junk.pt", "not a torch archive");
   ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), junk, "not a libtorch archive");
 }

@@ -1,6 +1,8 @@
 // The value targets and the replay memory behind the trainer: TD(0) on a corridor whose values
 // are known in closed form, truncated (timeout) transitions that bootstrap while terminal ones
 // do not, the memory's composition by episode kind, and the per-episode log's resume cut.
+#include "training/value_targets.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include "temp_dir.h"
 #include "training/episode_log.h"
 #include "training/replay_memory.h"
-#include "training/value_targets.h"
 
 namespace crowdsim::training {
 namespace {
@@ -37,7 +38,8 @@ std::vector<double> LearnCorridor(int n, double discount, int cut, bool bootstra
       ++k;
     }
     std::vector<float> next;
-    for (std::size_t i = 1; i < cells.size(); ++i) next.push_back(static_cast<float>(target[cells[i]]));
+    for (std::size_t i = 1; i < cells.size(); ++i)
+      next.push_back(static_cast<float>(target[cells[i]]));
     if (!terminal) {
       if (!bootstrap) continue;  // `off`: a cut episode is not stored at all
       next.push_back(static_cast<float>(target[k]));
@@ -146,8 +148,9 @@ TEST(EpisodeLogTest, ResumeCutsBackToTheCheckpointedSize) {
   row.outcome = "collision_human";
   resumed.Append(row);
   resumed.Flush();
-  EXPECT_EQ(testing::ReadText(file), std::string(EpisodeLog::kHeader) + "\nrl,0,0,success,0,0,0,0,0,0,0,0\n" +
-                            "rl,1,0,collision_human,0,0,0,0,0,0,0,0\n");
+  EXPECT_EQ(testing::ReadText(file), std::string(EpisodeLog::kHeader) +
+                                         "\nrl,0,0,success,0,0,0,0,0,0,0,0\n" +
+                                         "rl,1,0,collision_human,0,0,0,0,0,0,0,0\n");
 }
 
 }  // namespace

@@ -1,6 +1,4 @@
 // The roadmap and the path following that keep ORCA agents from stalling behind walls.
-#include "orca/guidance.h"
-
 #include <gtest/gtest.h>
 
 #include <array>
@@ -8,6 +6,7 @@
 #include <vector>
 
 #include "orca/geometry.h"
+#include "orca/guidance.h"
 #include "orca/obstacles.h"
 #include "orca/roadmap.h"
 #include "orca/solver.h"

@@ -1,7 +1,5 @@
 // The grid over boxes that the roadmap uses for the clearance of points: exactly the boxes a
 // plain scan keeps, and with it the same roadmap answers as without it.
-#include "orca/rect_index.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +9,7 @@
 
 #include "crowdsim/rng.h"
 #include "orca/geometry.h"
+#include "orca/rect_index.h"
 #include "orca/roadmap.h"
 
 namespace crowdsim::orca {
@@ -43,8 +42,8 @@ TEST(RectIndex, QueryKeepsWhatAScanKeeps) {
     const RectIndex index(boxes);
     std::vector<int> got;
     for (int q = 0; q < 60; ++q) {
-      const double x = q % 3 == 0 ? 0.5 * static_cast<double>(rng.Below(50)) - 12.0
-                                  : rng.Uniform(-15, 15);
+      const double x =
+          q % 3 == 0 ? 0.5 * static_cast<double>(rng.Below(50)) - 12.0 : rng.Uniform(-15, 15);
       const double y = rng.Uniform(-15, 15);
       const double w = q % 4 == 0 ? 0.0 : rng.Uniform(0, 8), h = rng.Uniform(0, 8);
       const Rect query = Rect::FromCorners(x, y, x + w, y + h);

@@ -17,11 +17,11 @@
 namespace crowdsim::orca {
 namespace {
 
-using testing::SimAgent;
-using testing::TestSim;
 using testing::BlocksSquares;
 using testing::MakeBlocksSim;
 using testing::MakeRvo2Circle;
+using testing::SimAgent;
+using testing::TestSim;
 
 constexpr double kDt = 0.25;
 

@@ -1,7 +1,5 @@
 // The ORCA solver on small scenes: linear programs, obstacle processing, agents swapping,
 // walls and corners, speed limit.
-#include "orca/solver.h"
-
 #include <gtest/gtest.h>
 
 #include <array>
@@ -13,6 +11,7 @@
 #include "orca/geometry.h"
 #include "orca/linear_program.h"
 #include "orca/obstacles.h"
+#include "orca/solver.h"
 #include "orca_test_sim.h"
 
 namespace crowdsim::orca {

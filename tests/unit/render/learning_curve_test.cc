@@ -1,13 +1,14 @@
 // The learning curve of a training: rolling rates, epsilon and validation points from the
 // training folder's files, written as SVG and PNG by `train` (end to end, with --seed), and
 // `report` on a training folder.
+#include "crowdsim/render/learning_curve.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
 #include <tuple>
 #include <utility>
 
-#include "crowdsim/render/learning_curve.h"
 #include "shell.h"
 #include "temp_dir.h"
 #include "test_paths.h"
@@ -25,15 +26,16 @@ const char* kEpisodesHeader =
 
 TEST(LearningCurveTest, DrawsRollingRatesEpsilonValidationAndLegend) {
   std::string episodes = kEpisodesHeader;
-  episodes += "demonstration,0,0,success,0.5,30,0,30,30,0,0,0\nimitation,0,0,,0,0,0.01,30,30,0,0,0\n";
+  episodes +=
+      "demonstration,0,0,success,0.5,30,0,30,30,0,0,0\nimitation,0,0,,0,0,0.01,30,30,0,0,0\n";
   for (int i = 0; i < 300; ++i) {
     episodes += "rl," + std::to_string(i) + ",0.3," + (i % 3 == 0 ? "timeout" : "success") +
                 ",0,10,0.01,100,50,40,0,10\n";
   }
-  const Drawing d = LearningCurveDrawing(
-      episodes,
-      "rl_episode,success_rate,collision_rate,timeout_rate,nav_time\n0,0.5,0.2,0.3,12\n300,0.7,0.1,0.2,11\n",
-      "probe");
+  const Drawing d = LearningCurveDrawing(episodes,
+                                         "rl_episode,success_rate,collision_rate,timeout_rate,nav_"
+                                         "time\n0,0.5,0.2,0.3,12\n300,0.7,0.1,0.2,11\n",
+                                         "probe");
   EXPECT_EQ(d.Count("rolling success"), 1);
   EXPECT_EQ(d.Count("rolling collision"), 1);
   EXPECT_EQ(d.Count("rolling timeout"), 1);
@@ -63,10 +65,12 @@ TEST(LearningCurveTest, EmptyFilesGiveAnEmptyChartAndAFolderWithoutThemIsRefused
 
 TEST(LearningCurveTest, TrainWritesTheCurveAsSvgAndPng) {
   testing::TempDir dir;
-  const fs::path file = dir.Write("t.yaml",
+  const fs::path file = dir.Write(
+      "t.yaml",
       "name: tiny\nseed: 5\npolicy: cadrl\nparams: {sensors: person}\nsensors: [person]\n"
       "world: {source: random_rect, obstacles: 0}\nhumans: {count: 1}\n"
-      "training: {il_episodes: 4, il_epochs: 1, rl_episodes: 6, epsilon_start: 0.5, epsilon_end: 0.1, "
+      "training: {il_episodes: 4, il_epochs: 1, rl_episodes: 6, epsilon_start: 0.5, epsilon_end: "
+      "0.1, "
       "epsilon_decay_episodes: 4, batch_size: 8, train_batches: 2, validation_interval: 3, "
       "validation_episodes: 2, store_timeouts: terminal}\n");
   const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();

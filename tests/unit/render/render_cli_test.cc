@@ -111,9 +111,10 @@ TEST(ReportCli, AGarbageEpisodesCsvFailsAndDamagedLinesAreShown) {
   const fs::path html = tmp.path() / "report.html";
   auto [rc, out] = Shell(Exe() + " report " + results.string() + " --out " + html.string());
   EXPECT_EQ(rc, 0) << out;
-  EXPECT_NE(testing::ReadText(html).find("1 damaged line(s) of episodes.csv were skipped (the first: " +
-                                         csv.string() + ":3: it has 3 field(s), expected 14)"),
-            std::string::npos);
+  EXPECT_NE(
+      testing::ReadText(html).find("1 damaged line(s) of episodes.csv were skipped (the first: " +
+                                   csv.string() + ":3: it has 3 field(s), expected 14)"),
+      std::string::npos);
 
   // Garbage: an error naming the file, the line and the fix, and no page.
   std::ofstream(csv, std::ios::trunc) << "garbage\nmore garbage, x\n";

@@ -246,8 +246,8 @@ TEST(EpisodeFigure, KeyExplainsTheMarksDrawnAndTheScaleBarIsToScale) {
   const double metres = std::stod(label[0]);
   EXPECT_TRUE(label[0] == "1 m" || label[0] == "2 m" || label[0] == "5 m") << label[0];
   size_t wide = 0;
-  while (wide < sc.map->rectangles.size() &&
-         !(sc.map->rectangles[wide].min == Vec2(-1, 1.5) && sc.map->rectangles[wide].max == Vec2(1, 2.5)))
+  while (wide < sc.map->rectangles.size() && !(sc.map->rectangles[wide].min == Vec2(-1, 1.5) &&
+                                               sc.map->rectangles[wide].max == Vec2(1, 2.5)))
     ++wide;
   ASSERT_LT(wide, sc.map->rectangles.size());
   const DrawItem* obstacle = nullptr;

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <string>
 #include <numbers>
+#include <string>
 
 #include "crowdsim/plugin_registry.h"
 #include "crowdsim/rng.h"
@@ -157,7 +157,8 @@ TEST_F(CrowdNavPlugin, ACrowdThatDoesNotFitNamesItsDensityAndASizeThatFits) {
     return std::string("(placed)");
   };
   const std::string circle = message({}, 30);
-  EXPECT_NE(circle.find("circle_radius 4 m: 1.19 humans per metre of circle"), std::string::npos) << circle;
+  EXPECT_NE(circle.find("circle_radius 4 m: 1.19 humans per metre of circle"), std::string::npos)
+      << circle;
   const auto fix = circle.find("circle_radius >= ~");
   ASSERT_NE(fix, std::string::npos) << circle;
   const double radius = std::stod(circle.substr(fix + 18));
@@ -168,8 +169,9 @@ TEST_F(CrowdNavPlugin, ACrowdThatDoesNotFitNamesItsDensityAndASizeThatFits) {
   const auto sfix = square.find("square_width >= ~");
   ASSERT_NE(sfix, std::string::npos) << square;
   const double width = std::stod(square.substr(sfix + 17));
-  EXPECT_EQ(message({{"scenario", std::string("square_crossing")}, {"square_width", width}}, 300, 20),
-            "(placed)");
+  EXPECT_EQ(
+      message({{"scenario", std::string("square_crossing")}, {"square_width", width}}, 300, 20),
+      "(placed)");
 }
 
 }  // namespace

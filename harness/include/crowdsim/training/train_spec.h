@@ -34,22 +34,22 @@ const char* ToString(ExplorationRule e);
 /// paper's literal procedure; the training files under suites/train/ name the procedure that
 /// learns (docs/training.md).
 struct TrainingSettings {
-  int il_episodes = 3000;          ///< demonstrations of the teacher
-  int il_epochs = 50;              ///< passes over the memory after the demonstrations
+  int il_episodes = 3000;  ///< demonstrations of the teacher
+  int il_epochs = 50;      ///< passes over the memory after the demonstrations
   double il_learning_rate = 0.01;
   int rl_episodes = 10000;
   double rl_learning_rate = 0.001;
-  double momentum = 0.9;           ///< SGD momentum (both phases)
-  double epsilon_start = 0.9;      ///< paper: linear 0.9 -> 0.5 over the first 5k episodes
+  double momentum = 0.9;       ///< SGD momentum (both phases)
+  double epsilon_start = 0.9;  ///< paper: linear 0.9 -> 0.5 over the first 5k episodes
   double epsilon_end = 0.5;
   int epsilon_decay_episodes = 5000;
   int target_update_interval = 50;  ///< RL episodes between target network copies
   int capacity = 100000;            ///< replay memory size
   int batch_size = 100;
-  int train_batches = 100;          ///< SGD steps after each RL episode
-  int validation_interval = 1000;   ///< RL episodes between validations (0: none)
+  int train_batches = 100;         ///< SGD steps after each RL episode
+  int validation_interval = 1000;  ///< RL episodes between validations (0: none)
   int validation_episodes = 100;
-  int checkpoint_interval = 500;    ///< episodes between checkpoints
+  int checkpoint_interval = 500;  ///< episodes between checkpoints
   StoreTimeouts store_timeouts = StoreTimeouts::kOff;
   ExplorationRule exploration = ExplorationRule::kUniform;
 };
@@ -65,7 +65,7 @@ struct TrainSpec {
   /// sensors, the world (its train split) and the humans, drawn per episode in
   /// [`row.humans.count`, `row.humans.count_max`].
   RowSpec row;
-  PluginUse teacher;              ///< imitation-learning robot (`training.il_policy`)
+  PluginUse teacher;  ///< imitation-learning robot (`training.il_policy`)
   TrainingSettings training;
   /// Everything that decides the trained weights; its hash guards --resume.
   std::string canonical;

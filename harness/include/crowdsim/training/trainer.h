@@ -74,7 +74,8 @@ struct TrainSummary {
 };
 
 /// Runs (or resumes) a training. Throws TrainError, or TrainingInterrupted on a signal.
-TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry, const TrainOptions& options);
+TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry,
+                         const TrainOptions& options);
 
 /// The folder holds a finished training of exactly this configuration (its summary.json says
 /// finished, with spec's config hash): a campaign skips it. A finished training whose file now

@@ -85,7 +85,8 @@ std::vector<Vec2> Roadmap::ShortestPath(const Vec2& start, const Vec2& goal) con
   for (int i = 0; i < n; ++i) {
     sees_goal[i] = SegmentClear(rects_, nodes_[i], goal, std::max(0.0, c_goal - kClearanceSlack));
     any_goal = any_goal || sees_goal[i];
-    seen_from_start[i] = SegmentClear(rects_, start, nodes_[i], std::max(0.0, c_start - kClearanceSlack));
+    seen_from_start[i] =
+        SegmentClear(rects_, start, nodes_[i], std::max(0.0, c_start - kClearanceSlack));
   }
   if (!any_goal) return {};
 

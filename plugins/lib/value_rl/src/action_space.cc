@@ -8,7 +8,8 @@ namespace crowdsim::value_rl {
 std::vector<double> ExponentialSpeeds(int speed_samples, double v_pref) {
   std::vector<double> speeds;
   for (int i = 0; i < speed_samples; ++i) {
-    speeds.push_back((std::exp((i + 1.0) / speed_samples) - 1.0) / (std::numbers::e - 1.0) * v_pref);
+    speeds.push_back((std::exp((i + 1.0) / speed_samples) - 1.0) / (std::numbers::e - 1.0) *
+                     v_pref);
   }
   return speeds;
 }

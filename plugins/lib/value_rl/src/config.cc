@@ -8,9 +8,12 @@ const char* ModelName(Model m) { return m == Model::kCadrl ? "cadrl" : "sarl"; }
 
 const char* SensorSetName(SensorSet s) {
   switch (s) {
-    case SensorSet::kPerson: return "person";
-    case SensorSet::kLidar: return "lidar";
-    case SensorSet::kLidarPerson: return "lidar+person";
+    case SensorSet::kPerson:
+      return "person";
+    case SensorSet::kLidar:
+      return "lidar";
+    case SensorSet::kLidarPerson:
+      return "lidar+person";
   }
   return "unknown";
 }
@@ -24,22 +27,61 @@ std::vector<std::string> SensorPlugins(SensorSet s) {
 
 ParamSchema Schema(Model /*model: both families take the same parameters*/) {
   return {
-      {"sensors", ParamType::kString, std::string("person"), 0, 0,
+      {"sensors",
+       ParamType::kString,
+       std::string("person"),
+       0,
+       0,
        {"person", "lidar", "lidar+person"},
        "readings that enter the network (the row must configure the matching sensors)"},
-      {"weights", ParamType::kString, std::string(""), 0, 0, {},
+      {"weights",
+       ParamType::kString,
+       std::string(""),
+       0,
+       0,
+       {},
        "trained weights (.pt from `crowdsim-bench train`); empty = untrained network"},
-      {"lidar_beams", ParamType::kInt, std::int64_t{45}, 1, 3600, {},
+      {"lidar_beams",
+       ParamType::kInt,
+       std::int64_t{45},
+       1,
+       3600,
+       {},
        "beams of the lidar2d reading (must match the sensor's `beams`)"},
-      {"speed_samples", ParamType::kInt, std::int64_t{2}, 1, 64, {},
+      {"speed_samples",
+       ParamType::kInt,
+       std::int64_t{2},
+       1,
+       64,
+       {},
        "speeds per direction, (e^((i+1)/S) - 1)/(e - 1) * v_pref"},
-      {"rotation_samples", ParamType::kInt, std::int64_t{8}, 1, 360, {},
+      {"rotation_samples",
+       ParamType::kInt,
+       std::int64_t{8},
+       1,
+       360,
+       {},
        "directions k * 360/R degrees in the world frame"},
-      {"stop_action", ParamType::kBool, false, 0, 1, {},
+      {"stop_action",
+       ParamType::kBool,
+       false,
+       0,
+       1,
+       {},
        "prepend CrowdNav's stop action (16 + 1 actions by default)"},
-      {"init_seed", ParamType::kInt, std::int64_t{0}, 0, 1e15, {},
+      {"init_seed",
+       ParamType::kInt,
+       std::int64_t{0},
+       0,
+       1e15,
+       {},
        "seed of the untrained weights (no `weights`)"},
-      {"torch_threads", ParamType::kInt, std::int64_t{1}, 1, 256, {},
+      {"torch_threads",
+       ParamType::kInt,
+       std::int64_t{1},
+       1,
+       256,
+       {},
        "libtorch intra-op threads (1: deterministic, best for many small batches)"},
   };
 }

@@ -38,8 +38,8 @@ const SensorReading& Find(std::span<const SensorReading> readings, const char* n
 
 }  // namespace
 
-EncodedState EncodeState(const ValueRlConfig& config, const AgentState& robot,
-                         const Frame& frame, std::span<const SensorReading> readings) {
+EncodedState EncodeState(const ValueRlConfig& config, const AgentState& robot, const Frame& frame,
+                         std::span<const SensorReading> readings) {
   EncodedState state;
   std::vector<float>& v = state.values;
   v.reserve(kSelfDim + config.LidarInputs() + 6 * kHumanDim);
@@ -49,8 +49,7 @@ EncodedState EncodeState(const ValueRlConfig& config, const AgentState& robot,
     if (static_cast<int>(lidar.ranges.size()) != config.lidar_beams) {
       throw std::runtime_error("the lidar2d reading has " + std::to_string(lidar.ranges.size()) +
                                " beams but the policy was built for lidar_beams = " +
-                               std::to_string(config.lidar_beams) +
-                               "; make the two equal");
+                               std::to_string(config.lidar_beams) + "; make the two equal");
     }
     // Ranges scaled to [0, 1] so that every beam weighs alike whatever max_range is.
     const double scale = lidar.max_range > 0.0 ? 1.0 / lidar.max_range : 1.0;

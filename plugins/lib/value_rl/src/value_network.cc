@@ -55,7 +55,8 @@ torch::Tensor ForwardJoined(torch::nn::Sequential& mlp, const torch::Tensor& sta
   const int64_t s = state.size(1), r = rows.size(2);
   const torch::Tensor w_state = w.narrow(1, state_first ? 0 : r, s);
   const torch::Tensor w_rows = w.narrow(1, state_first ? s : 0, r);
-  torch::Tensor x = torch::linear(rows, w_rows) + torch::linear(state, w_state, first->bias).unsqueeze(1);
+  torch::Tensor x =
+      torch::linear(rows, w_rows) + torch::linear(state, w_state, first->bias).unsqueeze(1);
   for (auto it = mlp->begin() + 1; it != mlp->end(); ++it) x = it->forward(x);
   return x;
 }
@@ -87,8 +88,8 @@ class SelfEncoder {
 class Cadrl final : public ValueNetwork {
  public:
   explicit Cadrl(const ValueRlConfig& c) : self_(this, c), humans_(UsesPerson(c.sensors)) {
-    mlp_ = register_module(
-        "mlp", Mlp(self_.dim() + (humans_ ? kHumanDim : 0), {150, 100, 100, 1}, false));
+    mlp_ = register_module("mlp",
+                           Mlp(self_.dim() + (humans_ ? kHumanDim : 0), {150, 100, 100, 1}, false));
   }
 
   torch::Tensor Forward(const StateBatch& b) override {
@@ -114,15 +115,17 @@ class Sarl final : public ValueNetwork {
       mlp2_ = register_module("mlp2", Mlp(100, {100, 50}, false));
       attention_ = register_module("attention", Mlp(200, {100, 100, 1}, false));
     }
-    mlp3_ = register_module("mlp3", Mlp(self_.dim() + (humans_ ? 50 : 0), {150, 100, 100, 1}, false));
+    mlp3_ =
+        register_module("mlp3", Mlp(self_.dim() + (humans_ ? 50 : 0), {150, 100, 100, 1}, false));
   }
 
   torch::Tensor Forward(const StateBatch& b) override {
     torch::Tensor joint = self_(b);
     if (humans_) {
       // The humans' rows carry the plain self state, as CrowdNav's 13-value rows do.
-      torch::Tensor e = ForwardJoined(mlp1_, b.self, b.humans, /*state_first=*/true);  // (B, N, 100)
-      torch::Tensor h = mlp2_->forward(e);  // (B, N, 50)
+      torch::Tensor e =
+          ForwardJoined(mlp1_, b.self, b.humans, /*state_first=*/true);  // (B, N, 100)
+      torch::Tensor h = mlp2_->forward(e);                               // (B, N, 50)
       torch::Tensor m = b.mask.to(torch::kFloat).unsqueeze(2);
       torch::Tensor global = (e * m).sum(1) / m.sum(1).clamp_min(1.0);
       // Attention on cat({e, global}): the mean embedding is the per-state part.

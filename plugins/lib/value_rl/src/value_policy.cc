@@ -1,10 +1,9 @@
 #include "value_rl/value_policy.h"
 
-#include <dlfcn.h>
-#include <malloc.h>
-
 #include <ATen/Parallel.h>
 #include <c10/core/InferenceMode.h>
+#include <dlfcn.h>
+#include <malloc.h>
 #include <torch/nn/modules/linear.h>
 #include <torch/optim/sgd.h>
 #include <torch/serialize.h>
@@ -14,9 +13,9 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "value_rl/action_space.h"
 #include "crowdsim/lookahead.h"
 #include "crowdsim/rng.h"
+#include "value_rl/action_space.h"
 #include "value_rl/state_encoding.h"
 #include "value_rl/value_network.h"
 #include "value_rl/weights_file.h"
@@ -152,7 +151,8 @@ Action ValuePolicy::Decide(const Observation& obs) {
     m.safe_actions.clear();
     for (size_t k = 0; k < m.outcomes.size(); ++k) {
       const StepEvent e = m.outcomes[k].event;
-      if (e != StepEvent::kCollisionHuman && e != StepEvent::kCollisionObstacle) m.safe_actions.push_back(k);
+      if (e != StepEvent::kCollisionHuman && e != StepEvent::kCollisionObstacle)
+        m.safe_actions.push_back(k);
     }
     if (m.safe_actions.empty()) return m.actions[m.rng.Below(m.actions.size())];
     return m.actions[m.safe_actions[m.rng.Below(m.safe_actions.size())]];
@@ -201,7 +201,8 @@ void ValuePolicy::InitWeights(std::uint64_t seed) {
     const double bound = 1.0 / std::sqrt(static_cast<double>(linear->weight.size(1)));
     for (torch::Tensor* t : {&linear->weight, &linear->bias}) {
       float* p = t->data_ptr<float>();
-      for (int64_t i = 0; i < t->numel(); ++i) p[i] = static_cast<float>(rng.Uniform(-bound, bound));
+      for (int64_t i = 0; i < t->numel(); ++i)
+        p[i] = static_cast<float>(rng.Uniform(-bound, bound));
     }
   }
   UpdateTargetNetwork();
@@ -282,7 +283,8 @@ void ValuePolicy::LoadTrainingState(const fs::path& dir) {
     archive.load_from((dir / "optimizer.pt").string());
   } catch (const c10::Error& e) {
     throw std::runtime_error("cannot read " + (dir / "optimizer.pt").string() + " (" +
-                             e.what_without_backtrace() + "): restart the training without --resume");
+                             e.what_without_backtrace() +
+                             "): restart the training without --resume");
   }
   c10::IValue lr, momentum, has;
   archive.read("learning_rate", lr);

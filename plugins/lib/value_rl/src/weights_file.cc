@@ -50,9 +50,9 @@ void LoadWeightsFile(const WeightsMeta& expected, const fs::path& file, ValueNet
   }
   if (const std::optional<ZipDamage> damage = FindZipDamage(file)) {
     throw std::runtime_error(
-        "weights file '" + file.string() + "' is damaged: " +
-        (damage->entry.empty() ? "" : "entry '" + damage->entry + "': ") + damage->problem +
-        "; train it again (`crowdsim-bench train`) or download it again");
+        "weights file '" + file.string() +
+        "' is damaged: " + (damage->entry.empty() ? "" : "entry '" + damage->entry + "': ") +
+        damage->problem + "; train it again (`crowdsim-bench train`) or download it again");
   }
   torch::serialize::InputArchive archive;
   try {

@@ -78,7 +78,8 @@ struct Directory {
 // The end record: the last one whose comment ends exactly at the end of the file.
 std::optional<uint64_t> FindEndRecord(const Bytes& b) {
   if (b.size() < kEndRecordSize) return std::nullopt;
-  const uint64_t lowest = b.size() > kEndRecordSize + 0xFFFF ? b.size() - kEndRecordSize - 0xFFFF : 0;
+  const uint64_t lowest =
+      b.size() > kEndRecordSize + 0xFFFF ? b.size() - kEndRecordSize - 0xFFFF : 0;
   for (uint64_t at = b.size() - kEndRecordSize;; --at) {
     if (b.Le(at, 4) == kEndRecord && at + kEndRecordSize + b.Le(at + 20, 2) == b.size()) return at;
     if (at == lowest) return std::nullopt;
@@ -124,7 +125,8 @@ bool ApplyZip64Extra(const Bytes& b, uint64_t at, uint64_t length, Entry* e) {
     }
     at += 4 + size;
   }
-  return e->uncompressed != kSaturated32 && e->compressed != kSaturated32 && e->local != kSaturated32;
+  return e->uncompressed != kSaturated32 && e->compressed != kSaturated32 &&
+         e->local != kSaturated32;
 }
 
 // Reads the record at `*at` and moves past it; nullopt when it is not a readable record.
@@ -145,7 +147,8 @@ std::optional<Entry> ReadEntry(const Bytes& b, const Directory& dir, uint64_t* a
   e.compressed = b.Le(p + 20, 4);
   e.uncompressed = b.Le(p + 24, 4);
   e.local = b.Le(p + 42, 4);
-  if (!ApplyZip64Extra(b, p + kCentralHeaderSize + name_length, extra_length, &e)) return std::nullopt;
+  if (!ApplyZip64Extra(b, p + kCentralHeaderSize + name_length, extra_length, &e))
+    return std::nullopt;
   *at = p + record;
   return e;
 }
@@ -186,7 +189,8 @@ Inflated Inflate(const unsigned char* data, uint64_t length) {
       break;
     }
     if (rc != Z_OK && rc != Z_STREAM_END && rc != Z_BUF_ERROR) {
-      out.error = std::string("its deflated data are corrupt (zlib: ") + (s.msg ? s.msg : "error") + ")";
+      out.error =
+          std::string("its deflated data are corrupt (zlib: ") + (s.msg ? s.msg : "error") + ")";
       break;
     }
   }
@@ -241,10 +245,12 @@ std::optional<ZipDamage> FindZipDamage(const fs::path& file) {
   for (uint64_t k = 0; k < dir->entries; ++k) {
     const std::optional<Entry> e = ReadEntry(b, *dir, &at);
     if (!e) {
-      return ZipDamage{"", "record " + std::to_string(k + 1) + " of " + std::to_string(dir->entries) +
+      return ZipDamage{"", "record " + std::to_string(k + 1) + " of " +
+                               std::to_string(dir->entries) +
                                " of the archive's central directory is damaged"};
     }
-    if (std::string problem = CheckEntry(b, *e); !problem.empty()) return ZipDamage{e->name, problem};
+    if (std::string problem = CheckEntry(b, *e); !problem.empty())
+      return ZipDamage{e->name, problem};
   }
   return std::nullopt;
 }

@@ -21,10 +21,12 @@ class UsageError : public std::runtime_error {
 struct Args {
   std::vector<std::string> positional;
   std::map<std::string, std::string> options;  ///< "--out" -> "DIR"; flags map to ""
-  std::map<std::string, std::vector<std::string>> repeated;  ///< every value of each option, in order
+  std::map<std::string, std::vector<std::string>>
+      repeated;  ///< every value of each option, in order
 
   /// Parses `args`; `with_value` names the options that take a value, `flags` those that do not.
-  static Args Parse(const std::vector<std::string>& args, const std::vector<std::string>& with_value,
+  static Args Parse(const std::vector<std::string>& args,
+                    const std::vector<std::string>& with_value,
                     const std::vector<std::string>& flags);
   bool Has(const std::string& name) const { return options.count(name) != 0; }
   std::optional<std::string> Get(const std::string& name) const;

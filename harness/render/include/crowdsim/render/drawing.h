@@ -42,7 +42,8 @@ inline Style Stroke(const Color& c, double width, bool dashed = false) {
 }
 
 /// A filled shape, optionally outlined.
-inline Style Filled(const Color& fill, std::optional<Color> stroke = std::nullopt, double width = 1.0) {
+inline Style Filled(const Color& fill, std::optional<Color> stroke = std::nullopt,
+                    double width = 1.0) {
   Style s;
   s.fill = fill;
   s.stroke = stroke;

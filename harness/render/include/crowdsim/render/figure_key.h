@@ -12,17 +12,17 @@ namespace crowdsim::render {
 
 /// The marks a key can explain; a figure lists those it draws.
 enum class KeyMark {
-  kRobotStart,      ///< white square
-  kRobotGoal,       ///< gold star
-  kHumanStart,      ///< small open circle in the human's colour
-  kHumanGoal,       ///< open diamond in the human's colour
-  kTimeDot,         ///< dot every N s on every path
-  kEndDisc,         ///< disc of the agent's radius where it ended (or is, in an animation)
-  kObstacle,        ///< grey rectangle
-  kMask,            ///< light grey: not navigable in a floor plan's mask
-  kLidar,           ///< lidar beam and its hit
-  kPersonReading,   ///< dashed ring and velocity of a person-sensor detection
-  kCollision,       ///< dashed red ring around the robot that collided
+  kRobotStart,        ///< white square
+  kRobotGoal,         ///< gold star
+  kHumanStart,        ///< small open circle in the human's colour
+  kHumanGoal,         ///< open diamond in the human's colour
+  kTimeDot,           ///< dot every N s on every path
+  kEndDisc,           ///< disc of the agent's radius where it ended (or is, in an animation)
+  kObstacle,          ///< grey rectangle
+  kMask,              ///< light grey: not navigable in a floor plan's mask
+  kLidar,             ///< lidar beam and its hit
+  kPersonReading,     ///< dashed ring and velocity of a person-sensor detection
+  kCollision,         ///< dashed red ring around the robot that collided
   kCollisionPartner,  ///< red ring around the human or obstacle it hit
 };
 

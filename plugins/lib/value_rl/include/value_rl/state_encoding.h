@@ -27,8 +27,8 @@ void AppendHuman(const PersonObservation& person, double robot_radius, std::vect
 
 /// Builds the state of `robot` at `frame` from its readings. Throws std::runtime_error when
 /// a reading the configuration needs is missing or has the wrong number of beams.
-EncodedState EncodeState(const ValueRlConfig& config, const AgentState& robot,
-                         const Frame& frame, std::span<const SensorReading> readings);
+EncodedState EncodeState(const ValueRlConfig& config, const AgentState& robot, const Frame& frame,
+                         std::span<const SensorReading> readings);
 
 /// Number of human rows in an encoded state.
 int HumanRows(const ValueRlConfig& config, const EncodedState& state);

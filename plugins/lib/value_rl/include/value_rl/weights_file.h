@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "value_rl/value_network.h"
 #include "value_rl/config.h"
+#include "value_rl/value_network.h"
 
 namespace crowdsim::value_rl {
 
