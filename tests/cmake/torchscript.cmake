@@ -10,19 +10,16 @@ if(CROWDSIM_BUILD_TESTS AND TARGET crowdsim_plugin_torchscript)
     set(_torchscript_python "${Python3_EXECUTABLE}")
   endif()
   if(_torchscript_python)
-    add_test(NAME torchscript_plugin
-      COMMAND "${_torchscript_python}" tests/python/test_torchscript_plugin.py
-      WORKING_DIRECTORY "${CMAKE_SOURCE_DIR}")
-    set_tests_properties(torchscript_plugin PROPERTIES LABELS integration TIMEOUT 300
-      SKIP_RETURN_CODE 77
-      ENVIRONMENT "CROWDSIM_BENCH=$<TARGET_FILE:crowdsim-bench>;PYTHONPATH=${CROWDSIM_PYTHON_DIR}")
-    # The committed CADRL/SARL weights exported to TorchScript (crowdsim_bench.torchscript_export)
-    # decide as the built-in plugins; skipped (77) without python3-torch or the Python package.
-    add_test(NAME torchscript_export
-      COMMAND "${_torchscript_python}" tests/python/test_torchscript_export.py
-      WORKING_DIRECTORY "${CMAKE_SOURCE_DIR}")
-    set_tests_properties(torchscript_export PROPERTIES LABELS integration TIMEOUT 300
-      SKIP_RETURN_CODE 77
-      ENVIRONMENT "CROWDSIM_BENCH=$<TARGET_FILE:crowdsim-bench>;PYTHONPATH=${CROWDSIM_PYTHON_DIR}")
+    # torchscript_plugin: the tiny modules; torchscript_export: the committed CADRL/SARL
+    # weights exported to TorchScript (crowdsim_bench.torchscript_export) decide as the built-in
+    # plugins. Both exit 77 (skipped) without python3-torch or the Python package.
+    foreach(_test plugin export)
+      add_test(NAME torchscript_${_test}
+        COMMAND "${_torchscript_python}" tests/python/test_torchscript_${_test}.py
+        WORKING_DIRECTORY "${CMAKE_SOURCE_DIR}")
+      set_tests_properties(torchscript_${_test} PROPERTIES LABELS integration TIMEOUT 300
+        SKIP_RETURN_CODE 77
+        ENVIRONMENT "CROWDSIM_BENCH=$<TARGET_FILE:crowdsim-bench>;PYTHONPATH=${CROWDSIM_PYTHON_DIR}")
+    endforeach()
   endif()
 endif()
