@@ -3,13 +3,13 @@
 #include <optional>
 
 #include "commands.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/cli/args.h"
-#include "crowdsim/plugin_registry.h"
 #include "crowdsim/render/animation.h"
 #include "crowdsim/render/episode_replay.h"
 #include "crowdsim/render/figure_output.h"
 #include "crowdsim/render/output_format.h"
-#include "crowdsim/suite.h"
 
 namespace crowdsim::cli {
 

@@ -3,14 +3,14 @@
 #include <iostream>
 
 #include "commands.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/results.h"
 #include "crowdsim/cli/args.h"
-#include "crowdsim/plugin_registry.h"
 #include "crowdsim/render/figure_output.h"
 #include "crowdsim/render/learning_curve.h"
 #include "crowdsim/render/report.h"
 #include "crowdsim/render/results_folder.h"
 #include "crowdsim/render/training_report.h"
-#include "crowdsim/results.h"
 
 namespace crowdsim::cli {
 

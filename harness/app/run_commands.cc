@@ -10,11 +10,11 @@
 #include <thread>
 
 #include "commands.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/runner.h"
+#include "crowdsim/bench/suite.h"
+#include "crowdsim/bench/training/train_spec.h"
 #include "crowdsim/cli/args.h"
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/runner.h"
-#include "crowdsim/suite.h"
-#include "crowdsim/training/train_spec.h"
 #include "process_group.h"
 
 namespace crowdsim::cli {

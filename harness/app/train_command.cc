@@ -7,10 +7,10 @@
 #include <optional>
 
 #include "commands.h"
+#include "crowdsim/bench/training/train_spec.h"
+#include "crowdsim/bench/training/trainer.h"
 #include "crowdsim/cli/args.h"
 #include "crowdsim/render/learning_curve.h"
-#include "crowdsim/training/train_spec.h"
-#include "crowdsim/training/trainer.h"
 #include "process_group.h"
 
 namespace crowdsim::cli {

@@ -6,8 +6,8 @@
 #include <ostream>
 #include <string>
 
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/sim_config.h"
-#include "crowdsim/suite.h"
 
 namespace crowdsim::suite_internal {
 

@@ -1,4 +1,4 @@
-#include "crowdsim/csv.h"
+#include "crowdsim/bench/csv.h"
 
 namespace crowdsim {
 

@@ -1,4 +1,4 @@
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 
 #include <chrono>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "crowdsim/results.h"
+#include "crowdsim/bench/results.h"
 
 namespace crowdsim {
 

@@ -7,9 +7,9 @@
 #include <type_traits>
 #include <variant>
 
-#include "crowdsim/episode_columns.h"
-#include "crowdsim/metrics.h"
-#include "crowdsim/results.h"
+#include "crowdsim/bench/episode_columns.h"
+#include "crowdsim/bench/metrics.h"
+#include "crowdsim/bench/results.h"
 #include "crowdsim/version.h"
 #include "json_file.h"
 

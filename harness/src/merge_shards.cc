@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "crowdsim/results.h"
-#include "crowdsim/runner.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/runner.h"
 #include "json_file.h"
 
 namespace crowdsim {

@@ -1,9 +1,9 @@
-#include "crowdsim/metrics.h"
+#include "crowdsim/bench/metrics.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "crowdsim/episode_columns.h"
+#include "crowdsim/bench/episode_columns.h"
 
 namespace crowdsim {
 

@@ -1,4 +1,4 @@
-#include "crowdsim/results.h"
+#include "crowdsim/bench/results.h"
 
 #include <algorithm>
 #include <array>
@@ -16,7 +16,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "crowdsim/csv.h"
+#include "crowdsim/bench/csv.h"
 #include "crowdsim/version.h"
 
 namespace crowdsim {

@@ -1,4 +1,4 @@
-#include "crowdsim/row_instance.h"
+#include "crowdsim/bench/row_instance.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/suite.h"
 #include "schema_defaults.h"
 #include "suite_reader.h"
 

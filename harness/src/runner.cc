@@ -1,4 +1,4 @@
-#include "crowdsim/runner.h"
+#include "crowdsim/bench/runner.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,8 +12,8 @@
 #include <set>
 #include <thread>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/row_instance.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/row_instance.h"
 #include "crowdsim/version.h"
 #include "episode_wire.h"
 #include "run_progress.h"

@@ -1,6 +1,6 @@
 #include "schema_defaults.h"
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "yaml_file.h"
 
 namespace crowdsim::suite_internal {

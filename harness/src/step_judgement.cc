@@ -2,7 +2,7 @@
 // value-based policy is judged by exactly the rules it plans with.
 #include <cmath>
 
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 
 namespace crowdsim {
 

@@ -1,4 +1,4 @@
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/suite.h"
 
 #include <yaml-cpp/yaml.h>
 

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/params.h"
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/suite.h"
 
 namespace crowdsim::suite_internal {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/suite.h"
 
 namespace crowdsim::suite_internal {
 

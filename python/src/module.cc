@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/runner.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/runner.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/version.h"
 #include "observation_arrays.h"
 #include "python_policy.h"

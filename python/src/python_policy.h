@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/policy.h"
 
 namespace crowdsim::python {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
 
 namespace crowdsim::python {
 

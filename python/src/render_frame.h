@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 #include "crowdsim/render/cairo_backend.h"
 #include "crowdsim/scenario.h"
 

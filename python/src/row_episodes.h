@@ -6,10 +6,10 @@
 
 #include <memory>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/row_instance.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/row_instance.h"
+#include "crowdsim/bench/suite.h"
 #include "python_policy.h"
 
 namespace crowdsim::python {

@@ -7,9 +7,9 @@
 
 #include <stdexcept>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/row_instance.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/row_instance.h"
+#include "crowdsim/bench/suite.h"
 #include "test_paths.h"
 
 namespace crowdsim {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "scripted.h"
 #include "test_paths.h"
 

@@ -2,8 +2,8 @@
 // policy, 5 ORCA humans, a 10 x 10 m room with 3 obstacles. Target: >= 50,000 steps/s.
 #include <benchmark/benchmark.h>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "scripted.h"
 #include "test_paths.h"
 

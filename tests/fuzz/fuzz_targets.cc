@@ -3,9 +3,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/suite.h"
-#include "crowdsim/training/train_spec.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
+#include "crowdsim/bench/training/train_spec.h"
 #include "crowdsim/world_file.h"
 #include "temp_dir.h"
 

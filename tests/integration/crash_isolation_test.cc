@@ -7,8 +7,8 @@
 #include <map>
 #include <optional>
 
-#include "crowdsim/results.h"
-#include "crowdsim/runner.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/runner.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 

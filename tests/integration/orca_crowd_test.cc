@@ -3,8 +3,8 @@
 // episode loop; the robot stands far outside the room (invisible, never in the way).
 #include <gtest/gtest.h>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/rng.h"
 #include "scripted.h"
 #include "test_paths.h"

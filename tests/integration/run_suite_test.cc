@@ -6,8 +6,8 @@
 #include <regex>
 #include <sstream>
 
-#include "crowdsim/results.h"
-#include "crowdsim/runner.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/runner.h"
 #include "shell.h"
 #include "temp_dir.h"
 #include "test_paths.h"

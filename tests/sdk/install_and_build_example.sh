@@ -16,8 +16,15 @@ for f in bin/crowdsim-bench lib/libcrowdsim_core.so lib/crowdsim-bench/plugins/c
          share/crowdsim-bench/worlds/random_rect share/crowdsim-bench/suites/quick.yaml; do
   [[ -e "$work/prefix/$f" ]] || fail "the install lacks $f"
 done
-# Only the plugin-facing headers are installed.
-[[ ! -e "$work/prefix/include/crowdsim/runner.h" ]] || fail "internal header runner.h installed"
+# Exactly the SDK folder's headers are installed (none of the host's bench/), and each one
+# compiles on its own against the prefix.
+installed=$(cd "$work/prefix/include/crowdsim" && find . -type f | sed 's|^\./||' | sort)
+sdk=$(cd "$source/harness/include/crowdsim" && ls *.h | sort)
+[[ "$installed" == "$sdk" ]] || fail "installed headers differ from the SDK folder: $(diff <(echo "$sdk") <(echo "$installed") | tr '\n' ' ')"
+for h in $sdk; do
+  echo "#include \"crowdsim/$h\"" | ${CXX:-c++} -std=c++20 -fsyntax-only -x c++ - -I "$work/prefix/include" \
+    -I /usr/include/eigen3 2> "$work/header.log" || { cat "$work/header.log"; fail "installed header $h does not compile on its own"; }
+done
 
 cmake -S "$source/examples/my_policy" -B "$work/example" -DCMAKE_PREFIX_PATH="$work/prefix" \
   > "$work/configure.log" 2>&1 || { cat "$work/configure.log"; fail "configure the example"; }

@@ -1,5 +1,5 @@
 // The episode loop on scripted episodes: outcomes, timing, metrics and the lookahead.
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 #include <random>
 #include <sstream>
 
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/collision_world.h"
-#include "crowdsim/plugin_registry.h"
 #include "test_paths.h"
 
 namespace crowdsim {

@@ -6,9 +6,9 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/results.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/suite.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 

@@ -1,11 +1,11 @@
-#include "crowdsim/metrics.h"
+#include "crowdsim/bench/metrics.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "crowdsim/results.h"
+#include "crowdsim/bench/results.h"
 #include "temp_dir.h"
 
 namespace crowdsim {

@@ -2,8 +2,8 @@
 
 #include <numbers>
 
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/collision_world.h"
-#include "crowdsim/plugin_registry.h"
 #include "test_paths.h"
 
 namespace crowdsim {

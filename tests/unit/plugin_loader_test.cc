@@ -1,7 +1,7 @@
 // Plugin loading: the good path and each kind of broken plugin gives a clear error.
 #include <gtest/gtest.h>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "test_paths.h"
 
 namespace crowdsim {

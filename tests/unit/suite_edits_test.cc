@@ -1,8 +1,8 @@
 // One suite file, many experiments: `--set key.path=value` overrides and `sweep:` rows.
 #include <gtest/gtest.h>
 
-#include "crowdsim/suite.h"
-#include "crowdsim/training/train_spec.h"
+#include "crowdsim/bench/suite.h"
+#include "crowdsim/bench/training/train_spec.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/suite.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 

@@ -6,10 +6,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "crowdsim/csv.h"
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/results.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/csv.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/suite.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 

@@ -7,7 +7,7 @@
 #include <ostream>
 #include <sstream>
 
-#include "crowdsim/csv.h"
+#include "crowdsim/bench/csv.h"
 #include "floorplan_error.h"
 #include "floorplan_import.h"
 

@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
+#include "crowdsim/data_root.h"
 #include "crowdsim/human_placement.h"
-#include "crowdsim/plugin_registry.h"
 #include "crowdsim/rng.h"
 
 namespace crowdsim::floorplan {

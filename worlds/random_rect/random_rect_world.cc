@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "crowdsim/data_root.h"
 #include "crowdsim/human_placement.h"
-#include "crowdsim/plugin_registry.h"
 #include "crowdsim/rng.h"
 #include "rect_layout.h"
 

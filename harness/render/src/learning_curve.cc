@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "crowdsim/csv.h"
+#include "crowdsim/bench/csv.h"
 #include "crowdsim/render/figure_output.h"
 #include "crowdsim/render/palette.h"
 #include "crowdsim/render/results_folder.h"

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "crowdsim/csv.h"
+#include "crowdsim/bench/csv.h"
 
 namespace crowdsim::render {
 

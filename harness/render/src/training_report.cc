@@ -5,13 +5,13 @@
 #include <cstdio>
 #include <sstream>
 
-#include "crowdsim/csv.h"
+#include "crowdsim/bench/csv.h"
+#include "crowdsim/bench/results.h"
 #include "crowdsim/render/learning_curve.h"
 #include "crowdsim/render/report.h"
 #include "crowdsim/render/results_folder.h"
 #include "crowdsim/render/svg_writer.h"
 #include "crowdsim/render/xml_escape.h"
-#include "crowdsim/results.h"
 
 namespace crowdsim::render {
 namespace fs = std::filesystem;

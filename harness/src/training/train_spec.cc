@@ -1,4 +1,4 @@
-#include "crowdsim/training/train_spec.h"
+#include "crowdsim/bench/training/train_spec.h"
 
 #include <yaml-cpp/yaml.h>
 

@@ -1,4 +1,4 @@
-#include "crowdsim/training/trainer.h"
+#include "crowdsim/bench/training/trainer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,10 +12,10 @@
 #include <optional>
 #include <sstream>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/results.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/row_instance.h"
 #include "crowdsim/rng.h"
-#include "crowdsim/row_instance.h"
 #include "crowdsim/trainable.h"
 #include "crowdsim/version.h"
 #include "episode_log.h"

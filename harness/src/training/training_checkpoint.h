@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/training/trainer.h"
+#include "crowdsim/bench/training/trainer.h"
 
 namespace crowdsim::training {
 

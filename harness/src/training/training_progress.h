@@ -6,7 +6,7 @@
 #include <deque>
 #include <string>
 
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 
 namespace crowdsim::training {
 

@@ -3,8 +3,8 @@
 // test conditions (1-obstacle room, 5 ORCA humans, 45-beam lidar).
 #include <benchmark/benchmark.h>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/rng.h"
 #include "value_rl/state_encoding.h"
 #include "value_rl/value_policy.h"

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/rng.h"
 #include "global_planner.h"
 #include "test_paths.h"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "crowdsim/agent_index.h"
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "orca/obstacles.h"
 #include "orca/solver.h"
 #include "orca_test_sim.h"

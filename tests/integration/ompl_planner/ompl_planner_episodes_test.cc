@@ -8,8 +8,8 @@
 #include <thread>
 #include <vector>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/rng.h"
 #include "test_paths.h"
 

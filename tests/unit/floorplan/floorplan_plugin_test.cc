@@ -3,7 +3,7 @@
 
 #include <thread>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/world_file.h"
 #include "floorplan/floorplan_import.h"
 #include "floorplan_test_util.h"

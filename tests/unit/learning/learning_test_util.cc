@@ -3,8 +3,8 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/training/train_spec.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/training/train_spec.h"
 #include "value_rl/state_encoding.h"
 #include "value_rl/value_policy.h"
 

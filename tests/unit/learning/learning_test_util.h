@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "crowdsim/bench/training/trainer.h"
 #include "crowdsim/trainable.h"
-#include "crowdsim/training/trainer.h"
 #include "temp_dir.h"
 
 namespace crowdsim::testing {

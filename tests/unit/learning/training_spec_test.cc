@@ -2,11 +2,11 @@
 // paper defaults filled in.
 #include <gtest/gtest.h>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/results.h"
-#include "crowdsim/runner.h"
-#include "crowdsim/suite.h"
-#include "crowdsim/training/train_spec.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/runner.h"
+#include "crowdsim/bench/suite.h"
+#include "crowdsim/bench/training/train_spec.h"
 #include "learning_test_util.h"
 #include "test_paths.h"
 

@@ -6,9 +6,9 @@
 #include <map>
 #include <sstream>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/runner.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/runner.h"
+#include "crowdsim/bench/suite.h"
 #include "learning_test_util.h"
 
 namespace crowdsim::testing {

@@ -2,8 +2,8 @@
 // that names the key, the value and the valid choices (from the factory and from a suite).
 #include <gtest/gtest.h>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
 #include "ompl_planner_policy.h"
 #include "planner_config.h"
 #include "temp_dir.h"

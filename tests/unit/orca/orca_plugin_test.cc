@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "crowdsim/agent_index.h"
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "orca/geometry.h"
 #include "test_paths.h"
 

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/render/episode_figure.h"
 #include "crowdsim/render/episode_replay.h"
 #include "crowdsim/render/palette.h"
 #include "crowdsim/render/svg_writer.h"
 #include "crowdsim/sensor.h"
-#include "crowdsim/suite.h"
 #include "scripted.h"
 #include "test_paths.h"
 

@@ -7,7 +7,7 @@
 #include <numeric>
 #include <string>
 
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 #include "crowdsim/render/animation.h"
 #include "crowdsim/render/episode_replay.h"
 #include "crowdsim/render/figure_output.h"

@@ -7,11 +7,11 @@
 #include <regex>
 #include <string>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/runner.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/render/report.h"
-#include "crowdsim/results.h"
-#include "crowdsim/runner.h"
-#include "crowdsim/suite.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/rng.h"
 #include "test_paths.h"
 

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <thread>
 
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/human_placement.h"
-#include "crowdsim/plugin_registry.h"
 #include "test_paths.h"
 
 namespace crowdsim {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 #include "crowdsim/render/drawing.h"
 #include "crowdsim/render/sensor_snapshot.h"
 #include "crowdsim/scenario.h"

@@ -5,9 +5,9 @@
 #include <optional>
 #include <string>
 
+#include "crowdsim/bench/row_instance.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/render/episode_figure.h"
-#include "crowdsim/row_instance.h"
-#include "crowdsim/suite.h"
 
 namespace crowdsim::render {
 

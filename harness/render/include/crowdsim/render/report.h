@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 
 namespace crowdsim::render {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/render/report.h"
 #include "crowdsim/render/report_inputs.h"
 

@@ -4,11 +4,11 @@
 
 #include <filesystem>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/render/report.h"
 #include "crowdsim/render/results_folder.h"
-#include "crowdsim/results.h"
-#include "crowdsim/suite.h"
 
 namespace crowdsim::render {
 

@@ -1,5 +1,5 @@
 // Reading a `crowdsim-bench run` output folder for the report: table.csv and text files (the
-// manifest's fields through crowdsim/results.h).
+// manifest's fields through crowdsim/bench/results.h).
 #pragma once
 
 #include <filesystem>

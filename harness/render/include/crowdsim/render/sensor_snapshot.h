@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 #include "crowdsim/scenario.h"
 
 namespace crowdsim::render {

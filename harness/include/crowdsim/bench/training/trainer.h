@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/plugin_registry.h"
-#include "crowdsim/training/train_spec.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/training/train_spec.h"
 
 namespace crowdsim::training {
 

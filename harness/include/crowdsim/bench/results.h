@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/episode_columns.h"
-#include "crowdsim/metrics.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/episode_columns.h"
+#include "crowdsim/bench/metrics.h"
+#include "crowdsim/bench/suite.h"
 
 namespace crowdsim {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/suite.h"
 
 namespace crowdsim {
 

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/params.h"
-#include "crowdsim/plugin_registry.h"
 #include "crowdsim/sim_config.h"
 #include "crowdsim/world_source.h"
 

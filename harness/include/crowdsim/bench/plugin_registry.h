@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "crowdsim/data_root.h"
 #include "crowdsim/plugin_abi.h"
 
 namespace boost::dll {
@@ -77,9 +78,5 @@ class PluginRegistry {
   std::vector<std::filesystem::path> search_dirs_;
   std::map<std::string, std::unique_ptr<LoadedPlugin>> loaded_;  // by canonical path
 };
-
-/// Root of the project's data (worlds/, results/): $CROWDSIM_DATA_DIR, else PREFIX/share/
-/// crowdsim-bench for an installed copy, else the source tree this harness was built from.
-std::filesystem::path DataRoot();
 
 }  // namespace crowdsim

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/plugin_registry.h"
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/sim_config.h"
-#include "crowdsim/suite.h"
 
 namespace crowdsim::training {
 

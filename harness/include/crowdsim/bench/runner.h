@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "crowdsim/results.h"
-#include "crowdsim/suite.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/suite.h"
 
 namespace crowdsim {
 

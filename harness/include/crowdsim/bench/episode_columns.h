@@ -11,8 +11,8 @@
 #include <variant>
 #include <vector>
 
-#include "crowdsim/episode.h"
-#include "crowdsim/metrics.h"
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/metrics.h"
 
 namespace crowdsim {
 

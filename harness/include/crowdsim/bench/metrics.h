@@ -4,7 +4,7 @@
 #include <limits>
 #include <span>
 
-#include "crowdsim/episode.h"
+#include "crowdsim/bench/episode.h"
 
 namespace crowdsim {
 
