@@ -43,11 +43,12 @@ bool LooksLikeTrainingFile(const std::string& file) {
   return false;
 }
 
-/// Ctrl-C during a run: finished episodes are already on disk, so say that a rerun resumes,
+/// Ctrl-C during a run: write the finished episodes still in memory, say that a rerun resumes,
 /// then die of the signal as before (exit status 130 from the shell).
 char g_interrupt_message[1024];
 
 extern "C" void OnRunInterrupted(int sig) {
+  FlushPendingEpisodesForSignal();
   const ssize_t n = ::write(STDERR_FILENO, g_interrupt_message, std::strlen(g_interrupt_message));
   (void)n;
   std::signal(sig, SIG_DFL);

@@ -15,6 +15,7 @@
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/version.h"
+#include "episode_appender.h"
 #include "episode_wire.h"
 #include "run_progress.h"
 #include "worker_process.h"
@@ -233,33 +234,30 @@ EpisodeLine RunEpisode(const Suite& suite, const RowSpec& row, const WorldSource
   return line;
 }
 
-/// Where finished episodes go: appended to episodes.csv at once (a crash loses at most the
-/// episodes running), counted on the progress line and added to `done`. Not thread-safe.
+/// Where finished episodes go: appended to episodes.csv (EpisodeAppender: written within
+/// `max_delay`, at once when zero), counted on the progress line and added to `done`. Not
+/// thread-safe.
 class EpisodeSink {
  public:
-  EpisodeSink(const fs::path& episodes_csv, Progress& progress, EpisodeLines* done)
-      : path_(episodes_csv), out_(episodes_csv, std::ios::app), progress_(progress), done_(done) {
-    if (!out_) throw RunError("cannot append to " + path_.string());
-  }
+  EpisodeSink(const fs::path& episodes_csv, std::chrono::milliseconds max_delay, Progress& progress,
+              EpisodeLines* done)
+      : path_(episodes_csv), out_(episodes_csv, max_delay), progress_(progress), done_(done) {}
 
   /// False when the append failed (a full disk or a lost mount: the run stops, naming the
   /// cause in *why; the lines written so far stay, a cut last line is skipped on resume).
   bool Add(EpisodeLine line, std::string* why) {
-    out_ << FormatEpisodeLine(line) << "\n";
-    out_.flush();
-    if (!out_) {
-      *why = "cannot append to " + path_.string() + ": " + std::strerror(errno);
-      return false;
-    }
+    if (!out_.Append(FormatEpisodeLine(line), why)) return false;
     progress_.Episode(line.outcome.status == EpisodeStatus::kSuccess);
     (*done_)[{line.row, line.episode}] = std::move(line);
     return true;
   }
 
-  /// Ends the progress line; throws RunError with `failure` when the run stopped early.
-  void Finish(const std::string& failure) {
+  /// Writes the pending lines and ends the progress line; throws RunError with `failure`
+  /// (or the failed write) when the run stopped early.
+  void Finish(std::string failure) {
+    std::string why;
+    if (!out_.Finish(&why) && failure.empty()) failure = why;
     progress_.Finish();
-    out_.close();
     if (!failure.empty()) {
       throw RunError(failure + " (finished episodes are kept in " + path_.string() +
                      "; rerun to resume)");
@@ -268,7 +266,7 @@ class EpisodeSink {
 
  private:
   fs::path path_;
-  std::ofstream out_;
+  EpisodeAppender out_;
   Progress& progress_;
   EpisodeLines* done_;
 };
@@ -509,7 +507,13 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   const std::vector<Task> tasks = PendingTasks(suite, scope, done, &summary.episodes_resumed);
   Progress progress(suite.name, static_cast<int>(tasks.size()) + summary.episodes_resumed,
                     summary.episodes_resumed, options.progress);
-  EpisodeSink sink(summary.out_dir / "episodes.csv", progress, &done);
+  // Threads: lines written within 200 ms (a crash loses at most that). Worker processes
+  // already pay a pipe round trip per episode: each line written at once, and no thread of
+  // ours alive when the workers are forked.
+  EpisodeSink sink(
+      summary.out_dir / "episodes.csv",
+      facts.isolated ? std::chrono::milliseconds(0) : EpisodeAppender::kThreadedRunDelay, progress,
+      &done);
   if (facts.isolated) {
     RunTasksInProcesses(suite, registry, worlds, tasks, facts.jobs, sink);
   } else {
@@ -527,5 +531,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   }
   return summary;
 }
+
+void FlushPendingEpisodesForSignal() noexcept { EpisodeAppender::FlushForSignal(); }
 
 }  // namespace crowdsim

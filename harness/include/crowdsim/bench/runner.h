@@ -70,4 +70,9 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
 /// Throws RunError for problems that stop the whole run (output folder, mismatched results).
 RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptions& options);
 
+/// Writes the finished episodes a running RunSuite still holds in memory (at most the last
+/// 200 ms of them) to its episodes.csv; async-signal-safe, for a handler (Ctrl-C) that ends
+/// the process right after.
+void FlushPendingEpisodesForSignal() noexcept;
+
 }  // namespace crowdsim
