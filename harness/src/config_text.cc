@@ -3,8 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <variant>
 
+#include "crowdsim/data_root.h"
 #include "crowdsim/rng.h"
 
 namespace crowdsim::suite_internal {
@@ -49,20 +51,43 @@ std::string FileContentHash(const fs::path& file) {
   return out;
 }
 
+/// How a data file is named in the canonical text: relative to the data root when it lies
+/// there, else by its file name, so that the hash does not depend on where the project sits.
+std::string DataFileName(const fs::path& file) {
+  std::error_code ec;
+  const fs::path path = fs::weakly_canonical(file, ec);
+  const fs::path root = fs::weakly_canonical(DataRoot(), ec);
+  const fs::path relative = path.lexically_relative(root);
+  if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+  return path.filename().string();
+}
+
 }  // namespace
 
 void Canonical(const PluginUse& u, std::ostream& os) {
   os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
+  std::set<fs::path> hashed;  // canonical paths of the files already counted
+  std::error_code ec;
   for (const auto& [k, v] : u.params.values()) {
     os << k << "=" << FormatParamValue(v);
     // A parameter that names a file (weights, a world file) counts with its content: replacing
     // the file at the same path is another configuration, never resumed as the old one.
     if (const auto* text = std::get_if<std::string>(&v); text && !text->empty()) {
-      std::error_code ec;
       const fs::path file = u.params.ResolvePath(*text);
-      if (fs::is_regular_file(file, ec)) os << "#content:" << FileContentHash(file);
+      if (fs::is_regular_file(file, ec)) {
+        os << "#content:" << FileContentHash(file);
+        hashed.insert(fs::weakly_canonical(file, ec));
+      }
     }
     os << ";";
+  }
+  // The files the plugin reads that no parameter names (a world's default frozen layouts).
+  if (u.loaded && u.loaded->descriptor->data_files) {
+    for (const fs::path& file : u.loaded->descriptor->data_files(u.params)) {
+      if (!fs::is_regular_file(file, ec) || !hashed.insert(fs::weakly_canonical(file, ec)).second)
+        continue;
+      os << "data:" << DataFileName(file) << "#content:" << FileContentHash(file) << ";";
+    }
   }
   os << "}";
 }

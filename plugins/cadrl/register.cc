@@ -20,6 +20,7 @@ extern "C++" const PluginDescriptor kDescriptor{
     &Schema,
     &Make,
     nullptr,
+    nullptr,
     nullptr};
 
 }  // namespace crowdsim::cadrl

@@ -18,6 +18,7 @@ extern "C++" const PluginDescriptor kDescriptor{
     &Schema,
     &Make,
     nullptr,
+    nullptr,
     nullptr};
 
 }  // namespace crowdsim::sarl

@@ -30,9 +30,15 @@ std::unique_ptr<Policy> MakePythonPolicy(const Params&) {
 
 ParamSchema NoParams() { return {}; }
 
-const PluginDescriptor kDescriptor = {
-    kPluginAbiVersion, PluginKind::kPolicy, "python", "a policy written in Python (crowdsim_bench)",
-    &NoParams,         &MakePythonPolicy,   nullptr,  nullptr};
+const PluginDescriptor kDescriptor = {kPluginAbiVersion,
+                                      PluginKind::kPolicy,
+                                      "python",
+                                      "a policy written in Python (crowdsim_bench)",
+                                      &NoParams,
+                                      &MakePythonPolicy,
+                                      nullptr,
+                                      nullptr,
+                                      nullptr};
 
 Vec2 VelocityOf(const py::handle& v, const char* what) {
   py::array_t<double, py::array::c_style | py::array::forcecast> a;

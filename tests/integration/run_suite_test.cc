@@ -2,6 +2,7 @@
 // errors recorded without stopping, and the CLI's contract.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -267,6 +268,59 @@ TEST_F(RunSuiteTest, AFileReplacedAtTheSamePathIsAnotherConfiguration) {
   } catch (const RunError& e) {
     EXPECT_NE(std::string(e.what()).find("--fresh"), std::string::npos) << e.what();
   }
+}
+
+TEST_F(RunSuiteTest, DataFilesNoParameterNamesCountWithTheirContent) {
+  // A random_rect row without `file` reads the default frozen set, a floorplan row may find its
+  // world file under the data root: both contents are in the config hash, under a name
+  // relative to the data root (the hash must not depend on where the project sits).
+  TempDir data;
+  const fs::path source = testing::SourceDir();
+  for (const char* f : {"suites/schema/defaults.yaml", "worlds/random_rect/obstacles_1_test.yaml",
+                        "worlds/gibson/easy.yaml"}) {
+    fs::create_directories((data.path() / f).parent_path());
+    fs::copy_file(source / f, data.path() / f);
+  }
+  const char* before = std::getenv("CROWDSIM_DATA_DIR");
+  const std::string saved = before ? before : "";
+  setenv("CROWDSIM_DATA_DIR", data.path().c_str(), 1);
+  const std::string rect =
+      "name: data_files\nepisodes: 2\nseed: 3\nworld: {source: random_rect, obstacles: 1}\n"
+      "humans: {count: 2, policy: orca}\nrobot: {sensors: [person]}\n"
+      "rows:\n  - {label: orca, policy: orca}\n";
+  const std::string plan =
+      "name: plan\nepisodes: 2\nseed: 3\n"
+      "world: {source: floorplan, file: worlds/gibson/easy.yaml}\n"
+      "humans: {count: 2, policy: orca}\nrobot: {sensors: [person]}\n"
+      "rows:\n  - {label: orca, policy: orca}\n";
+  const Suite s = LoadOrDie(rect);
+  const Suite p = LoadOrDie(plan);
+  EXPECT_NE(s.canonical.find("data:worlds/random_rect/obstacles_1_test.yaml#content:"),
+            std::string::npos)
+      << s.canonical;
+  EXPECT_NE(p.canonical.find("data:worlds/gibson/easy.yaml#content:"), std::string::npos)
+      << p.canonical;
+  EXPECT_EQ(s.canonical.find(data.path().string()), std::string::npos) << s.canonical;
+  Run(s, "out", 1);
+  EXPECT_EQ(Run(LoadOrDie(rect), "out", 1).episodes_resumed, 2);  // same bytes: resumed
+  std::ofstream(data.path() / "worlds/random_rect/obstacles_1_test.yaml", std::ios::app)
+      << "# edited\n";
+  std::ofstream(data.path() / "worlds/gibson/easy.yaml", std::ios::app) << "# edited\n";
+  const Suite edited = LoadOrDie(rect);
+  const std::string edited_plan_hash = LoadOrDie(plan).ConfigHash();
+  if (before) {
+    setenv("CROWDSIM_DATA_DIR", saved.c_str(), 1);
+  } else {
+    unsetenv("CROWDSIM_DATA_DIR");
+  }
+  EXPECT_NE(edited.ConfigHash(), s.ConfigHash());
+  EXPECT_NE(edited_plan_hash, p.ConfigHash());
+  // A world without data files keeps its canonical text: no "data:" entry.
+  const Suite empty = LoadOrDie(
+      "name: empty\nepisodes: 1\nworld: {source: random_rect, obstacles: 0}\n"
+      "humans: {count: 1, policy: orca}\nrobot: {sensors: [person]}\n"
+      "rows:\n  - {label: orca, policy: orca}\n");
+  EXPECT_EQ(empty.canonical.find("data:"), std::string::npos) << empty.canonical;
 }
 
 TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {

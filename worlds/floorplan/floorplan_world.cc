@@ -35,6 +35,10 @@ std::filesystem::path ResolveWorldPath(const Params& params, const std::string& 
   return std::filesystem::exists(in_data, ec) ? in_data : p;
 }
 
+std::vector<std::filesystem::path> FloorplanWorld::DataFiles(const Params& params) {
+  return {ResolveWorldPath(params, params.GetString("file"))};
+}
+
 FloorplanWorld::FloorplanWorld(const Params& params) : split_(params.GetString("split")) {
   const std::string value = params.GetString("file");
   const std::filesystem::path path = ResolveWorldPath(params, value);

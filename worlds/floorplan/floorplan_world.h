@@ -3,6 +3,7 @@
 // humans stand on the world's free points.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ class FloorplanWorld final : public WorldSource {
  public:
   /// Reads the world file named by params "world"; throws WorldFileError / invalid_argument.
   explicit FloorplanWorld(const Params& params);
+  /// The world file, wherever it was found (a suite's folder or the data root): its contents
+  /// enter the config hash (PluginDescriptor::data_files).
+  static std::vector<std::filesystem::path> DataFiles(const Params& params);
   std::string Identity() const override;
   int LayoutCount() const override { return 1; }
   Scenario Make(const ScenarioRequest& request) const override;

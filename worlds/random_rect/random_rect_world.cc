@@ -8,6 +8,7 @@
 #include "crowdsim/data_root.h"
 #include "crowdsim/human_placement.h"
 #include "crowdsim/rng.h"
+#include "frozen_sets.h"
 #include "rect_layout.h"
 
 namespace crowdsim::random_rect {
@@ -70,6 +71,14 @@ std::vector<WorldFile> ReadLayouts(const fs::path& path, const std::string& fix)
   return layouts;
 }
 
+/// The committed set of `obstacles`-obstacle rooms of `split` under the data root.
+fs::path FrozenSetPath(int obstacles, const std::string& split) {
+  SetSpec spec;
+  spec.obstacles = obstacles;
+  spec.split = split;
+  return DataRoot() / "worlds" / "random_rect" / spec.FileName();
+}
+
 }  // namespace
 
 ParamSchema Schema() {
@@ -110,8 +119,7 @@ RandomRectWorld::RandomRectWorld(const Params& params) : options_(OptionsFrom(pa
     layouts = {EmptyRoom(RectLayoutConfig{}, "rect0")};
     identity_ = "random_rect:obstacles=0:split=" + split;
   } else {
-    const std::string name = "obstacles_" + std::to_string(obstacles) + "_" + split + ".yaml";
-    const fs::path path = DataRoot() / "worlds" / "random_rect" / name;
+    const fs::path path = FrozenSetPath(obstacles, split);
     layouts = ReadLayouts(
         path, "the frozen sets ship with 1 and 3 obstacles; for " + std::to_string(obstacles) +
                   " run `crowdsim-make-rect-worlds --obstacles " + std::to_string(obstacles) +
@@ -130,6 +138,12 @@ RandomRectWorld::RandomRectWorld(const Params& params) : options_(OptionsFrom(pa
   }
   identity_ += OptionSuffix(options_);
   BuildMaps(layouts);
+}
+
+std::vector<fs::path> RandomRectWorld::DataFiles(const Params& params) {
+  const int obstacles = static_cast<int>(params.GetInt("obstacles"));
+  if (!params.GetString("file").empty() || obstacles == 0) return {};
+  return {FrozenSetPath(obstacles, params.GetString("split"))};
 }
 
 RandomRectWorld::RandomRectWorld(std::vector<WorldFile> layouts, ScenarioOptions options,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +34,10 @@ class RandomRectWorld final : public WorldSource {
   explicit RandomRectWorld(const Params& params);
   /// From layouts already in memory (tests, tools); `layouts` non-empty.
   RandomRectWorld(std::vector<WorldFile> layouts, ScenarioOptions options, std::string identity);
+
+  /// The frozen set a configuration without `file` reads (none for 0 obstacles): its
+  /// contents enter the config hash (PluginDescriptor::data_files).
+  static std::vector<std::filesystem::path> DataFiles(const Params& params);
 
   /// "random_rect:obstacles=N:split=S" (or "random_rect:file=NAME"), plus non-default options.
   std::string Identity() const override { return identity_; }

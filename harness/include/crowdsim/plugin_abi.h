@@ -3,8 +3,11 @@
 #pragma once
 
 #include <boost/dll/alias.hpp>
+#include <concepts>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "crowdsim/params.h"
 #include "crowdsim/policy.h"
@@ -14,7 +17,8 @@
 namespace crowdsim {
 
 /// Bump when any interface or this descriptor changes layout.
-inline constexpr std::uint32_t kPluginAbiVersion = 2;  // 2: Observation lost time_step and map
+/// 2: Observation lost time_step and map; 3: the descriptor's data_files.
+inline constexpr std::uint32_t kPluginAbiVersion = 3;
 
 /// Name of the exported alias.
 inline constexpr const char* kPluginAliasName = "crowdsim_plugin_v1";
@@ -33,7 +37,24 @@ struct PluginDescriptor {
   std::unique_ptr<Policy> (*make_policy)(const Params&);
   std::unique_ptr<Sensor> (*make_sensor)(const Params&);
   std::unique_ptr<WorldSource> (*make_world)(const Params&);
+  /// The files a configuration reads that no parameter names (e.g. a world's default frozen
+  /// layouts under DataRoot()); the host puts their contents into the config hash, as it does
+  /// for files that parameters name. Null when there are none.
+  std::vector<std::filesystem::path> (*data_files)(const Params&);
 };
+
+/// `&T::DataFiles` when the plugin's class declares
+/// `static std::vector<std::filesystem::path> DataFiles(const Params&)`, else null.
+template <typename T>
+constexpr auto DataFilesOf() -> std::vector<std::filesystem::path> (*)(const Params&) {
+  if constexpr (requires(const Params& p) {
+                  { T::DataFiles(p) } -> std::same_as<std::vector<std::filesystem::path>>;
+                }) {
+    return &T::DataFiles;
+  } else {
+    return nullptr;
+  }
+}
 
 /// The factory of a plugin whose object `T` is constructed from its validated Params.
 template <typename Interface, typename T>
@@ -53,7 +74,8 @@ constexpr PluginDescriptor PolicyPlugin(const char* name, const char* descriptio
           schema,
           &ConstructFromParams<Policy, T>,
           nullptr,
-          nullptr};
+          nullptr,
+          DataFilesOf<T>()};
 }
 
 /// The descriptor of a sensor plugin whose class `T` takes `const Params&`.
@@ -67,7 +89,8 @@ constexpr PluginDescriptor SensorPlugin(const char* name, const char* descriptio
           schema,
           nullptr,
           &ConstructFromParams<Sensor, T>,
-          nullptr};
+          nullptr,
+          DataFilesOf<T>()};
 }
 
 /// The descriptor of a world plugin whose class `T` takes `const Params&`.
@@ -81,7 +104,8 @@ constexpr PluginDescriptor WorldPlugin(const char* name, const char* description
           schema,
           nullptr,
           nullptr,
-          &ConstructFromParams<WorldSource, T>};
+          &ConstructFromParams<WorldSource, T>,
+          DataFilesOf<T>()};
 }
 
 }  // namespace crowdsim
