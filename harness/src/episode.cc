@@ -292,6 +292,7 @@ StepInfo Episode::Step() {
   robot_.position += v * dt;
   robot_.velocity = v;
   result_.path_length += v.norm() * dt;
+  result_.max_speed = std::max(result_.max_speed, v.norm());
   for (size_t i = 0; i < humans_.size(); ++i) {
     humans_[i].velocity = human_actions_[i].velocity;
     humans_[i].position += human_actions_[i].velocity * dt;

@@ -12,9 +12,12 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
@@ -59,6 +62,20 @@ py::list Rows(const RunSummary& s) {
   return rows;
 }
 
+/// A column of the episode's outcome as a Python value (the status by its name); the
+/// columns of a line's identity (row, episode, seed, layout) are not the outcome's.
+template <typename T>
+void AddOutcomeValue(py::dict&, const char*, const EpisodeOutcome&, T EpisodeLine::*) {}
+template <typename T>
+void AddOutcomeValue(py::dict& d, const char* name, const EpisodeOutcome& r,
+                     T EpisodeOutcome::*member) {
+  if constexpr (std::is_same_v<T, EpisodeStatus>) {
+    d[name] = EpisodeStatusName(r.*member);
+  } else {
+    d[name] = r.*member;
+  }
+}
+
 /// One suite row stepped from Python.
 class Env {
  public:
@@ -84,16 +101,13 @@ class Env {
     return py::make_tuple(obs, info.reward, EpisodeStatusName(r.status), r.error);
   }
 
+  /// The outcome's columns of episodes.csv (kEpisodeColumns), plus the episode and layout.
   py::dict Result() const {
     const EpisodeResult& r = Current().result();
     py::dict d;
-    d["status"] = EpisodeStatusName(r.status);
-    d["time"] = r.time;
-    d["steps"] = r.steps;
-    d["path_length"] = r.path_length;
-    d["min_human_distance"] = r.min_human_distance;
-    d["discounted_return"] = r.discounted_return;
-    d["danger_steps"] = r.danger_steps;
+    for (const EpisodeColumn& c : kEpisodeColumns) {
+      std::visit([&](auto member) { AddOutcomeValue(d, c.name, r, member); }, c.field);
+    }
     d["episode"] = episodes_.episode_index();
     d["layout"] = episodes_.scenario().layout;
     return d;

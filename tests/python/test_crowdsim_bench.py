@@ -125,6 +125,7 @@ class SameEpisodesAsTheCli(unittest.TestCase):
             self.assertAlmostEqual(info["path_length"], float(cli["path_length"]), places=6)
             self.assertAlmostEqual(info["min_human_distance"], float(cli["min_human_distance"]),
                                    places=6)
+            self.assertAlmostEqual(info["max_speed"], float(cli["max_speed"]), places=6)
 
 
 class Evaluate(unittest.TestCase):

@@ -76,6 +76,7 @@ struct EpisodeOutcome {
   double discounted_return = 0.0;         ///< sum_t gamma^(t*dt*v_pref) r_t
   double decision_time_us = 0.0;          ///< mean wall time of the robot's Decide
   int humans_at_goal = 0;                 ///< humans that reached their (first) goal
+  double max_speed = 0.0;                 ///< m/s; the robot's highest speed over the episode
   std::string error;                      ///< policy_error message
 };
 

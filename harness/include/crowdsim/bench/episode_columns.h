@@ -114,6 +114,7 @@ inline constexpr EpisodeColumn kEpisodeColumns[] = {
      .table_header = "decision µs",
      .table_decimals = 1},
     {.name = "humans_at_goal", .field = &EpisodeOutcome::humans_at_goal},
+    {.name = "max_speed", .field = &EpisodeOutcome::max_speed, .decimals = 6},
     {.name = "error", .field = &EpisodeOutcome::error},
 };
 
