@@ -48,9 +48,8 @@ HumanPlacementOptions HumanPlacementOptions::FromRequest(const ScenarioRequest& 
   return o;
 }
 
-double PassableGoalClearance(double human_radius) {
-  constexpr double kOrcaPadding = 0.01;  // ORCA's radius padding (CrowdNav)
-  return (human_radius + kOrcaPadding) + 2.0 * (human_radius + kOrcaPadding);
+double PassableGoalClearance(double human_radius, double padding) {
+  return (human_radius + padding) + 2.0 * (human_radius + padding);
 }
 
 namespace {

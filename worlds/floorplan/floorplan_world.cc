@@ -1,5 +1,6 @@
 #include "floorplan_world.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "crowdsim/data_root.h"
@@ -24,6 +25,13 @@ ParamSchema Schema() {
        kInfinity,
        {"train", "test"},
        "which precomputed robot start/goal pairs to use"},
+      {"passage_padding",
+       ParamType::kDouble,
+       kDefaultPassagePadding,
+       0.0,
+       1.0,
+       {},
+       "m; added to each human radius when a goal must leave room for another human to pass"},
   };
 }
 
@@ -39,7 +47,8 @@ std::vector<std::filesystem::path> FloorplanWorld::DataFiles(const Params& param
   return {ResolveWorldPath(params, params.GetString("file"))};
 }
 
-FloorplanWorld::FloorplanWorld(const Params& params) : split_(params.GetString("split")) {
+FloorplanWorld::FloorplanWorld(const Params& params)
+    : split_(params.GetString("split")), passage_padding_(params.GetDouble("passage_padding")) {
   const std::string value = params.GetString("file");
   const std::filesystem::path path = ResolveWorldPath(params, value);
   if (!std::filesystem::exists(path)) {
@@ -67,7 +76,16 @@ FloorplanWorld::FloorplanWorld(const Params& params) : split_(params.GetString("
   map_ = std::move(map);
 }
 
-std::string FloorplanWorld::Identity() const { return "floorplan:" + name_ + ":" + split_; }
+std::string FloorplanWorld::Identity() const {
+  // A non-default padding changes the scenarios, so it is part of the identity (episode seeds).
+  std::string id = "floorplan:" + name_ + ":" + split_;
+  if (passage_padding_ != kDefaultPassagePadding) {
+    char buf[40];
+    std::snprintf(buf, sizeof(buf), ":passage_padding=%g", passage_padding_);
+    id += buf;
+  }
+  return id;
+}
 
 Scenario FloorplanWorld::Make(const ScenarioRequest& request) const {
   const auto count = static_cast<std::int64_t>(pairs_.size());
@@ -82,8 +100,8 @@ Scenario FloorplanWorld::Make(const ScenarioRequest& request) const {
   // predicate adds the kept rectangles for the human's own radius.
   const auto free = std::make_shared<DiscFreeSpace>(map_, request.sim.human_radius);
   // Goals leave room to pass: a human who stays on its goal must not close a passage.
-  const auto goal_space =
-      std::make_shared<DiscFreeSpace>(map_, PassableGoalClearance(request.sim.human_radius));
+  const auto goal_space = std::make_shared<DiscFreeSpace>(
+      map_, PassableGoalClearance(request.sim.human_radius, passage_padding_));
   PlacementArea area{[free](const Vec2& p) { return free->Contains(p); }, ListSampler(free_points_),
                      [goal_space](const Vec2& p) { return goal_space->Contains(p); }};
   Rng rng(request.seed);

@@ -28,6 +28,7 @@ class FloorplanWorld final : public WorldSource {
 
  private:
   std::string split_;
+  double passage_padding_ = 0.0;  ///< m; PassableGoalClearance's padding
   std::string name_;
   std::shared_ptr<const StaticMap> map_;
   std::vector<StartGoal> pairs_;

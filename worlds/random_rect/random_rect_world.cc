@@ -30,6 +30,7 @@ ScenarioOptions OptionsFrom(const Params& params) {
   o.human_goal_min_dist = params.GetDouble("human_goal_min_dist");
   o.new_goal_count = static_cast<int>(params.GetInt("new_goal_count"));
   o.clearance_margin = params.GetDouble("clearance_margin");
+  o.passage_padding = params.GetDouble("passage_padding");
   return o;
 }
 
@@ -48,6 +49,9 @@ std::string OptionSuffix(const ScenarioOptions& o) {
   }
   if (o.clearance_margin != kDefaults.clearance_margin) {
     s += ":clearance_margin=" + Number(o.clearance_margin);
+  }
+  if (o.passage_padding != kDefaults.passage_padding) {
+    s += ":passage_padding=" + Number(o.passage_padding);
   }
   return s;
 }
@@ -99,6 +103,8 @@ ParamSchema Schema() {
        "goals per human when the suite gives humans new goals"},
       {"clearance_margin", ParamType::kDouble, kDefaults.clearance_margin, 0.0, 2.0, {},
        "m; free space beyond an agent's radius required at starts and goals"},
+      {"passage_padding", ParamType::kDouble, kDefaultPassagePadding, 0.0, 1.0, {},
+       "m; added to each human radius when a goal must leave room for another human to pass"},
   };
   // clang-format on
 }
@@ -190,8 +196,8 @@ Scenario RandomRectWorld::Make(const ScenarioRequest& request) const {
   const auto human_space = std::make_shared<const DiscFreeSpace>(
       map, request.sim.human_radius + options_.clearance_margin);
   // Goals leave room to pass: a human who stays on its goal must not close a passage.
-  const auto goal_space =
-      std::make_shared<const DiscFreeSpace>(map, PassableGoalClearance(request.sim.human_radius));
+  const auto goal_space = std::make_shared<const DiscFreeSpace>(
+      map, PassableGoalClearance(request.sim.human_radius, options_.passage_padding));
   const PlacementArea area{[human_space](const Vec2& p) { return human_space->Contains(p); },
                            sample, [goal_space](const Vec2& p) { return goal_space->Contains(p); }};
   HumanPlacementOptions placement = HumanPlacementOptions::FromRequest(request);

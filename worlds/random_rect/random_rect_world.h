@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "crowdsim/human_placement.h"
 #include "crowdsim/params.h"
 #include "crowdsim/world_file.h"
 #include "crowdsim/world_source.h"
@@ -20,7 +21,8 @@ struct ScenarioOptions {
   double human_goal_min_dist = 3.0;  ///< m; a human goal from the point before it (if room allows)
   int new_goal_count = 16;           ///< goals per human when humans get new goals
   double clearance_margin = 0.1;     ///< m; free space beyond an agent's radius at starts and goals
-  int max_tries = 100000;            ///< robot start/goal draws before giving up
+  double passage_padding = kDefaultPassagePadding;  ///< m; PassableGoalClearance's padding
+  int max_tries = 100000;                           ///< robot start/goal draws before giving up
 };
 
 /// Parameters of the plugin (obstacles, split, file, ...).

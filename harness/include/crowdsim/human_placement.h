@@ -58,9 +58,13 @@ struct PlacementArea {
   std::function<bool(const Vec2&)> is_goal_free;
 };
 
+/// The worlds' default `passage_padding` (m): 0.01, the radius padding CrowdNav's ORCA humans use.
+inline constexpr double kDefaultPassagePadding = 0.01;
+
 /// Centre clearance from obstacles that leaves room for another human to pass a human
-/// standing there: its own radius plus a passer's diameter, each padded as ORCA pads radii.
-double PassableGoalClearance(double human_radius);
+/// standing there: its own radius plus a passer's diameter, each radius plus `padding` (the
+/// world's `passage_padding` parameter).
+double PassableGoalClearance(double human_radius, double padding);
 
 /// The rules of human placement (defaults: paper settings).
 struct HumanPlacementOptions {
