@@ -76,7 +76,7 @@ TEST_F(RunSuiteTest, SameResultsForOneAndTwoJobs) {
 // commit message why the results changed.
 TEST_F(RunSuiteTest, QuickSuiteEpisodesHaveTheirGoldenHash) {
   constexpr const char* kQuickEpisodesSha256 =
-      "c63df6c07b87ad125aa8ab806b54f8184ffdbc18726cb91b736a62208a7d621b";
+      "82094636b363f5d1cbeecf48d4246985e6d0c842278de96c00181ab3049c1325";
   PluginRegistry registry;
   const SuiteLoadResult loaded =
       LoadSuite(testing::SourceDir() / "suites" / "quick.yaml", registry);
@@ -276,11 +276,15 @@ TEST_F(RunSuiteTest, DataFilesNoParameterNamesCountWithTheirContent) {
   // relative to the data root (the hash must not depend on where the project sits).
   TempDir data;
   const fs::path source = testing::SourceDir();
-  for (const char* f : {"suites/schema/defaults.yaml", "worlds/random_rect/obstacles_1_test.yaml",
-                        "worlds/gibson/easy.yaml"}) {
+  for (const char* f :
+       {"suites/schema/defaults.yaml", "worlds/random_rect/obstacles_1_test.yaml"}) {
     fs::create_directories((data.path() / f).parent_path());
     fs::copy_file(source / f, data.path() / f);
   }
+  // A floor plan found only under the data root (not beside the suite, not in the working
+  // folder, which is the source tree here).
+  fs::create_directories(data.path() / "plans");
+  fs::copy_file(source / "worlds/gibson/easy.yaml", data.path() / "plans/mine.yaml");
   const char* before = std::getenv("CROWDSIM_DATA_DIR");
   const std::string saved = before ? before : "";
   setenv("CROWDSIM_DATA_DIR", data.path().c_str(), 1);
@@ -290,7 +294,7 @@ TEST_F(RunSuiteTest, DataFilesNoParameterNamesCountWithTheirContent) {
       "rows:\n  - {label: orca, policy: orca}\n";
   const std::string plan =
       "name: plan\nepisodes: 2\nseed: 3\n"
-      "world: {source: floorplan, file: worlds/gibson/easy.yaml}\n"
+      "world: {source: floorplan, file: plans/mine.yaml}\n"
       "humans: {count: 2, policy: orca}\nrobot: {sensors: [person]}\n"
       "rows:\n  - {label: orca, policy: orca}\n";
   const Suite s = LoadOrDie(rect);
@@ -298,14 +302,13 @@ TEST_F(RunSuiteTest, DataFilesNoParameterNamesCountWithTheirContent) {
   EXPECT_NE(s.canonical.find("data:worlds/random_rect/obstacles_1_test.yaml#content:"),
             std::string::npos)
       << s.canonical;
-  EXPECT_NE(p.canonical.find("data:worlds/gibson/easy.yaml#content:"), std::string::npos)
-      << p.canonical;
+  EXPECT_NE(p.canonical.find("data:plans/mine.yaml#content:"), std::string::npos) << p.canonical;
   EXPECT_EQ(s.canonical.find(data.path().string()), std::string::npos) << s.canonical;
   Run(s, "out", 1);
   EXPECT_EQ(Run(LoadOrDie(rect), "out", 1).episodes_resumed, 2);  // same bytes: resumed
   std::ofstream(data.path() / "worlds/random_rect/obstacles_1_test.yaml", std::ios::app)
       << "# edited\n";
-  std::ofstream(data.path() / "worlds/gibson/easy.yaml", std::ios::app) << "# edited\n";
+  std::ofstream(data.path() / "plans/mine.yaml", std::ios::app) << "# edited\n";
   const Suite edited = LoadOrDie(rect);
   const std::string edited_plan_hash = LoadOrDie(plan).ConfigHash();
   if (before) {
