@@ -3,8 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
 
+#include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/results.h"
 #include "temp_dir.h"
 
@@ -155,6 +160,19 @@ EpisodeLine SomeLine(int episode) {
   return e;
 }
 
+// SomeLine(episode) as episodes.csv holds it, with field `index` replaced by `value`: a damaged
+// line that stays right as columns are added.
+std::string Damaged(int episode, size_t index, const std::string& value) {
+  std::vector<std::string> fields;
+  std::stringstream ss(FormatEpisodeLine(SomeLine(episode)));
+  for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
+  if (FormatEpisodeLine(SomeLine(episode)).back() == ',') fields.push_back("");
+  fields.at(index) = value;
+  std::string line;
+  for (size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + fields[i];
+  return line;
+}
+
 // The message of the std::runtime_error that reading `file` throws ("" when it reads).
 std::string ReadError(const std::filesystem::path& file) {
   try {
@@ -168,9 +186,8 @@ std::string ReadError(const std::filesystem::path& file) {
 TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
   testing::TempDir dir;
   const std::string text = EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) + "\n" +
-                           "plain,two,42,x,timeout,1,4,0,1,1,1,1,0,\n" +
-                           FormatEpisodeLine(SomeLine(1)) + "\n" +
-                           "plain,3,42,x,teleported,1,4,0,1,1,1,1,0,\n" + "plain,4,42,x,succ";
+                           Damaged(2, 1, "two") + "\n" + FormatEpisodeLine(SomeLine(1)) + "\n" +
+                           Damaged(3, 4, "teleported") + "\n" + "plain,4,42,x,succ";
   const auto file = dir.Write("episodes.csv", text);
   const EpisodesCsvRead read = ReadEpisodesCsvChecked(file);
   ASSERT_EQ(read.lines.size(), 2u);
@@ -182,8 +199,8 @@ TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
 
   // Whole-field numbers only (std::stoi read "4x" as 4), and the field count.
   const auto partial =
-      dir.Write("partial.csv", EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) +
-                                   "\nplain,4x,42,x,timeout,1,4,0,1,1,1,1,0,\nplain,5\n");
+      dir.Write("partial.csv", EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) + "\n" +
+                                   Damaged(4, 1, "4x") + "\nplain,5\n");
   const EpisodesCsvRead p = ReadEpisodesCsvChecked(partial);
   EXPECT_EQ(p.lines.size(), 1u);
   EXPECT_EQ(p.damaged, 2);
@@ -204,12 +221,12 @@ TEST(EpisodesCsv, AFileWithoutItsHeaderOrAReadableLineIsAnErrorNamingFileLineAnd
   EXPECT_NE(msg.find("empty.csv:1: the first line is empty"), std::string::npos) << msg;
 
   const auto unreadable = dir.Write(
-      "unreadable.csv",
-      EpisodeCsvHeader() + "\nnot,an,episode\n\nplain,1,2,x,success,1,2.5,3,4,5,6,7,8,9\n");
+      "unreadable.csv", EpisodeCsvHeader() + "\nnot,an,episode\n\n" + Damaged(1, 6, "2.5") + "\n");
   msg = ReadError(unreadable);
   EXPECT_NE(
       msg.find(unreadable.string() + ": none of its 2 episode line(s) can be read (the first: " +
-               unreadable.string() + ":2: it has 3 field(s), expected 14)"),
+               unreadable.string() + ":2: it has 3 field(s), expected " +
+               std::to_string(std::size(kEpisodeColumns)) + ")"),
       std::string::npos)
       << msg;
   EXPECT_NE(msg.find("--fresh"), std::string::npos) << msg;

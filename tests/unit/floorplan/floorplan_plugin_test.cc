@@ -33,7 +33,9 @@ class FloorplanPluginTest : public ::testing::Test {
 
   std::shared_ptr<WorldSource> Make(const std::string& world, const std::string& split) {
     const LoadedPlugin& p = registry_.Load("floorplan", PluginKind::kWorld);
-    Params params({{"file", world}, {"split", split}}, dir_.path());
+    Params params = Params::Defaults(p.schema, dir_.path());
+    params.Set("file", world);
+    params.Set("split", split);
     return registry_.MakeWorld(p, params);
   }
 
