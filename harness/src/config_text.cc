@@ -64,30 +64,43 @@ std::string DataFileName(const fs::path& file) {
 
 }  // namespace
 
-void Canonical(const PluginUse& u, std::ostream& os) {
-  os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
-  std::set<fs::path> hashed;  // canonical paths of the files already counted
+std::vector<InputFile> InputFiles(const PluginUse& u) {
+  std::vector<InputFile> files;
+  std::set<fs::path> seen;  // canonical paths of the files already listed
   std::error_code ec;
+  // A parameter that names a file (weights, a world file) counts with its content: replacing
+  // the file at the same path is another configuration, never resumed as the old one.
   for (const auto& [k, v] : u.params.values()) {
-    os << k << "=" << FormatParamValue(v);
-    // A parameter that names a file (weights, a world file) counts with its content: replacing
-    // the file at the same path is another configuration, never resumed as the old one.
-    if (const auto* text = std::get_if<std::string>(&v); text && !text->empty()) {
-      const fs::path file = u.params.ResolvePath(*text);
-      if (fs::is_regular_file(file, ec)) {
-        os << "#content:" << FileContentHash(file);
-        hashed.insert(fs::weakly_canonical(file, ec));
-      }
-    }
-    os << ";";
+    const auto* text = std::get_if<std::string>(&v);
+    if (!text || text->empty()) continue;
+    const fs::path file = u.params.ResolvePath(*text);
+    if (!fs::is_regular_file(file, ec)) continue;
+    files.push_back({k, *text, FileContentHash(file)});
+    seen.insert(fs::weakly_canonical(file, ec));
   }
   // The files the plugin reads that no parameter names (a world's default frozen layouts).
   if (u.loaded && u.loaded->descriptor->data_files) {
     for (const fs::path& file : u.loaded->descriptor->data_files(u.params)) {
-      if (!fs::is_regular_file(file, ec) || !hashed.insert(fs::weakly_canonical(file, ec)).second)
+      if (!fs::is_regular_file(file, ec) || !seen.insert(fs::weakly_canonical(file, ec)).second)
         continue;
-      os << "data:" << DataFileName(file) << "#content:" << FileContentHash(file) << ";";
+      files.push_back({"", DataFileName(file), FileContentHash(file)});
     }
+  }
+  return files;
+}
+
+void Canonical(const PluginUse& u, std::ostream& os) {
+  os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
+  const std::vector<InputFile> files = InputFiles(u);
+  for (const auto& [k, v] : u.params.values()) {
+    os << k << "=" << FormatParamValue(v);
+    for (const InputFile& f : files) {
+      if (f.param == k) os << "#content:" << f.content;
+    }
+    os << ";";
+  }
+  for (const InputFile& f : files) {
+    if (f.param.empty()) os << "data:" << f.name << "#content:" << f.content << ";";
   }
   os << "}";
 }

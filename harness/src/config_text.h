@@ -5,6 +5,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/sim_config.h"
@@ -14,8 +15,20 @@ namespace crowdsim::suite_internal {
 /// The config hash of a canonical text: 16 hex digits.
 std::string HashConfigText(const std::string& canonical);
 
-/// Writes a plugin use (name and every parameter value, with the content hash of every file a
-/// parameter names) into a canonical config text.
+/// A file a plugin use reads, with its content hash (FNV-1a of the bytes, 16 hex digits).
+struct InputFile {
+  std::string param;    ///< the parameter that names it; empty for a plugin's data file
+  std::string name;     ///< the parameter's value, or the data file relative to the data root
+  std::string content;  ///< content hash ("unreadable" when it cannot be read)
+};
+
+/// Every file a plugin use reads: those its string parameters name (resolved as the plugins
+/// resolve them), then the data files it declares (PluginDescriptor::data_files) not already
+/// among them. What the config hash and the manifest's "files" cover.
+std::vector<InputFile> InputFiles(const PluginUse& u);
+
+/// Writes a plugin use (name and every parameter value, with the content hash of every file it
+/// reads, InputFiles) into a canonical config text.
 void Canonical(const PluginUse& u, std::ostream& os);
 
 /// Appends the canonical text of the simulation settings (one line).

@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "config_text.h"
 #include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/metrics.h"
 #include "crowdsim/bench/results.h"
@@ -46,6 +47,19 @@ Json PluginJson(const PluginUse& u) {
   Json params = Json::object();
   for (const auto& [k, v] : u.params.values()) params[k] = ParamJson(v);
   j["params"] = std::move(params);
+  // Every file the plugin reads, with the content hash that the config hash covers.
+  const std::vector<suite_internal::InputFile> inputs = suite_internal::InputFiles(u);
+  if (!inputs.empty()) {
+    Json files = Json::array();
+    for (const auto& f : inputs) {
+      Json file;
+      if (!f.param.empty()) file["param"] = f.param;
+      file["path"] = f.name;
+      file["content_fnv1a"] = f.content;
+      files.push_back(std::move(file));
+    }
+    j["files"] = std::move(files);
+  }
   return j;
 }
 

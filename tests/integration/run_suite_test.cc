@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 
@@ -257,6 +258,11 @@ TEST_F(RunSuiteTest, AFileReplacedAtTheSamePathIsAnotherConfiguration) {
       "rows:\n  - {label: orca, policy: orca}\n";
   const Suite s = LoadOrDie(suite);
   Run(s, "out", 1);
+  const auto world_json =
+      nlohmann::json::parse(ReadText(dir_.path() / "out" / "manifest.json"))["rows"][0]["world"];
+  ASSERT_EQ(world_json["files"].size(), 1u) << world_json.dump();
+  EXPECT_EQ(world_json["files"][0]["param"], "file");
+  EXPECT_EQ(world_json["files"][0]["path"], "world.yaml");
   EXPECT_EQ(LoadOrDie(suite).ConfigHash(), s.ConfigHash());  // same bytes, same configuration
   EXPECT_EQ(Run(LoadOrDie(suite), "out", 1).episodes_resumed, 2);
   dir_.Write("world.yaml", world + "# edited\n");
@@ -305,6 +311,14 @@ TEST_F(RunSuiteTest, DataFilesNoParameterNamesCountWithTheirContent) {
   EXPECT_NE(p.canonical.find("data:plans/mine.yaml#content:"), std::string::npos) << p.canonical;
   EXPECT_EQ(s.canonical.find(data.path().string()), std::string::npos) << s.canonical;
   Run(s, "out", 1);
+  // The manifest lists the file with its content hash, as the config hash counts it.
+  const auto manifest = nlohmann::json::parse(ReadText(dir_.path() / "out" / "manifest.json"));
+  const auto& files = manifest["rows"][0]["world"]["files"];
+  ASSERT_EQ(files.size(), 1u) << manifest["rows"][0]["world"].dump();
+  EXPECT_EQ(files[0]["path"], "worlds/random_rect/obstacles_1_test.yaml");
+  EXPECT_FALSE(files[0].contains("param"));
+  EXPECT_NE(s.canonical.find("#content:" + files[0]["content_fnv1a"].get<std::string>()),
+            std::string::npos);
   EXPECT_EQ(Run(LoadOrDie(rect), "out", 1).episodes_resumed, 2);  // same bytes: resumed
   std::ofstream(data.path() / "worlds/random_rect/obstacles_1_test.yaml", std::ios::app)
       << "# edited\n";
