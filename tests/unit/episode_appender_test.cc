@@ -8,6 +8,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <thread>
 
 #include "temp_dir.h"
@@ -17,16 +18,30 @@ namespace {
 
 using std::chrono::milliseconds;
 
-TEST(EpisodeAppender, LinesWaitForTheDelayOrFinish) {
+// Two lines appended with an hour's delay: nothing is written until `flush` runs.
+void PendingLinesAreWrittenBy(const std::function<void(EpisodeAppender&)>& flush) {
   testing::TempDir dir;
   const auto file = dir.path() / "episodes.csv";
   EpisodeAppender out(file, std::chrono::hours(1));
   std::string why;
   ASSERT_TRUE(out.Append("a,1", &why)) << why;
   ASSERT_TRUE(out.Append("b,2", &why)) << why;
-  EXPECT_EQ(testing::ReadText(file), "");  // an hour's delay: nothing written yet
-  ASSERT_TRUE(out.Finish(&why)) << why;
+  EXPECT_EQ(testing::ReadText(file), "");
+  flush(out);
   EXPECT_EQ(testing::ReadText(file), "a,1\nb,2\n");
+  out.Finish(&why);
+  EXPECT_EQ(testing::ReadText(file), "a,1\nb,2\n");  // written once
+}
+
+TEST(EpisodeAppender, LinesWaitForTheDelayOrFinish) {
+  PendingLinesAreWrittenBy([](EpisodeAppender& out) {
+    std::string why;
+    EXPECT_TRUE(out.Finish(&why)) << why;
+  });
+}
+
+TEST(EpisodeAppender, TheSignalHandlerFlushWritesThePendingLinesOnce) {
+  PendingLinesAreWrittenBy([](EpisodeAppender&) { EpisodeAppender::FlushForSignal(); });
 }
 
 TEST(EpisodeAppender, TheBackgroundThreadWritesWithoutAnotherAppend) {
@@ -56,17 +71,6 @@ TEST(EpisodeAppender, WithoutADelayEachLineIsWrittenAtOnce) {
   ASSERT_TRUE(out.Append(longer, &why)) << why;
   EXPECT_EQ(testing::ReadText(file), "header\nx,1\n" + longer + "\n");
   ASSERT_TRUE(out.Finish(&why)) << why;
-}
-
-TEST(EpisodeAppender, TheSignalHandlerFlushWritesThePendingLinesOnce) {
-  testing::TempDir dir;
-  const auto file = dir.path() / "episodes.csv";
-  EpisodeAppender out(file, std::chrono::hours(1));
-  std::string why;
-  ASSERT_TRUE(out.Append("a,1", &why)) << why;
-  ASSERT_TRUE(out.Append("b,2", &why)) << why;
-  EpisodeAppender::FlushForSignal();
-  EXPECT_EQ(testing::ReadText(file), "a,1\nb,2\n");
 }
 
 TEST(EpisodeAppender, AFullDiskIsNamedWithItsReason) {
