@@ -19,9 +19,21 @@ std::uint64_t DeriveSeed(std::uint64_t suite_seed, std::string_view world_identi
 class Rng {
  public:
   explicit Rng(std::uint64_t seed);
-  std::uint64_t NextU64();
-  /// Uniform in [0, 1).
-  double Uniform();
+  /// The next 64 random bits. Inline (as Uniform): scenario set-up draws thousands of
+  /// candidate points, and a call per draw was a third of its time.
+  std::uint64_t NextU64() {
+    const std::uint64_t result = Rotl(s_[1] * 5, 7) * 9;
+    const std::uint64_t t = s_[1] << 17;
+    s_[2] ^= s_[0];
+    s_[3] ^= s_[1];
+    s_[1] ^= s_[2];
+    s_[0] ^= s_[3];
+    s_[2] ^= t;
+    s_[3] = Rotl(s_[3], 45);
+    return result;
+  }
+  /// Uniform in [0, 1): the top 53 bits as a double.
+  double Uniform() { return static_cast<double>(NextU64() >> 11) * 0x1.0p-53; }
   /// Uniform in [lo, hi).
   double Uniform(double lo, double hi) { return lo + (hi - lo) * Uniform(); }
   /// Uniform integer in [0, n).
@@ -32,6 +44,8 @@ class Rng {
   Rng Fork(std::uint64_t salt);
 
  private:
+  static constexpr std::uint64_t Rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+
   std::uint64_t s_[4];
 };
 
