@@ -42,14 +42,15 @@ Scratch& ThreadScratch() {
   return scratch;
 }
 
-// Collects the user index (rectangle index) of every proxy the broadphase reports.
+// Collects the index of every rectangle whose proxy the broadphase reports (a proxy's client
+// object is its rectangle in the map).
 struct IndexCollector final : btBroadphaseAabbCallback {
-  explicit IndexCollector(std::vector<int>* out) : out(out) {}
+  IndexCollector(const Rect* first, std::vector<int>* out) : first(first), out(out) {}
   bool process(const btBroadphaseProxy* proxy) override {
-    const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
-    out->push_back(object->getUserIndex());
+    out->push_back(static_cast<int>(static_cast<const Rect*>(proxy->m_clientObject) - first));
     return true;
   }
+  const Rect* first;
   std::vector<int>* out;
 };
 
@@ -96,35 +97,44 @@ inline double RelDiscHit(const RelDisc& d, double dx, double dy) {
 
 }  // namespace
 
-struct CollisionWorld::Impl {
-  Impl()
-      : config(MakeConstructionInfo()),
-        dispatcher(&config),
-        world(&dispatcher, &broadphase, &config) {}
+// Bullet's complete collision world (configuration, dispatcher, broadphase, box objects):
+// only the reference ray test needs it, so it is built on that test's first call. Building
+// one per episode cost more than the rest of an episode's set-up (the dispatcher's tables).
+struct BulletReferenceWorld {
+  explicit BulletReferenceWorld(const std::vector<Rect>& rects)
+      : config(ConstructionInfo()), dispatcher(&config), world(&dispatcher, &broadphase, &config) {
+    for (const Rect& r : rects) {
+      const Vec2 half = 0.5 * r.Size();
+      const Vec2 center = r.Center();
+      auto shape = std::make_unique<btBoxShape>(btVector3(static_cast<btScalar>(half.x()),
+                                                          static_cast<btScalar>(half.y()),
+                                                          static_cast<btScalar>(kBoxHalfHeight)));
+      auto object = std::make_unique<btCollisionObject>();
+      object->setCollisionShape(shape.get());
+      btTransform transform;
+      transform.setIdentity();
+      transform.setOrigin(
+          btVector3(static_cast<btScalar>(center.x()), static_cast<btScalar>(center.y()), 0));
+      object->setWorldTransform(transform);
+      object->setCollisionFlags(object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
+      world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
+                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+      shapes.push_back(std::move(shape));
+      objects.push_back(std::move(object));
+    }
+  }
 
-  ~Impl() {
+  ~BulletReferenceWorld() {
     // btCollisionWorld's destructor touches the proxies of the objects it still holds.
     for (auto& object : objects) world.removeCollisionObject(object.get());
   }
 
-  static btDefaultCollisionConstructionInfo MakeConstructionInfo() {
+  // This world never runs Bullet's narrow phase: tiny pools save megabytes.
+  static btDefaultCollisionConstructionInfo ConstructionInfo() {
     btDefaultCollisionConstructionInfo info;
     info.m_defaultMaxPersistentManifoldPoolSize = kBulletPoolSize;
     info.m_defaultMaxCollisionAlgorithmPoolSize = kBulletPoolSize;
     return info;
-  }
-
-  // Appends the indices of rectangles whose (float) AABB touches `box` padded, unsorted.
-  void Broadphase(const Rect& box, std::vector<int>* out) const {
-    const btVector3 lo(static_cast<btScalar>(box.min.x() - kBroadphasePad),
-                       static_cast<btScalar>(box.min.y() - kBroadphasePad),
-                       static_cast<btScalar>(-0.5 * kBoxHalfHeight));
-    const btVector3 hi(static_cast<btScalar>(box.max.x() + kBroadphasePad),
-                       static_cast<btScalar>(box.max.y() + kBroadphasePad),
-                       static_cast<btScalar>(0.5 * kBoxHalfHeight));
-    IndexCollector collector(out);
-    // aabbTest only reads the tree (no mutable state), so concurrent const queries are safe.
-    const_cast<btDbvtBroadphase&>(broadphase).aabbTest(lo, hi, collector);
   }
 
   btDefaultCollisionConfiguration config;
@@ -133,40 +143,55 @@ struct CollisionWorld::Impl {
   btCollisionWorld world;
   std::vector<std::unique_ptr<btBoxShape>> shapes;
   std::vector<std::unique_ptr<btCollisionObject>> objects;
+};
+
+// Every query culls with Bullet's broadphase (a dynamic AABB tree, btDbvtBroadphase) holding
+// one proxy per rectangle, its box exactly.
+struct CollisionWorld::Impl {
+  explicit Impl(const std::vector<Rect>& rects) : first(rects.data()) {
+    proxies.reserve(rects.size());
+    for (const Rect& r : rects) {
+      const btVector3 lo(static_cast<btScalar>(r.min.x()), static_cast<btScalar>(r.min.y()),
+                         static_cast<btScalar>(-kBoxHalfHeight));
+      const btVector3 hi(static_cast<btScalar>(r.max.x()), static_cast<btScalar>(r.max.y()),
+                         static_cast<btScalar>(kBoxHalfHeight));
+      proxies.push_back(broadphase.createProxy(
+          lo, hi, BOX_SHAPE_PROXYTYPE, const_cast<Rect*>(&r), btBroadphaseProxy::StaticFilter,
+          btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter, nullptr));
+    }
+  }
+
+  ~Impl() {
+    // No pair is ever computed (static proxies, no narrow phase), so no dispatcher is needed.
+    for (btBroadphaseProxy* proxy : proxies) broadphase.destroyProxy(proxy, nullptr);
+  }
+
+  // Appends the indices of rectangles whose AABB touches `box` padded, unsorted.
+  void Broadphase(const Rect& box, std::vector<int>* out) const {
+    const btVector3 lo(static_cast<btScalar>(box.min.x() - kBroadphasePad),
+                       static_cast<btScalar>(box.min.y() - kBroadphasePad),
+                       static_cast<btScalar>(-0.5 * kBoxHalfHeight));
+    const btVector3 hi(static_cast<btScalar>(box.max.x() + kBroadphasePad),
+                       static_cast<btScalar>(box.max.y() + kBroadphasePad),
+                       static_cast<btScalar>(0.5 * kBoxHalfHeight));
+    IndexCollector collector(first, out);
+    // aabbTest only reads the tree (no mutable state), so concurrent const queries are safe.
+    const_cast<btDbvtBroadphase&>(broadphase).aabbTest(lo, hi, collector);
+  }
+
+  const Rect* first;
+  btDbvtBroadphase broadphase;
+  std::vector<btBroadphaseProxy*> proxies;
   // btDbvtBroadphase::rayTest reuses one traversal stack per broadphase (Bullet built
-  // without BT_THREADSAFE), so the reference scan is serialised.
-  mutable std::mutex ray_mutex;
+  // without BT_THREADSAFE), so the reference scan is serialised; it builds `reference`.
+  std::mutex ray_mutex;
+  std::unique_ptr<BulletReferenceWorld> reference;
 };
 
 CollisionWorld::CollisionWorld(std::shared_ptr<const StaticMap> map) : map_(std::move(map)) {
-  const auto& rects = map_->rectangles;
-  // Without rectangles there is nothing to cull: no Bullet world at all (its dispatcher and
-  // pools were most of an obstacle-free episode's set-up), and every query answers "free".
-  if (rects.empty()) return;
-  impl_ = std::make_unique<Impl>();
-  impl_->shapes.reserve(rects.size());
-  impl_->objects.reserve(rects.size());
-  for (size_t i = 0; i < rects.size(); ++i) {
-    const Rect& r = rects[i];
-    const Vec2 half = 0.5 * r.Size();
-    const Vec2 center = r.Center();
-    auto shape = std::make_unique<btBoxShape>(btVector3(static_cast<btScalar>(half.x()),
-                                                        static_cast<btScalar>(half.y()),
-                                                        static_cast<btScalar>(kBoxHalfHeight)));
-    auto object = std::make_unique<btCollisionObject>();
-    object->setCollisionShape(shape.get());
-    btTransform transform;
-    transform.setIdentity();
-    transform.setOrigin(
-        btVector3(static_cast<btScalar>(center.x()), static_cast<btScalar>(center.y()), 0));
-    object->setWorldTransform(transform);
-    object->setCollisionFlags(object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
-    object->setUserIndex(static_cast<int>(i));
-    impl_->world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
-                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-    impl_->shapes.push_back(std::move(shape));
-    impl_->objects.push_back(std::move(object));
-  }
+  // Without rectangles there is nothing to cull: no Bullet broadphase at all, and every
+  // query answers "free".
+  if (!map_->rectangles.empty()) impl_ = std::make_unique<Impl>(map_->rectangles);
 }
 
 CollisionWorld::~CollisionWorld() = default;
@@ -264,13 +289,15 @@ void CollisionWorld::CastRaysBullet(const Vec2& origin, std::span<const double> 
     return;
   }
   std::lock_guard<std::mutex> lock(impl_->ray_mutex);
+  if (!impl_->reference) impl_->reference = std::make_unique<BulletReferenceWorld>(map_->rectangles);
+  btCollisionWorld& world = impl_->reference->world;
   const btVector3 from(static_cast<btScalar>(origin.x()), static_cast<btScalar>(origin.y()), 0);
   for (size_t k = 0; k < world_angles.size(); ++k) {
     const Vec2 end =
         origin + max_range * Vec2(std::cos(world_angles[k]), std::sin(world_angles[k]));
     const btVector3 to(static_cast<btScalar>(end.x()), static_cast<btScalar>(end.y()), 0);
     btCollisionWorld::ClosestRayResultCallback callback(from, to);
-    impl_->world.rayTest(from, to, callback);
+    world.rayTest(from, to, callback);
     ranges[k] = callback.hasHit() ? static_cast<double>(callback.m_closestHitFraction) * max_range
                                   : max_range;
   }

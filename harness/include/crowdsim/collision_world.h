@@ -1,5 +1,5 @@
-// The static collision world: the map's rectangles as boxes in a Bullet btCollisionWorld.
-// Bullet's broadphase (dynamic AABB tree) culls; an exact 2D narrow phase decides. Agents are
+// The static collision world: the map's rectangles as proxies in Bullet's broadphase (its
+// dynamic AABB tree, btDbvtBroadphase), which culls; an exact 2D narrow phase decides. Agents are
 // passed as discs per query (few, moving every step and per lookahead candidate).
 #pragma once
 
@@ -45,7 +45,8 @@ class CollisionWorld {
                 std::span<const Circle> discs, double* ranges) const;
 
   /// Reference scan: btCollisionWorld::rayTest per beam against the boxes only (slow;
-  /// kept for tests and benchmarks that check the fast scan).
+  /// kept for tests and benchmarks that check the fast scan). Its first call builds Bullet's
+  /// complete collision world (configuration, dispatcher, box objects) for this map.
   void CastRaysBullet(const Vec2& origin, std::span<const double> world_angles, double max_range,
                       double* ranges) const;
 
