@@ -38,6 +38,9 @@ class DiscFreeSpace {
  private:
   std::shared_ptr<const StaticMap> map_;
   double clearance_;
+  Rect inner_;               // where the disc's centre keeps inside the bounds
+  std::vector<Rect> reach_;  // each rectangle grown by the clearance (and a hair): the
+                             // points outside it cannot touch the rectangle
 };
 
 /// Candidate points for starts and goals; the placement filters them with the predicate.

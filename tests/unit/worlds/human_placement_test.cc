@@ -69,6 +69,46 @@ TEST(DiscFreeSpace, KeepsTheDiscInsideAndOffRectangles) {
   EXPECT_FALSE(space.Contains(Vec2(20.0, 0.0)));  // outside the bounds
 }
 
+// The free-space test skips the exact disc test for rectangles the point is far from; the
+// answers must stay those of the disc test everywhere, on the edge of that cut-off included.
+TEST(DiscFreeSpace, AnswersAsTheDiscTestAtEveryDistance) {
+  const auto map = Room(10.0, {Rect::FromCorners(-1.3, -0.7, 0.9, 1.1),
+                               Rect::FromCorners(2.0, -3.0, 2.5, 3.5)});
+  for (double clearance : {0.0, 0.3, 0.4, 0.93}) {
+    const DiscFreeSpace space(map, clearance);
+    const Rect inner = map->bounds.Inflated(-clearance);
+    auto reference = [&](const Vec2& p) {
+      if (!inner.Contains(p)) return false;
+      return std::none_of(map->rectangles.begin(), map->rectangles.end(),
+                          [&](const Rect& r) { return DiscOverlapsRect(p, clearance, r); });
+    };
+    int checked = 0;
+    for (const Rect& r : map->rectangles) {
+      // Points at the clearance from each side and corner, and a hair either side of it.
+      for (double dx : {-1.0, 0.0, 1.0}) {
+        for (double dy : {-1.0, 0.0, 1.0}) {
+          if (dx == 0.0 && dy == 0.0) continue;
+          const Vec2 dir = Vec2(dx, dy).normalized();
+          const Vec2 corner(dx < 0 ? r.min.x() : dx > 0 ? r.max.x() : r.Center().x(),
+                            dy < 0 ? r.min.y() : dy > 0 ? r.max.y() : r.Center().y());
+          for (double off : {-1e-6, -1e-9, -1e-12, 0.0, 1e-12, 1e-9, 1e-6}) {
+            const Vec2 p = corner + (clearance + off) * dir;
+            EXPECT_EQ(space.Contains(p), reference(p))
+                << "clearance " << clearance << " point (" << p.x() << ", " << p.y() << ")";
+            ++checked;
+          }
+        }
+      }
+    }
+    Rng rng(7);
+    for (int i = 0; i < 20000; ++i, ++checked) {
+      const Vec2 p(rng.Uniform(-5.6, 5.6), rng.Uniform(-5.6, 5.6));
+      ASSERT_EQ(space.Contains(p), reference(p)) << "clearance " << clearance;
+    }
+    EXPECT_GT(checked, 20000);
+  }
+}
+
 TEST(HumanPlacement, OneGoalPerHumanFollowingEveryRule) {
   const auto map = Room(10.0, {Rect::FromCorners(-2, -1, 1, 2)});
   const Vec2 robot_start(-4, -4), robot_goal(4, 4);
