@@ -289,7 +289,8 @@ void CollisionWorld::CastRaysBullet(const Vec2& origin, std::span<const double> 
     return;
   }
   std::lock_guard<std::mutex> lock(impl_->ray_mutex);
-  if (!impl_->reference) impl_->reference = std::make_unique<BulletReferenceWorld>(map_->rectangles);
+  if (!impl_->reference)
+    impl_->reference = std::make_unique<BulletReferenceWorld>(map_->rectangles);
   btCollisionWorld& world = impl_->reference->world;
   const btVector3 from(static_cast<btScalar>(origin.x()), static_cast<btScalar>(origin.y()), 0);
   for (size_t k = 0; k < world_angles.size(); ++k) {

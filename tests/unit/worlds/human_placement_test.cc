@@ -72,8 +72,8 @@ TEST(DiscFreeSpace, KeepsTheDiscInsideAndOffRectangles) {
 // The free-space test skips the exact disc test for rectangles the point is far from; the
 // answers must stay those of the disc test everywhere, on the edge of that cut-off included.
 TEST(DiscFreeSpace, AnswersAsTheDiscTestAtEveryDistance) {
-  const auto map = Room(10.0, {Rect::FromCorners(-1.3, -0.7, 0.9, 1.1),
-                               Rect::FromCorners(2.0, -3.0, 2.5, 3.5)});
+  const auto map =
+      Room(10.0, {Rect::FromCorners(-1.3, -0.7, 0.9, 1.1), Rect::FromCorners(2.0, -3.0, 2.5, 3.5)});
   for (double clearance : {0.0, 0.3, 0.4, 0.93}) {
     const DiscFreeSpace space(map, clearance);
     const Rect inner = map->bounds.Inflated(-clearance);
@@ -89,8 +89,12 @@ TEST(DiscFreeSpace, AnswersAsTheDiscTestAtEveryDistance) {
         for (double dy : {-1.0, 0.0, 1.0}) {
           if (dx == 0.0 && dy == 0.0) continue;
           const Vec2 dir = Vec2(dx, dy).normalized();
-          const Vec2 corner(dx < 0 ? r.min.x() : dx > 0 ? r.max.x() : r.Center().x(),
-                            dy < 0 ? r.min.y() : dy > 0 ? r.max.y() : r.Center().y());
+          const Vec2 corner(dx < 0   ? r.min.x()
+                            : dx > 0 ? r.max.x()
+                                     : r.Center().x(),
+                            dy < 0   ? r.min.y()
+                            : dy > 0 ? r.max.y()
+                                     : r.Center().y());
           for (double off : {-1e-6, -1e-9, -1e-12, 0.0, 1e-12, 1e-9, 1e-6}) {
             const Vec2 p = corner + (clearance + off) * dir;
             EXPECT_EQ(space.Contains(p), reference(p))
