@@ -14,11 +14,13 @@ void Guidance::Reset(std::shared_ptr<const Roadmap> roadmap) {
   roadmap_ = std::move(roadmap);
   Restart();
   plans_ = 0;
+  goal_clearance_ = -1.0;
 }
 
 void Guidance::Restart() {
   path_.clear();
   remaining_.clear();
+  waypoint_clearance_.clear();
   next_ = 0;
   unreachable_ = false;
   best_progress_ = kInfinity;
@@ -34,6 +36,8 @@ void Guidance::Plan(const Vec2& position, const Vec2& goal) {
   for (std::size_t k = path_.size(); k-- > 1;) {
     remaining_[k - 1] = remaining_[k] + (path_[k] - path_[k - 1]).norm();
   }
+  waypoint_clearance_.clear();
+  for (const Vec2& w : path_) waypoint_clearance_.push_back(roadmap_->CappedClearance(w));
   next_ = 0;
   best_progress_ = kInfinity;
   stalled_ = 0;
@@ -41,8 +45,13 @@ void Guidance::Plan(const Vec2& position, const Vec2& goal) {
 
 GuidanceTarget Guidance::Next(const Vec2& position, const Vec2& goal) {
   if (!roadmap_) return {goal, true};
+  const double here = roadmap_->CappedClearance(position);
+  if (goal_clearance_ < 0.0 || goal != clearance_goal_) {
+    clearance_goal_ = goal;
+    goal_clearance_ = roadmap_->CappedClearance(goal);
+  }
   // The common case in open space: nothing to plan.
-  if (roadmap_->Visible(position, goal)) {
+  if (roadmap_->Visible(position, here, goal, goal_clearance_)) {
     path_.clear();
     unreachable_ = false;
     return {goal, true};
@@ -58,7 +67,9 @@ GuidanceTarget Guidance::Next(const Vec2& position, const Vec2& goal) {
   // others) and the path is planned again from here.
   auto farthest_visible = [&]() -> std::ptrdiff_t {
     for (std::size_t k = path_.size(); k-- > next_;) {
-      if (roadmap_->Visible(position, path_[k])) return static_cast<std::ptrdiff_t>(k);
+      if (roadmap_->Visible(position, here, path_[k], waypoint_clearance_[k])) {
+        return static_cast<std::ptrdiff_t>(k);
+      }
     }
     return -1;
   };

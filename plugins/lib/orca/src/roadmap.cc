@@ -66,7 +66,11 @@ double Roadmap::CappedClearance(const Vec2& p) const {
 }
 
 bool Roadmap::Visible(const Vec2& a, const Vec2& b) const {
-  const double c = std::min({clearance_, CappedClearance(a), CappedClearance(b)});
+  return Visible(a, CappedClearance(a), b, CappedClearance(b));
+}
+
+bool Roadmap::Visible(const Vec2& a, double a_clearance, const Vec2& b, double b_clearance) const {
+  const double c = std::min({clearance_, a_clearance, b_clearance});
   return SegmentClear(rects_, a, b, std::max(0.0, c - kClearanceSlack));
 }
 

@@ -54,7 +54,12 @@ class Guidance {
   std::shared_ptr<const Roadmap> roadmap_;
   std::vector<Vec2> path_;
   std::vector<double> remaining_;  // path length from waypoint k to the goal
-  std::size_t next_ = 0;           // waypoint aimed at
+  // The roadmap's capped clearance of each waypoint and of the goal, asked at every decision
+  // (Roadmap::Visible), computed once per plan and per goal.
+  std::vector<double> waypoint_clearance_;
+  Vec2 clearance_goal_ = Vec2::Zero();
+  double goal_clearance_ = -1.0;  // of clearance_goal_; < 0: not computed since Reset
+  std::size_t next_ = 0;          // waypoint aimed at
   Vec2 planned_goal_ = Vec2::Zero();
   bool unreachable_ = false;  // the roadmap has no route: head straight to the goal
   double best_progress_ = kInfinity;

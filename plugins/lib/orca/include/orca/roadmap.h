@@ -34,6 +34,13 @@ class Roadmap {
   /// asked of the segment is capped by that of its ends, so an agent already squeezed
   /// against a wall still sees along it.
   bool Visible(const Vec2& a, const Vec2& b) const;
+  /// The same with the ends' capped clearances given (CappedClearance(a), CappedClearance(b)),
+  /// for a caller that tests one point against many or the same point step after step.
+  bool Visible(const Vec2& a, double a_clearance, const Vec2& b, double b_clearance) const;
+
+  /// min(clearance, distance from p to the nearest rectangle): only rectangles within the
+  /// clearance can lower it, so only those are looked at.
+  double CappedClearance(const Vec2& p) const;
 
   /// Shortest path from `start` to `goal` over the roadmap: the waypoints after the start,
   /// `goal` last. Empty when the roadmap does not connect them.
@@ -44,10 +51,6 @@ class Roadmap {
     int to = 0;
     double length = 0.0;
   };
-  /// min(clearance_, distance from p to the nearest rectangle): only rectangles within
-  /// clearance_ can lower it, so only those are looked at.
-  double CappedClearance(const Vec2& p) const;
-
   std::vector<Rect> rects_;
   RectIndex index_;  // over rects_, for the clearance of points (small queries)
   Rect bounds_;
