@@ -45,6 +45,9 @@ class KBest {
   double bound_ = kInfinity;  // the k-th best distance once there are k hits
 };
 
+// Crowds up to this size are searched by offering every agent (no grid walk).
+constexpr size_t kScanAllUpTo = 16;
+
 // Distance from x to the interval [lo, hi] (0 inside), less `margin`, never negative.
 inline double GapTo(double x, double lo, double hi, double margin) {
   return std::max(0.0, std::max(lo - x, x - hi) - margin);
@@ -119,6 +122,20 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
   Hit stack_slots[kOnStack];
   std::vector<Hit> heap_slots(max_count > kOnStack ? max_count : 0);
   KBest best(max_count > kOnStack ? heap_slots.data() : stack_slots, max_count);
+
+  // A small crowd (the paper's five humans and the robot): offering every agent costs less
+  // than walking the grid's rings, and gives the same k best (one strict order, every agent
+  // in range offered either way).
+  if (position_.size() <= kScanAllUpTo) {
+    for (size_t k = 0; k < position_.size(); ++k) {
+      const double d2 = (position_[k] - p).squaredNorm();
+      if (d2 >= range_sq) continue;
+      const int i = order_[k];
+      if (i != exclude) best.Offer({d2, i});
+    }
+    best.Write(out);
+    return;
+  }
 
   // Agents of cells [xa, xb] of row cy: one contiguous run of the cell-sorted arrays, skipped
   // when its nearest point is too far.

@@ -103,6 +103,27 @@ TEST(AgentIndex, NearestMatchesBruteForceForManyNeighboursAndSharedPositions) {
   }
 }
 
+// Small crowds (up to 16 agents: every agent is offered instead of walking the grid), on a
+// lattice so that distances tie: still the brute-force answer, ties by index.
+TEST(AgentIndex, NearestMatchesBruteForceInSmallCrowdsWithTies) {
+  Rng rng(23);
+  for (int n = 1; n <= 17; ++n) {
+    const auto agents = Crowd(n, [](int i) { return Vec2(i % 3, i / 3); });
+    AgentIndex index;
+    index.Rebuild(agents);
+    for (int q = 0; q < 30; ++q) {
+      const Vec2 p = q % 2 == 0 ? agents[rng.Below(n)].position
+                                : Vec2(0.5 * static_cast<double>(rng.Below(8)) - 1.0,
+                                       0.5 * static_cast<double>(rng.Below(14)) - 1.0);
+      const double range = q % 3 == 0 ? 1.0 : rng.Uniform(0.5, 6);
+      const int k = 1 + static_cast<int>(rng.Below(10));
+      const int exclude = q % 4 == 0 ? -1 : static_cast<int>(rng.Below(n));
+      SCOPED_TRACE("n " + std::to_string(n) + " query " + std::to_string(q));
+      ExpectBruteForceAnswer(agents, index, p, range, k, exclude);
+    }
+  }
+}
+
 TEST(AgentIndex, EmptyAndSingle) {
   AgentIndex index;
   std::vector<AgentState> none;
