@@ -123,16 +123,18 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
   std::vector<Hit> heap_slots(max_count > kOnStack ? max_count : 0);
   KBest best(max_count > kOnStack ? heap_slots.data() : stack_slots, max_count);
 
+  // Offers the agent in slot k of the cell-sorted arrays if it is in range.
+  const auto offer = [&](int k) {
+    const double d2 = (position_[k] - p).squaredNorm();
+    if (d2 >= range_sq) return;
+    const int i = order_[k];
+    if (i != exclude) best.Offer({d2, i});
+  };
   // A small crowd (the paper's five humans and the robot): offering every agent costs less
   // than walking the grid's rings, and gives the same k best (one strict order, every agent
   // in range offered either way).
   if (position_.size() <= kScanAllUpTo) {
-    for (size_t k = 0; k < position_.size(); ++k) {
-      const double d2 = (position_[k] - p).squaredNorm();
-      if (d2 >= range_sq) continue;
-      const int i = order_[k];
-      if (i != exclude) best.Offer({d2, i});
-    }
+    for (int k = 0; k < static_cast<int>(position_.size()); ++k) offer(k);
     best.Write(out);
     return;
   }
@@ -147,12 +149,7 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
     const double lower_d2 = gx * gx + gy * gy;
     if ((lower_d2 >= range_sq) | best.Excludes(lower_d2)) return;
     const int end = cell_start_[cy * nx_ + xb + 1];
-    for (int k = cell_start_[cy * nx_ + xa]; k < end; ++k) {
-      const double d2 = (position_[k] - p).squaredNorm();
-      if (d2 >= range_sq) continue;
-      const int i = order_[k];
-      if (i != exclude) best.Offer({d2, i});
-    }
+    for (int k = cell_start_[cy * nx_ + xa]; k < end; ++k) offer(k);
   };
   // The cell holding p (it may lie outside the grid), then rings of cells around it: ring r
   // lies outside the block of rings < r, so once the k best are nearer than that block's

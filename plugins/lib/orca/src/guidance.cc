@@ -53,6 +53,7 @@ GuidanceTarget Guidance::Next(const Vec2& position, const Vec2& goal) {
   // The common case in open space: nothing to plan.
   if (roadmap_->Visible(position, here, goal, goal_clearance_)) {
     path_.clear();
+    waypoint_clearance_.clear();
     unreachable_ = false;
     return {goal, true};
   }
