@@ -35,6 +35,7 @@ struct Scratch {
   std::vector<int> ids;
   std::vector<RelRect> rects;
   std::vector<RelDisc> discs;
+  std::vector<Vec2> directions;  // the angle overload of CastRays
 };
 
 Scratch& ThreadScratch() {
@@ -249,6 +250,15 @@ double CollisionWorld::ClearanceAt(const Vec2& p, double search_radius) const {
 void CollisionWorld::CastRays(const Vec2& origin, std::span<const double> world_angles,
                               double max_range, std::span<const Circle> discs,
                               double* ranges) const {
+  std::vector<Vec2>& directions = ThreadScratch().directions;
+  directions.clear();
+  for (double a : world_angles) directions.emplace_back(std::cos(a), std::sin(a));
+  CastRays(origin, directions, max_range, discs, ranges);
+}
+
+void CollisionWorld::CastRays(const Vec2& origin, std::span<const Vec2> world_directions,
+                              double max_range, std::span<const Circle> discs,
+                              double* ranges) const {
   Scratch& s = ThreadScratch();
   s.ids.clear();
   s.rects.clear();
@@ -270,9 +280,9 @@ void CollisionWorld::CastRays(const Vec2& origin, std::span<const double> world_
     s.discs.push_back({c.x(), c.y(), c2 - d.radius * d.radius});
   }
 
-  for (size_t k = 0; k < world_angles.size(); ++k) {
-    const double dx = std::cos(world_angles[k]);
-    const double dy = std::sin(world_angles[k]);
+  for (size_t k = 0; k < world_directions.size(); ++k) {
+    const double dx = world_directions[k].x();
+    const double dy = world_directions[k].y();
     const double ix = 1.0 / dx;
     const double iy = 1.0 / dy;
     double best = max_range;

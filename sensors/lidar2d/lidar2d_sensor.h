@@ -24,6 +24,7 @@ class Lidar2dSensor final : public Sensor {
 
  private:
   std::vector<double> angles_;
+  std::vector<Vec2> directions_;  // (cos, sin) of each beam angle, rotated by the heading
   double max_range_;
   bool see_humans_;
 };

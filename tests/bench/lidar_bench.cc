@@ -18,8 +18,9 @@ constexpr int kOrigins = 64;
 struct Scene {
   std::shared_ptr<const StaticMap> map;
   std::vector<Circle> humans;
-  std::vector<Vec2> origins;   // free of rectangles and humans; scans cycle through them
-  std::vector<double> angles;  // 45 beams over 180 deg, world frame
+  std::vector<Vec2> origins;     // free of rectangles and humans; scans cycle through them
+  std::vector<double> angles;    // 45 beams over 180 deg, world frame
+  std::vector<Vec2> directions;  // the same beams as unit vectors (what lidar2d passes)
 };
 
 bool Free(const Scene& s, const Vec2& p, double clearance) {
@@ -53,6 +54,7 @@ void Populate(Scene* s, double size, int humans, std::uint64_t seed) {
   }
   for (int k = 0; k < kBeams; ++k) {
     s->angles.push_back(-0.5 * std::numbers::pi + k * std::numbers::pi / (kBeams - 1));
+    s->directions.emplace_back(std::cos(s->angles.back()), std::sin(s->angles.back()));
   }
 }
 
@@ -114,7 +116,9 @@ void BruteForceScan(const Scene& s, const Vec2& origin, double* ranges) {
   }
 }
 
-enum class Variant { kFast, kBruteForce, kBullet };
+// kFast takes world angles (a sine and cosine per beam); kFastDirections the beams' unit
+// vectors, as the lidar2d sensor passes them (its fixed beams rotated by the heading).
+enum class Variant { kFast, kFastDirections, kBruteForce, kBullet };
 
 void Scan(benchmark::State& state, const Scene& (*scene)(), Variant variant) {
   const Scene& s = scene();
@@ -126,6 +130,9 @@ void Scan(benchmark::State& state, const Scene& (*scene)(), Variant variant) {
     switch (variant) {
       case Variant::kFast:
         world.CastRays(origin, s.angles, kMaxRange, s.humans, ranges);
+        break;
+      case Variant::kFastDirections:
+        world.CastRays(origin, s.directions, kMaxRange, s.humans, ranges);
         break;
       case Variant::kBruteForce:
         BruteForceScan(s, origin, ranges);
@@ -141,11 +148,15 @@ void Scan(benchmark::State& state, const Scene& (*scene)(), Variant variant) {
 }
 
 BENCHMARK_CAPTURE(Scan, room_fast, &Room, Variant::kFast)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Scan, room_fast_directions, &Room, Variant::kFastDirections)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Scan, room_brute_force, &Room, Variant::kBruteForce)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Scan, room_bullet_no_humans, &Room, Variant::kBullet)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Scan, floorplan_fast, &FloorPlan, Variant::kFast)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Scan, floorplan_fast_directions, &FloorPlan, Variant::kFastDirections)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Scan, floorplan_brute_force, &FloorPlan, Variant::kBruteForce)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Scan, floorplan_bullet_no_humans, &FloorPlan, Variant::kBullet)

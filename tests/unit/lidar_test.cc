@@ -259,12 +259,22 @@ TEST_F(Lidar2dPlugin, RangesMatchTheCollisionWorldScan) {
   const std::vector<AgentState> humans{human};
   const double heading = 0.7;
   const SensorReading r = Sense(*sensor, world, Vec2(-0.5, -0.5), heading, humans);
-  std::vector<double> world_angles;
-  for (double a : r.angles) world_angles.push_back(a + heading);
+  // The sensor rotates its beams' fixed directions by the heading's cosine and sine.
+  std::vector<Vec2> directions;
+  for (double a : r.angles) {
+    directions.emplace_back(std::cos(a) * std::cos(heading) - std::sin(a) * std::sin(heading),
+                            std::sin(a) * std::cos(heading) + std::cos(a) * std::sin(heading));
+  }
   const Circle disc{human.position, human.radius};
   std::vector<double> expected(45);
-  world.CastRays(Vec2(-0.5, -0.5), world_angles, 4.0, std::span(&disc, 1), expected.data());
+  world.CastRays(Vec2(-0.5, -0.5), directions, 4.0, std::span(&disc, 1), expected.data());
   EXPECT_EQ(r.ranges, expected);
+  // The same beams given as world angles (a sine and cosine each): equal but for rounding.
+  std::vector<double> world_angles;
+  for (double a : r.angles) world_angles.push_back(a + heading);
+  std::vector<double> by_angle(45);
+  world.CastRays(Vec2(-0.5, -0.5), world_angles, 4.0, std::span(&disc, 1), by_angle.data());
+  for (size_t k = 0; k < by_angle.size(); ++k) EXPECT_NEAR(r.ranges[k], by_angle[k], 1e-12) << k;
   EXPECT_EQ(r.max_range, 4.0);
 }
 

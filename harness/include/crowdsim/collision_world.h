@@ -44,6 +44,11 @@ class CollisionWorld {
   void CastRays(const Vec2& origin, std::span<const double> world_angles, double max_range,
                 std::span<const Circle> discs, double* ranges) const;
 
+  /// The same scan along world-frame unit directions (a sensor with fixed beams rotates its
+  /// precomputed beam directions by the heading instead of taking a sine and cosine per beam).
+  void CastRays(const Vec2& origin, std::span<const Vec2> world_directions, double max_range,
+                std::span<const Circle> discs, double* ranges) const;
+
   /// Reference scan: btCollisionWorld::rayTest per beam against the boxes only (slow;
   /// kept for tests and benchmarks that check the fast scan). Its first call builds Bullet's
   /// complete collision world (configuration, dispatcher, box objects) for this map.
