@@ -77,6 +77,39 @@ TEST(AgentIndex, NearestMatchesBruteForceInLargeCrowdsWithTies) {
   }
 }
 
+// Dense clusters in a large, otherwise sparse world (Circle's and Blocks' crowds: cells much
+// larger than the agents' spacing, the k best found in the first ring near a cluster and not
+// at all between clusters): still the brute-force answer.
+TEST(AgentIndex, NearestMatchesBruteForceInClustersAndSparseSpace) {
+  Rng rng(29);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int clusters = 1 + static_cast<int>(rng.Below(5));
+    const int per_cluster = 20 + static_cast<int>(rng.Below(150));
+    std::vector<Vec2> centres;
+    for (int c = 0; c < clusters; ++c)
+      centres.emplace_back(rng.Uniform(0, 200), rng.Uniform(0, 200));
+    const int scattered = 30;
+    const int n = clusters * per_cluster + scattered;
+    const auto agents = Crowd(n, [&](int i) {
+      if (i >= clusters * per_cluster) return Vec2(rng.Uniform(0, 200), rng.Uniform(0, 200));
+      const double spread = trial % 2 == 0 ? 3.0 : 8.0;
+      return Vec2(centres[i % clusters] +
+                  Vec2(rng.Uniform(-spread, spread), rng.Uniform(-spread, spread)));
+    });
+    AgentIndex index;
+    index.Rebuild(agents);
+    for (int q = 0; q < 60; ++q) {
+      const int who = static_cast<int>(rng.Below(n));
+      const Vec2 p =
+          q % 5 == 0 ? Vec2(rng.Uniform(-10, 210), rng.Uniform(-10, 210)) : agents[who].position;
+      const double range = rng.Uniform(1, 30);
+      const int k = 1 + static_cast<int>(rng.Below(20));
+      SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
+      ExpectBruteForceAnswer(agents, index, p, range, k, q % 5 == 0 ? -1 : who);
+    }
+  }
+}
+
 // More neighbours than the query keeps on the stack (32), agents sharing a position, and
 // agents and queries exactly on cell sides (a 2 m lattice: the grid's cells are 2 m).
 TEST(AgentIndex, NearestMatchesBruteForceForManyNeighboursAndSharedPositions) {
