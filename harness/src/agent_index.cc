@@ -65,6 +65,16 @@ void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
     position_.clear();
     return;
   }
+  if (agents.size() <= kScanAllUpTo) {
+    // Nearest offers every agent of a crowd this small: no grid, the agents in their order.
+    order_.resize(agents.size());
+    position_.resize(agents.size());
+    for (size_t i = 0; i < agents.size(); ++i) {
+      order_[i] = static_cast<int>(i);
+      position_[i] = agents[i].position;
+    }
+    return;
+  }
   Vec2 lo = agents[0].position, hi = agents[0].position;
   for (const auto& a : agents) {
     lo = lo.cwiseMin(a.position);
@@ -110,14 +120,6 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
   out->clear();
   if (agents_.empty() || max_count <= 0) return;
   const double range_sq = range * range;
-  const int x0 = std::max(0, static_cast<int>(std::floor((p.x() - range - origin_.x()) / cell_)));
-  const int x1 =
-      std::min(nx_ - 1, static_cast<int>(std::floor((p.x() + range - origin_.x()) / cell_)));
-  const int y0 = std::max(0, static_cast<int>(std::floor((p.y() - range - origin_.y()) / cell_)));
-  const int y1 =
-      std::min(ny_ - 1, static_cast<int>(std::floor((p.y() + range - origin_.y()) / cell_)));
-  if (x0 > x1 || y0 > y1) return;
-
   constexpr int kOnStack = 32;
   Hit stack_slots[kOnStack];
   std::vector<Hit> heap_slots(max_count > kOnStack ? max_count : 0);
@@ -138,6 +140,14 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
     best.Write(out);
     return;
   }
+
+  const int x0 = std::max(0, static_cast<int>(std::floor((p.x() - range - origin_.x()) / cell_)));
+  const int x1 =
+      std::min(nx_ - 1, static_cast<int>(std::floor((p.x() + range - origin_.x()) / cell_)));
+  const int y0 = std::max(0, static_cast<int>(std::floor((p.y() - range - origin_.y()) / cell_)));
+  const int y1 =
+      std::min(ny_ - 1, static_cast<int>(std::floor((p.y() + range - origin_.y()) / cell_)));
+  if (x0 > x1 || y0 > y1) return;
 
   // Agents of cells [xa, xb] of row cy: one contiguous run of the cell-sorted arrays, skipped
   // when its nearest point is too far.

@@ -82,7 +82,15 @@ class Episode::StepLookahead final : public Lookahead {
 
 namespace {
 
-void CheckSpeed(const Vec2& velocity, double v_pref, const std::string& who) {
+// Who decided an action, for the error message: "human i's policy", or the robot's (-1). The
+// name is only spelled out when the check fails (a string per agent per step was a heap
+// allocation: "human 0's policy" is longer than the short-string buffer).
+std::string PolicyName(int human) {
+  return human < 0 ? std::string("the robot's policy")
+                   : "human " + std::to_string(human) + "'s policy";
+}
+
+void CheckSpeed(const Vec2& velocity, double v_pref, int human) {
   const double speed = velocity.norm();
   if (speed > kMaxSpeedFactor * v_pref) {
     char buf[160];
@@ -90,7 +98,7 @@ void CheckSpeed(const Vec2& velocity, double v_pref, const std::string& who) {
                   " returned %.4g m/s, more than %.0f x v_pref (%.4g m/s): an action is "
                   "the velocity for the next step, in m/s",
                   speed, kMaxSpeedFactor, kMaxSpeedFactor * v_pref);
-    throw std::runtime_error(who + buf);
+    throw std::runtime_error(PolicyName(human) + buf);
   }
 }
 
@@ -224,7 +232,7 @@ void Episode::DecideHumans() {
       throw std::runtime_error("human " + std::to_string(i) +
                                "'s policy returned a non-finite velocity");
     }
-    CheckSpeed(human_actions_[i].velocity, h.v_pref, "human " + std::to_string(i) + "'s policy");
+    CheckSpeed(human_actions_[i].velocity, h.v_pref, static_cast<int>(i));
   }
 }
 
@@ -267,7 +275,7 @@ StepInfo Episode::Step() {
     if (!info.robot_action.velocity.allFinite()) {
       throw std::runtime_error("the robot's policy returned a non-finite velocity");
     }
-    CheckSpeed(info.robot_action.velocity, robot_.v_pref, "the robot's policy");
+    CheckSpeed(info.robot_action.velocity, robot_.v_pref, -1);
   } catch (const std::exception& e) {
     result_.error = e.what();
     Finish(EpisodeStatus::kPolicyError);

@@ -242,6 +242,20 @@ TEST(Episode, AVelocityFarAboveVPrefIsAPolicyError) {
   EXPECT_NE(ok.Run().status, EpisodeStatus::kPolicyError);
 }
 
+TEST(Episode, AHumanFarAboveVPrefIsAPolicyErrorNamingTheHuman) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4),
+                                   {{Vec2(-3, 0), Vec2(3, 0)}, {Vec2(3, 2), Vec2(-3, 2)}});
+  ConstantVelocityPolicy robot(Vec2(0, 1.0));
+  ConstantVelocityPolicy walking(Vec2(1.0, 0));
+  ConstantVelocityPolicy runaway(Vec2(-1e3, 0));
+  EpisodeAgents agents{&robot, {&walking, &runaway}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
+  EXPECT_EQ(ep.result().error.rfind("human 1's policy returned 1000 m/s, more than 10 x v_pref", 0),
+            0u)
+      << ep.result().error;
+}
+
 TEST(Episode, MeaninglessScenariosAreRefusedWithTheReason) {
   GoStraightPolicy robot;
   EpisodeAgents agents{&robot, {}, {}};
