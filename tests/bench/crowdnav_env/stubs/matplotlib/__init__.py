@@ -1,0 +1,1 @@
+# Minimal stand-in: CrowdNav's env imports matplotlib at the top only for render().
