@@ -229,8 +229,7 @@ void Episode::DecideHumans() {
     human_obs_.self_index = static_cast<int>(i);
     human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
     if (!human_actions_[i].velocity.allFinite()) {
-      throw std::runtime_error("human " + std::to_string(i) +
-                               "'s policy returned a non-finite velocity");
+      throw std::runtime_error(PolicyName(static_cast<int>(i)) + " returned a non-finite velocity");
     }
     CheckSpeed(human_actions_[i].velocity, h.v_pref, static_cast<int>(i));
   }
@@ -273,7 +272,7 @@ StepInfo Episode::Step() {
     decision_time_total_us_ +=
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     if (!info.robot_action.velocity.allFinite()) {
-      throw std::runtime_error("the robot's policy returned a non-finite velocity");
+      throw std::runtime_error(PolicyName(-1) + " returned a non-finite velocity");
     }
     CheckSpeed(info.robot_action.velocity, robot_.v_pref, -1);
   } catch (const std::exception& e) {
