@@ -216,23 +216,26 @@ void Episode::DecideHumans() {
   human_index_.Rebuild(human_view_);
   human_obs_.time = time_;
   human_obs_.agents = &human_index_;
-  for (size_t i = 0; i < humans_.size(); ++i) {
-    // Next goal of a goal sequence once this one is reached.
-    AgentState& h = humans_[i];
-    const auto& goals = scenario_.humans[i].goals;
-    if ((h.position - h.goal).norm() < h.radius) {
-      human_reached_[i] = true;
-      if (human_goal_index_[i] + 1 < goals.size()) h.goal = goals[++human_goal_index_[i]];
-    }
-    human_obs_.self = h;
-    human_obs_.frame = Frame::Make(h.position, HeadingToGoal(h));
-    human_obs_.self_index = static_cast<int>(i);
-    human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
-    if (!human_actions_[i].velocity.allFinite()) {
-      throw std::runtime_error(PolicyName(static_cast<int>(i)) + " returned a non-finite velocity");
-    }
-    CheckSpeed(human_actions_[i].velocity, h.v_pref, static_cast<int>(i));
+  for (int i = 0; i < static_cast<int>(humans_.size()); ++i) DecideHuman(i);
+}
+
+void Episode::DecideHuman(int i) {
+  // Next goal of a goal sequence once this one is reached.
+  AgentState& h = humans_[i];
+  const auto& goals = scenario_.humans[i].goals;
+  if ((h.position - h.goal).norm() < h.radius) {
+    human_reached_[i] = true;
+    if (human_goal_index_[i] + 1 < goals.size()) h.goal = goals[++human_goal_index_[i]];
   }
+  human_obs_.self = h;
+  human_obs_.frame = human_needs_[i].heading_frame ? Frame::Make(h.position, HeadingToGoal(h))
+                                                   : Frame{.origin = h.position};
+  human_obs_.self_index = i;
+  human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
+  if (!human_actions_[i].velocity.allFinite()) {
+    throw std::runtime_error(PolicyName(i) + " returned a non-finite velocity");
+  }
+  CheckSpeed(human_actions_[i].velocity, h.v_pref, i);
 }
 
 void Episode::FillRobotObservation() {

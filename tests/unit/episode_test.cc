@@ -256,6 +256,68 @@ TEST(Episode, AHumanFarAboveVPrefIsAPolicyErrorNamingTheHuman) {
       << ep.result().error;
 }
 
+// When two humans fail in one step, the error is the lower index's, also in a crowd large
+// enough for the neighbour grid, whose order (human i stands at x = 19 - 2i) is the reverse
+// of the index order: a guard for any change of the order of decisions.
+TEST(Episode, InALargeCrowdTheLowestFailingHumanIsReported) {
+  std::vector<std::pair<Vec2, Vec2>> starts_goals;
+  for (int i = 0; i < 20; ++i) {
+    const double x = 19.0 - 2.0 * i;
+    starts_goals.push_back({Vec2(x, 0), Vec2(x, 10)});
+  }
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0.5, -6), Vec2(0.5, -2), starts_goals);
+  ConstantVelocityPolicy robot(Vec2(0, 1.0));
+  ConstantVelocityPolicy walking(Vec2(0, 1.0));
+  ConstantVelocityPolicy runaway(Vec2(0, 1e3));
+  EpisodeAgents agents{&robot, {}, {}};
+  for (int i = 0; i < 20; ++i) agents.humans.push_back(i == 3 || i == 15 ? &runaway : &walking);
+  Episode ep(sc, SimConfig{}, agents);
+  EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
+  EXPECT_EQ(ep.result().error.rfind("human 3's policy returned 1000 m/s", 0), 0u)
+      << ep.result().error;
+}
+
+// Records the frame of its observations.
+class FrameRecorder final : public Policy {
+ public:
+  explicit FrameRecorder(bool heading_frame) : heading_frame_(heading_frame) {}
+  PolicyNeeds Needs() const override {
+    PolicyNeeds needs;
+    needs.heading_frame = heading_frame_;
+    return needs;
+  }
+  Action Decide(const Observation& obs) override {
+    frame = obs.frame;
+    position = obs.self.position;
+    return Action{Vec2::Zero()};
+  }
+  Frame frame;
+  Vec2 position = Vec2::Zero();
+
+ private:
+  bool heading_frame_;
+};
+
+// A human's frame turns towards its goal unless its policy declines the heading frame: then
+// it is world-aligned at the human (the robot's frame turns in either case).
+TEST(Episode, AHumanPolicyWithoutHeadingFrameGetsTheWorldAlignedFrame) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4),
+                                   {{Vec2(-3, 0), Vec2(-3, 3)}, {Vec2(3, 2), Vec2(3, 5)}});
+  ConstantVelocityPolicy robot(Vec2(0, 1.0));
+  FrameRecorder turned(true), world(false);
+  EpisodeAgents agents{&robot, {&turned, &world}, {}};
+  Episode ep(sc, SimConfig{}, agents);
+  ep.Step();
+  EXPECT_NEAR(turned.frame.heading, std::acos(0.0), 1e-12);  // goal straight up: +y
+  EXPECT_NEAR(turned.frame.cos_h, 0.0, 1e-12);
+  EXPECT_NEAR(turned.frame.sin_h, 1.0, 1e-12);
+  EXPECT_EQ(world.frame.heading, 0.0);
+  EXPECT_EQ(world.frame.cos_h, 1.0);
+  EXPECT_EQ(world.frame.sin_h, 0.0);
+  EXPECT_EQ(world.frame.origin, world.position);
+  EXPECT_EQ(turned.frame.origin, turned.position);
+}
+
 TEST(Episode, MeaninglessScenariosAreRefusedWithTheReason) {
   GoStraightPolicy robot;
   EpisodeAgents agents{&robot, {}, {}};

@@ -17,8 +17,9 @@
 namespace crowdsim {
 
 /// Bump when any interface or this descriptor changes layout.
-/// 2: Observation lost time_step and map; 3: the descriptor's data_files.
-inline constexpr std::uint32_t kPluginAbiVersion = 3;
+/// 2: Observation lost time_step and map; 3: the descriptor's data_files;
+/// 4: PolicyNeeds::heading_frame, AgentIndex::NearestNeighbours.
+inline constexpr std::uint32_t kPluginAbiVersion = 4;
 
 /// Name of the exported alias.
 inline constexpr const char* kPluginAliasName = "crowdsim_plugin_v1";

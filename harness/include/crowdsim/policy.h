@@ -19,6 +19,11 @@ struct PolicyNeeds {
   bool map = false;        ///< gets EpisodeContext::map (privileged knowledge of the layout)
   bool lookahead = false;  ///< robot only: gets Observation::lookahead
   std::vector<std::string> sensors;  ///< robot only: sensor names that must be configured
+  /// Humans only: Observation::frame turned towards the agent's goal (an atan2 and a sincos
+  /// per decision). A policy that works in world coordinates (ORCA) sets false and gets the
+  /// world-aligned frame at its own position (heading 0). The robot's frame always turns
+  /// towards its goal: its sensors report in it.
+  bool heading_frame = true;
 };
 
 /// Per-episode context handed to Reset: the one way a policy learns the episode's constants

@@ -129,6 +129,8 @@ class Episode {
   void Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
              std::vector<SensorReading>* out) const;
   void DecideHumans();
+  /// Human i's decision into human_actions_[i] (throws what its policy or the checks throw).
+  void DecideHuman(int i);
   void FillRobotObservation();
   void Finish(EpisodeStatus status);
   void Record();
