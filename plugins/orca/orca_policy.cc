@@ -164,6 +164,7 @@ OrcaPolicy::OrcaPolicy(const Params& params)
 PolicyNeeds OrcaPolicy::Needs() const {
   PolicyNeeds needs;
   needs.map = true;
+  needs.heading_frame = false;  // a human's neighbours come in world coordinates
   return needs;
 }
 
@@ -201,33 +202,41 @@ void OrcaPolicy::GatherNeighbours(const Observation& obs, Scratch* s) const {
   neighbours.clear();
   const double padding = radius_padding_ + safety_space_;
   if (obs.agents != nullptr) {
-    // Human: ground truth from the harness's grid, nearest first.
-    obs.agents->Nearest(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index,
-                        &s->neighbour_ids);
-    const auto all = obs.agents->agents();
-    for (int id : s->neighbour_ids) {
-      const AgentState& a = all[id];
-      neighbours.push_back({a.position, a.velocity, a.radius + padding});
+    // Human: ground truth from the harness's grid, nearest first, read from the grid's own
+    // copies (neighbours lie together there: in a large crowd that saves most cache misses).
+    obs.agents->NearestNeighbours(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index,
+                                  &s->near);
+    s->neighbour_ids.clear();
+    for (const AgentIndex::Neighbour& n : s->near) {
+      s->neighbour_ids.push_back(n.index);
+      neighbours.push_back({n.position, n.velocity, n.radius + padding});
     }
     return;
   }
   // Robot: the people its person sensor reports, in the sensor frame.
   const SensorReading* reading = obs.Reading("person");
   if (reading == nullptr || max_neighbors_ <= 0) return;
+  // The max_neighbors_ nearest in range, nearest first, equal distances in the sensor's
+  // order: kept sorted while the people arrive (a handful of slots; no sort of everybody).
   std::vector<Scratch::Seen>& seen = s->seen;
   seen.clear();
+  const auto max_seen = static_cast<std::size_t>(max_neighbors_);
   const double range_sq = neighbor_dist_ * neighbor_dist_;
   for (const PersonObservation& person : reading->people) {
     const Vec2 position = obs.frame.origin + obs.frame.VectorToWorld(person.position);
     const double dist_sq = (position - obs.self.position).squaredNorm();
     if (dist_sq >= range_sq) continue;
-    seen.push_back(
+    if (seen.size() == max_seen) {
+      if (!(dist_sq < seen.back().dist_sq)) continue;
+      seen.pop_back();
+    }
+    const auto after_equals =
+        std::upper_bound(seen.begin(), seen.end(), dist_sq,
+                         [](double d, const Scratch::Seen& one) { return d < one.dist_sq; });
+    seen.insert(
+        after_equals,
         {dist_sq, {position, obs.frame.VectorToWorld(person.velocity), person.radius + padding}});
   }
-  std::stable_sort(seen.begin(), seen.end(), [](const Scratch::Seen& a, const Scratch::Seen& b) {
-    return a.dist_sq < b.dist_sq;
-  });
-  if (static_cast<int>(seen.size()) > max_neighbors_) seen.resize(max_neighbors_);
   for (const Scratch::Seen& one : seen) neighbours.push_back(one.agent);
 }
 
@@ -259,7 +268,8 @@ GuidanceTarget OrcaPolicy::Target(const Observation& obs, double radius, double 
 Action OrcaPolicy::Decide(const Observation& obs) {
   const AgentState& self = obs.self;
   const double radius = self.radius + radius_padding_ + safety_space_;
-  UseMap(ctx_map_, radius);
+  // Reset synced the map; within an episode only the radius can differ from Reset's.
+  if (radius != map_radius_) UseMap(ctx_map_, radius);
   const double time_step = ctx_time_step_;
 
   Scratch& scratch = ThreadScratch();
@@ -272,7 +282,8 @@ Action OrcaPolicy::Decide(const Observation& obs) {
   params.time_horizon_obst = time_horizon_obst_;
   params.max_speed = self.v_pref * max_speed_factor_;
   const OrcaAgent me{self.position, self.velocity, radius};
-  return Action{ComputeOrcaVelocity(me, scratch.neighbours, obstacles_, params, pref, time_step)};
+  return Action{ComputeOrcaVelocity(me, scratch.neighbours, obstacles_, params, pref, time_step,
+                                    &scratch.solve)};
 }
 
 }  // namespace crowdsim::orca

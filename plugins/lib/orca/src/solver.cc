@@ -34,8 +34,10 @@ OrcaLine ShiftedLine(const Vec2& point, const Vec2& direction, double offset) {
 }
 
 void AddObstacleLines(const OrcaAgent& self, const OrcaObstacles& obstacles,
-                      const OrcaParams& params, std::vector<OrcaLine>* lines) {
-  thread_local std::vector<ObstacleNeighbor> near;
+                      const OrcaParams& params, std::vector<ObstacleNeighbor>* near_scratch,
+                      std::vector<OrcaLine>* lines) {
+  if (obstacles.empty()) return;
+  std::vector<ObstacleNeighbor>& near = *near_scratch;
   obstacles.Query(self.position, ObstacleRange(params, self.radius), &near);
   if (near.empty()) return;
 
@@ -199,23 +201,41 @@ void AddAgentLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
   }
 }
 
+void FillLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
+               const OrcaObstacles& obstacles, const OrcaParams& params, double time_step,
+               std::vector<ObstacleNeighbor>* near_scratch, std::vector<OrcaLine>* lines,
+               std::size_t* num_obstacle_lines) {
+  lines->clear();
+  AddObstacleLines(self, obstacles, params, near_scratch, lines);
+  *num_obstacle_lines = lines->size();
+  AddAgentLines(self, neighbours, params, time_step, lines);
+}
+
 }  // namespace
 
 void BuildOrcaLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
                     const OrcaObstacles& obstacles, const OrcaParams& params, double time_step,
                     std::vector<OrcaLine>* lines, std::size_t* num_obstacle_lines) {
-  lines->clear();
-  AddObstacleLines(self, obstacles, params, lines);
-  *num_obstacle_lines = lines->size();
-  AddAgentLines(self, neighbours, params, time_step, lines);
+  std::vector<ObstacleNeighbor> near;
+  FillLines(self, neighbours, obstacles, params, time_step, &near, lines, num_obstacle_lines);
 }
 
 Vec2 ComputeOrcaVelocity(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
                          const OrcaObstacles& obstacles, const OrcaParams& params,
                          const Vec2& pref_velocity, double time_step, OrcaSolveInfo* info) {
-  thread_local std::vector<OrcaLine> lines;
+  thread_local OrcaSolveScratch scratch;
+  return ComputeOrcaVelocity(self, neighbours, obstacles, params, pref_velocity, time_step,
+                             &scratch, info);
+}
+
+Vec2 ComputeOrcaVelocity(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
+                         const OrcaObstacles& obstacles, const OrcaParams& params,
+                         const Vec2& pref_velocity, double time_step, OrcaSolveScratch* scratch,
+                         OrcaSolveInfo* info) {
+  const std::vector<OrcaLine>& lines = scratch->lines;
   std::size_t num_obstacle_lines = 0;
-  BuildOrcaLines(self, neighbours, obstacles, params, time_step, &lines, &num_obstacle_lines);
+  FillLines(self, neighbours, obstacles, params, time_step, &scratch->near, &scratch->lines,
+            &num_obstacle_lines);
   Vec2 result = Vec2::Zero();
   const std::size_t fail =
       SolveLinearProgram2(lines, params.max_speed, pref_velocity, false, &result);

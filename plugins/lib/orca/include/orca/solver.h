@@ -47,11 +47,25 @@ struct OrcaSolveInfo {
   bool feasible = true;
 };
 
+/// What a solve gathers and drops (reused, so that a solve allocates nothing).
+struct OrcaSolveScratch {
+  std::vector<ObstacleNeighbor> near;
+  std::vector<OrcaLine> lines;
+};
+
 /// The new velocity (m/s) of `self`. `neighbours` nearest first (RVO2 keeps the 10 nearest
-/// within 10-15 m); `time_step` (s, > 0) sets how fast overlapping agents separate.
+/// within 10-15 m); `time_step` (s, > 0) sets how fast overlapping agents separate. Uses a
+/// scratch of the calling thread.
 Vec2 ComputeOrcaVelocity(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
                          const OrcaObstacles& obstacles, const OrcaParams& params,
                          const Vec2& pref_velocity, double time_step,
+                         OrcaSolveInfo* info = nullptr);
+
+/// The same with the caller's scratch: a caller that keeps one (a policy's per-thread
+/// scratch) spares the thread-local lookups, which cost calls in a plugin.
+Vec2 ComputeOrcaVelocity(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
+                         const OrcaObstacles& obstacles, const OrcaParams& params,
+                         const Vec2& pref_velocity, double time_step, OrcaSolveScratch* scratch,
                          OrcaSolveInfo* info = nullptr);
 
 }  // namespace crowdsim::orca
