@@ -23,12 +23,16 @@ void TestSim::Step() {
   new_velocities_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const SimAgent& a = agents_[i];
-    index_.Nearest(a.state.position, a.neighbor_dist, a.max_neighbors, static_cast<int>(i), &ids_);
+    // As the orca plugin does it: the index's grid-ordered records, the caller's scratch.
+    index_.NearestNeighbours(a.state.position, a.neighbor_dist, a.max_neighbors,
+                             static_cast<int>(i), &near_);
     neighbours_.clear();
-    for (int id : ids_) neighbours_.push_back(agents_[id].state);
+    for (const AgentIndex::Neighbour& n : near_) {
+      neighbours_.push_back({n.position, n.velocity, n.radius});
+    }
     OrcaSolveInfo info;
     new_velocities_[i] = ComputeOrcaVelocity(a.state, neighbours_, obstacles_, a.params,
-                                             a.pref_velocity, time_step_, &info);
+                                             a.pref_velocity, time_step_, &solve_, &info);
     agents_[i].feasible = info.feasible;
   }
   for (std::size_t i = 0; i < n; ++i) {

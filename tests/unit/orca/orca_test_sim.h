@@ -49,8 +49,9 @@ class TestSim {
   // Scratch reused every step.
   std::vector<AgentState> snapshot_;
   AgentIndex index_;
-  std::vector<int> ids_;
+  std::vector<AgentIndex::Neighbour> near_;
   std::vector<OrcaAgent> neighbours_;
+  OrcaSolveScratch solve_;
   std::vector<Vec2> new_velocities_;
 };
 
