@@ -9,15 +9,16 @@ namespace crowdsim {
 
 namespace {
 
+struct Hit {
+  double d2;
+  int i;
+};
+
 // Nearest first, ties by index: a strict total order, so the k best are one exact set.
-template <typename Hit>
-inline bool Less(const Hit& a, const Hit& b) {
-  return a.d2 < b.d2 || (a.d2 == b.d2 && a.index < b.index);
-}
+inline bool Less(const Hit& a, const Hit& b) { return a.d2 < b.d2 || (a.d2 == b.d2 && a.i < b.i); }
 
 // The k best hits so far, kept sorted nearest first in caller-provided slots (k is small:
 // ORCA's 10 neighbours, where inserting into a short sorted array beats a heap).
-template <typename Hit>
 class KBest {
  public:
   KBest(Hit* slots, int k) : slots_(slots), k_(k) {}
@@ -33,9 +34,8 @@ class KBest {
     slots_[j] = h;
     if (n_ == k_) bound_ = slots_[n_ - 1].d2;
   }
-  template <typename Emit>
-  void ForEach(Emit emit) const {
-    for (int k = 0; k < n_; ++k) emit(slots_[k]);
+  void Write(std::vector<int>* out) const {
+    for (int k = 0; k < n_; ++k) out->push_back(slots_[k].i);
   }
 
  private:
@@ -55,33 +55,24 @@ inline double GapTo(double x, double lo, double hi, double margin) {
 
 }  // namespace
 
-void AgentIndex::Resize(std::size_t n) {
-  order_.resize(n);
-  position_.resize(n);
-  velocity_.resize(n);
-  radius_.resize(n);
-}
-
-void AgentIndex::Place(std::span<const AgentState> agents, std::size_t i, std::size_t slot) {
-  order_[slot] = static_cast<int>(i);
-  position_[slot] = agents[i].position;
-  velocity_[slot] = agents[i].velocity;
-  radius_[slot] = agents[i].radius;
-}
-
 void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
   agents_ = agents;
   cell_ = cell_size;
   if (agents.empty()) {
     nx_ = ny_ = 0;
     cell_start_.assign(1, 0);
-    Resize(0);
+    order_.clear();
+    position_.clear();
     return;
   }
   if (agents.size() <= kScanAllUpTo) {
     // Nearest offers every agent of a crowd this small: no grid, the agents in their order.
-    Resize(agents.size());
-    for (size_t i = 0; i < agents.size(); ++i) Place(agents, i, i);
+    order_.resize(agents.size());
+    position_.resize(agents.size());
+    for (size_t i = 0; i < agents.size(); ++i) {
+      order_[i] = static_cast<int>(i);
+      position_[i] = agents[i].position;
+    }
     return;
   }
   Vec2 lo = agents[0].position, hi = agents[0].position;
@@ -111,17 +102,21 @@ void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
     ++cell_start_[cell_of_[i] + 1];
   }
   for (int c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
-  Resize(agents.size());
+  order_.resize(agents.size());
+  position_.resize(agents.size());
   // Counting sort: each agent goes to the next free slot of its cell (cell_start_[c] runs
   // to the end of cell c), then the starts move back one cell.
-  for (size_t i = 0; i < agents.size(); ++i) Place(agents, i, cell_start_[cell_of_[i]]++);
+  for (size_t i = 0; i < agents.size(); ++i) {
+    const int k = cell_start_[cell_of_[i]]++;
+    order_[k] = static_cast<int>(i);
+    position_[k] = agents[i].position;
+  }
   for (int c = cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
   cell_start_[0] = 0;
 }
 
-template <typename Emit>
-void AgentIndex::SearchFew(const Vec2& p, double range_sq, int max_count, int exclude,
-                           Emit emit) const {
+void AgentIndex::NearestOfFew(const Vec2& p, double range_sq, int max_count, int exclude,
+                              std::vector<int>* out) const {
   // A small crowd (the paper's five humans and the robot): every agent is looked at, in index
   // order (Rebuild keeps that order for crowds this small), so an agent never passes one at
   // the same distance and the k best come out as the grid search would give them.
@@ -138,30 +133,31 @@ void AgentIndex::SearchFew(const Vec2& p, double range_sq, int max_count, int ex
     }
     int j = n++;
     for (; j > 0 && d2 < slots[j - 1].d2; --j) slots[j] = slots[j - 1];
-    slots[j] = {d2, i, i};
+    slots[j] = {d2, i};
   }
-  for (int j = 0; j < n; ++j) emit(slots[j]);
+  for (int j = 0; j < n; ++j) out->push_back(slots[j].i);
 }
 
-template <typename Emit>
-void AgentIndex::Search(const Vec2& p, double range, int max_count, int exclude, Emit emit) const {
+void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude,
+                         std::vector<int>* out) const {
+  out->clear();
   if (agents_.empty() || max_count <= 0) return;
   const double range_sq = range * range;
   if (position_.size() <= kScanAllUpTo) {
-    SearchFew(p, range_sq, max_count, exclude, emit);
+    NearestOfFew(p, range_sq, max_count, exclude, out);
     return;
   }
   constexpr int kOnStack = 32;
   Hit stack_slots[kOnStack];
   std::vector<Hit> heap_slots(max_count > kOnStack ? max_count : 0);
-  KBest<Hit> best(max_count > kOnStack ? heap_slots.data() : stack_slots, max_count);
+  KBest best(max_count > kOnStack ? heap_slots.data() : stack_slots, max_count);
 
   // Offers the agent in slot k of the cell-sorted arrays if it is in range.
   const auto offer = [&](int k) {
     const double d2 = (position_[k] - p).squaredNorm();
     if (d2 >= range_sq) return;
     const int i = order_[k];
-    if (i != exclude) best.Offer({d2, i, k});
+    if (i != exclude) best.Offer({d2, i});
   };
   const int x0 = std::max(0, static_cast<int>(std::floor((p.x() - range - origin_.x()) / cell_)));
   const int x1 =
@@ -215,21 +211,7 @@ void AgentIndex::Search(const Vec2& p, double range, int max_count, int exclude,
       }
     }
   }
-  best.ForEach(emit);
-}
-
-void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude,
-                         std::vector<int>* out) const {
-  out->clear();
-  Search(p, range, max_count, exclude, [out](const Hit& h) { out->push_back(h.index); });
-}
-
-void AgentIndex::NearestNeighbours(const Vec2& p, double range, int max_count, int exclude,
-                                   std::vector<Neighbour>* out) const {
-  out->clear();
-  Search(p, range, max_count, exclude, [this, out](const Hit& h) {
-    out->push_back({h.index, position_[h.slot], velocity_[h.slot], radius_[h.slot]});
-  });
+  best.Write(out);
 }
 
 }  // namespace crowdsim

@@ -202,14 +202,13 @@ void OrcaPolicy::GatherNeighbours(const Observation& obs, Scratch* s) const {
   neighbours.clear();
   const double padding = radius_padding_ + safety_space_;
   if (obs.agents != nullptr) {
-    // Human: ground truth from the harness's grid, nearest first, read from the grid's own
-    // copies (neighbours lie together there: in a large crowd that saves most cache misses).
-    obs.agents->NearestNeighbours(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index,
-                                  &s->near);
-    s->neighbour_ids.clear();
-    for (const AgentIndex::Neighbour& n : s->near) {
-      s->neighbour_ids.push_back(n.index);
-      neighbours.push_back({n.position, n.velocity, n.radius + padding});
+    // Human: ground truth from the harness's grid, nearest first.
+    obs.agents->Nearest(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index,
+                        &s->neighbour_ids);
+    const auto all = obs.agents->agents();
+    for (int id : s->neighbour_ids) {
+      const AgentState& a = all[id];
+      neighbours.push_back({a.position, a.velocity, a.radius + padding});
     }
     return;
   }

@@ -7,7 +7,6 @@
 #include <memory>
 #include <vector>
 
-#include "crowdsim/agent_index.h"
 #include "crowdsim/params.h"
 #include "crowdsim/policy.h"
 #include "orca/guidance.h"
@@ -34,7 +33,6 @@ class OrcaPolicy final : public Policy {
   /// What one decision gathers and drops: one per thread, not per policy, so that a crowd of
   /// a thousand policies writes its neighbours into memory that is still in cache.
   struct Scratch {
-    std::vector<AgentIndex::Neighbour> near;  ///< humans: what the index gives
     std::vector<OrcaAgent> neighbours;
     std::vector<int> neighbour_ids;  ///< humans: the neighbours' indices in obs.agents
     std::vector<YieldNeighbour> yield_neighbours;

@@ -172,38 +172,5 @@ TEST(AgentIndex, EmptyAndSingle) {
   EXPECT_EQ(out, std::vector<int>{0});
 }
 
-// NearestNeighbours gives Nearest's agents in Nearest's order, each with its own position,
-// velocity and radius (copied in the grid's order, so a mix-up of slots would show), for small
-// crowds (no grid) and large ones.
-TEST(AgentIndex, NearestNeighboursAreNearestsAgentsWithTheirState) {
-  Rng rng(29);
-  for (const int n : {6, 16, 17, 300}) {
-    std::vector<AgentState> agents(n);
-    for (auto& a : agents) {
-      a.position = Vec2(rng.Uniform(-20, 20), rng.Uniform(-20, 20));
-      a.velocity = Vec2(rng.Uniform(-1, 1), rng.Uniform(-1, 1));
-      a.radius = rng.Uniform(0.2, 0.5);
-    }
-    AgentIndex index;
-    index.Rebuild(agents);
-    std::vector<int> ids;
-    std::vector<AgentIndex::Neighbour> near{{}};
-    for (int q = 0; q < 40; ++q) {
-      const int self = static_cast<int>(rng.Below(n));
-      const double range = rng.Uniform(1, 15);
-      index.Nearest(agents[self].position, range, 10, self, &ids);
-      index.NearestNeighbours(agents[self].position, range, 10, self, &near);
-      ASSERT_EQ(near.size(), ids.size()) << n << " agents, query " << q;
-      for (size_t k = 0; k < ids.size(); ++k) {
-        const AgentState& a = agents[ids[k]];
-        EXPECT_EQ(near[k].index, ids[k]);
-        EXPECT_EQ(near[k].position, a.position);
-        EXPECT_EQ(near[k].velocity, a.velocity);
-        EXPECT_EQ(near[k].radius, a.radius);
-      }
-    }
-  }
-}
-
 }  // namespace
 }  // namespace crowdsim

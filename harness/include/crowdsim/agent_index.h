@@ -22,33 +22,10 @@ class AgentIndex {
   void Nearest(const Vec2& p, double range, int max_count, int exclude,
                std::vector<int>* out) const;
 
-  /// What a collision-avoidance policy reads of a neighbour, copied at Rebuild in the grid's
-  /// order: neighbours lie near each other there, where their AgentStates lie anywhere.
-  struct Neighbour {
-    int index = -1;  ///< in agents()
-    Vec2 position = Vec2::Zero();
-    Vec2 velocity = Vec2::Zero();
-    double radius = 0.0;
-  };
-  /// The agents Nearest gives, in its order, as Neighbour records.
-  void NearestNeighbours(const Vec2& p, double range, int max_count, int exclude,
-                         std::vector<Neighbour>* out) const;
-
  private:
-  struct Hit {
-    double d2;
-    int index;  // in agents_
-    int slot;   // in the grid-ordered arrays
-  };
-  /// The up to `max_count` nearest as hits, nearest first, each handed to `emit`.
-  template <typename Emit>
-  void Search(const Vec2& p, double range, int max_count, int exclude, Emit emit) const;
-  /// Search for a crowd small enough to have no grid (`range_sq`: range squared).
-  template <typename Emit>
-  void SearchFew(const Vec2& p, double range_sq, int max_count, int exclude, Emit emit) const;
-  void Resize(std::size_t n);
-  /// Puts agent i into slot `slot` of the grid-ordered arrays.
-  void Place(std::span<const AgentState> agents, std::size_t i, std::size_t slot);
+  /// Nearest for a crowd small enough to have no grid (`range_sq`: range squared).
+  void NearestOfFew(const Vec2& p, double range_sq, int max_count, int exclude,
+                    std::vector<int>* out) const;
 
   std::span<const AgentState> agents_;
   double cell_ = 2.0;
@@ -58,8 +35,6 @@ class AgentIndex {
   std::vector<int> cell_start_;  // CSR layout: agents of cell c are order_[start[c]..start[c+1])
   std::vector<int> order_;
   std::vector<Vec2> position_;  // position_[k] = agents_[order_[k]].position: cells contiguous
-  std::vector<Vec2> velocity_;  // the same order
-  std::vector<double> radius_;  // the same order
   std::vector<int> cell_of_;    // Rebuild's scratch
 };
 

@@ -18,7 +18,7 @@ namespace crowdsim {
 
 /// Bump when any interface or this descriptor changes layout.
 /// 2: Observation lost time_step and map; 3: the descriptor's data_files;
-/// 4: PolicyNeeds::heading_frame, AgentIndex::NearestNeighbours.
+/// 4: PolicyNeeds::heading_frame.
 inline constexpr std::uint32_t kPluginAbiVersion = 4;
 
 /// Name of the exported alias.

@@ -23,14 +23,10 @@ void TestSim::Step() {
   new_velocities_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const SimAgent& a = agents_[i];
-    // As the orca plugin does it: the index's grid-ordered records, the caller's scratch.
-    index_.NearestNeighbours(a.state.position, a.neighbor_dist, a.max_neighbors,
-                             static_cast<int>(i), &near_);
+    index_.Nearest(a.state.position, a.neighbor_dist, a.max_neighbors, static_cast<int>(i), &ids_);
     neighbours_.clear();
-    for (const AgentIndex::Neighbour& n : near_) {
-      neighbours_.push_back({n.position, n.velocity, n.radius});
-    }
-    OrcaSolveInfo info;
+    for (int id : ids_) neighbours_.push_back(agents_[id].state);
+    OrcaSolveInfo info;  // the solve with the caller's scratch, as the orca plugin's
     new_velocities_[i] = ComputeOrcaVelocity(a.state, neighbours_, obstacles_, a.params,
                                              a.pref_velocity, time_step_, &solve_, &info);
     agents_[i].feasible = info.feasible;

@@ -49,7 +49,7 @@ class TestSim {
   // Scratch reused every step.
   std::vector<AgentState> snapshot_;
   AgentIndex index_;
-  std::vector<AgentIndex::Neighbour> near_;
+  std::vector<int> ids_;
   std::vector<OrcaAgent> neighbours_;
   OrcaSolveScratch solve_;
   std::vector<Vec2> new_velocities_;
