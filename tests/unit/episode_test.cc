@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "scripted.h"
 
@@ -36,25 +37,40 @@ TEST(Episode, StraightRunSucceedsAtTheExpectedTime) {
   EXPECT_DOUBLE_EQ(r.trajectory.back().time, 8.0);
 }
 
-/// Records what Reset handed it; asks for the map when told to.
-class ContextRecorder final : public Policy {
+/// Needs with only `map` or only `heading_frame` set.
+PolicyNeeds NeedsMap(bool map) {
+  PolicyNeeds needs;
+  needs.map = map;
+  return needs;
+}
+PolicyNeeds NeedsHeadingFrame(bool heading_frame) {
+  PolicyNeeds needs;
+  needs.heading_frame = heading_frame;
+  return needs;
+}
+
+/// Declares the needs it is given; records what Reset handed it and the frame of its last
+/// observation.
+class RecordingPolicy final : public Policy {
  public:
-  explicit ContextRecorder(bool wants_map) : wants_map_(wants_map) {}
-  PolicyNeeds Needs() const override {
-    PolicyNeeds needs;
-    needs.map = wants_map_;
-    return needs;
-  }
+  explicit RecordingPolicy(PolicyNeeds needs) : needs_(std::move(needs)) {}
+  PolicyNeeds Needs() const override { return needs_; }
   void Reset(const EpisodeContext& ctx) override {
     map = ctx.map;
     time_step = ctx.sim.time_step;
   }
-  Action Decide(const Observation&) override { return Action{}; }
+  Action Decide(const Observation& obs) override {
+    frame = obs.frame;
+    position = obs.self.position;
+    return Action{Vec2::Zero()};
+  }
   const StaticMap* map = nullptr;
   double time_step = 0.0;  ///< 0 until Reset
+  Frame frame;
+  Vec2 position = Vec2::Zero();
 
  private:
-  bool wants_map_;
+  PolicyNeeds needs_;
 };
 
 // The episode's constants reach a policy through Reset alone, and the map only where
@@ -65,7 +81,7 @@ TEST(Episode, ResetGivesTheMapOnlyToPoliciesThatNeedIt) {
   SimConfig sim;
   sim.time_step = 0.1;
   for (const bool robot_wants : {false, true}) {
-    ContextRecorder robot(robot_wants), blind(false), seeing(true);
+    RecordingPolicy robot(NeedsMap(robot_wants)), blind(NeedsMap(false)), seeing(NeedsMap(true));
     EpisodeAgents agents{&robot, {&blind, &seeing}, {}};
     Episode ep(sc, sim, agents);
     EXPECT_EQ(robot.map, robot_wants ? sc.map.get() : nullptr);
@@ -277,34 +293,13 @@ TEST(Episode, InALargeCrowdTheLowestFailingHumanIsReported) {
       << ep.result().error;
 }
 
-// Records the frame of its observations.
-class FrameRecorder final : public Policy {
- public:
-  explicit FrameRecorder(bool heading_frame) : heading_frame_(heading_frame) {}
-  PolicyNeeds Needs() const override {
-    PolicyNeeds needs;
-    needs.heading_frame = heading_frame_;
-    return needs;
-  }
-  Action Decide(const Observation& obs) override {
-    frame = obs.frame;
-    position = obs.self.position;
-    return Action{Vec2::Zero()};
-  }
-  Frame frame;
-  Vec2 position = Vec2::Zero();
-
- private:
-  bool heading_frame_;
-};
-
 // A human's frame turns towards its goal unless its policy declines the heading frame: then
 // it is world-aligned at the human (the robot's frame turns in either case).
 TEST(Episode, AHumanPolicyWithoutHeadingFrameGetsTheWorldAlignedFrame) {
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4),
                                    {{Vec2(-3, 0), Vec2(-3, 3)}, {Vec2(3, 2), Vec2(3, 5)}});
   ConstantVelocityPolicy robot(Vec2(0, 1.0));
-  FrameRecorder turned(true), world(false);
+  RecordingPolicy turned(NeedsHeadingFrame(true)), world(NeedsHeadingFrame(false));
   EpisodeAgents agents{&robot, {&turned, &world}, {}};
   Episode ep(sc, SimConfig{}, agents);
   ep.Step();
