@@ -3,6 +3,7 @@
 #include <btBulletCollisionCommon.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <mutex>
 
@@ -189,7 +190,12 @@ struct CollisionWorld::Impl {
   std::unique_ptr<BulletReferenceWorld> reference;
 };
 
-CollisionWorld::CollisionWorld(std::shared_ptr<const StaticMap> map) : map_(std::move(map)) {
+namespace {
+std::atomic<std::uint64_t> next_serial{1};
+}  // namespace
+
+CollisionWorld::CollisionWorld(std::shared_ptr<const StaticMap> map)
+    : map_(std::move(map)), serial_(next_serial.fetch_add(1, std::memory_order_relaxed)) {
   // Without rectangles there is nothing to cull: no Bullet broadphase at all, and every
   // query answers "free".
   if (!map_->rectangles.empty()) impl_ = std::make_unique<Impl>(map_->rectangles);

@@ -3,6 +3,7 @@
 // passed as discs per query (few, moving every step and per lookahead candidate).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -26,6 +27,10 @@ class CollisionWorld {
   CollisionWorld& operator=(const CollisionWorld&) = delete;
 
   const StaticMap& map() const { return *map_; }
+
+  /// Unique within the process and never reused (unlike an address): a sensor may key data it
+  /// derives from the map (e.g. route's distance field) on it.
+  std::uint64_t serial() const { return serial_; }
 
   /// Indices of rectangles whose box overlaps `box` (Bullet broadphase aabbTest).
   void QueryRects(const Rect& box, std::vector<int>* out) const;
@@ -58,6 +63,7 @@ class CollisionWorld {
  private:
   struct Impl;
   std::shared_ptr<const StaticMap> map_;
+  std::uint64_t serial_;
   std::unique_ptr<Impl> impl_;  // null when the map has no rectangles
 };
 

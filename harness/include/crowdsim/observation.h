@@ -22,13 +22,15 @@ struct PersonObservation {
 };
 
 /// The output of one sensor. A person sensor fills `people`; a range sensor fills `ranges`
-/// and `angles` (beam angles in the sensor frame, rad) and `max_range`.
+/// and `angles` (beam angles in the sensor frame, rad) and `max_range`; any other sensor
+/// fills `values`, a fixed-length feature vector its README documents (e.g. route).
 struct SensorReading {
   std::string sensor;  ///< the sensor's plugin name (e.g. "lidar2d", "person")
   std::vector<PersonObservation> people;
   std::vector<double> ranges;  ///< m, max_range when nothing is hit
   std::vector<double> angles;  ///< rad, relative to the frame's x axis
   double max_range = 0.0;
+  std::vector<double> values;  ///< other sensors' features, sensor frame where spatial
 };
 
 /// Everything one policy receives at one decision.

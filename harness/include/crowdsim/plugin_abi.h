@@ -18,8 +18,8 @@ namespace crowdsim {
 
 /// Bump when any interface or this descriptor changes layout.
 /// 2: Observation lost time_step and map; 3: the descriptor's data_files;
-/// 4: PolicyNeeds::heading_frame.
-inline constexpr std::uint32_t kPluginAbiVersion = 4;
+/// 4: PolicyNeeds::heading_frame; 5: SensorReading::values, CollisionWorld::serial.
+inline constexpr std::uint32_t kPluginAbiVersion = 5;
 
 /// Name of the exported alias.
 inline constexpr const char* kPluginAliasName = "crowdsim_plugin_v1";

@@ -22,7 +22,9 @@ class Sensor {
  public:
   virtual ~Sensor();
   /// Fills `out` (its `sensor` name is set by the harness). Must be thread-compatible:
-  /// const, no hidden mutable state, so lookahead can call it freely.
+  /// const, no hidden mutable state, so lookahead can call it freely. A cache of data that is
+  /// a pure function of the input (e.g. keyed on CollisionWorld::serial and the goal) is
+  /// allowed when it is locked and changes no result.
   virtual void Sense(const SenseInput& in, SensorReading* out) const = 0;
 };
 

@@ -3,6 +3,12 @@
 #include <stdexcept>
 
 namespace crowdsim::value_rl {
+namespace {
+
+/// Appended to a sensor set: the route sensor's reading joins the self state.
+constexpr const char* kRouteSuffix = "+route";
+
+}  // namespace
 
 const char* ModelName(Model m) { return m == Model::kCadrl ? "cadrl" : "sarl"; }
 
@@ -18,10 +24,15 @@ const char* SensorSetName(SensorSet s) {
   return "unknown";
 }
 
-std::vector<std::string> SensorPlugins(SensorSet s) {
+std::string SensorsLabel(const ValueRlConfig& c) {
+  return std::string(SensorSetName(c.sensors)) + (c.route ? kRouteSuffix : "");
+}
+
+std::vector<std::string> SensorPlugins(const ValueRlConfig& c) {
   std::vector<std::string> names;
-  if (UsesLidar(s)) names.push_back("lidar2d");
-  if (UsesPerson(s)) names.push_back("person");
+  if (UsesLidar(c.sensors)) names.push_back("lidar2d");
+  if (UsesPerson(c.sensors)) names.push_back("person");
+  if (c.route) names.push_back("route");
   return names;
 }
 
@@ -32,8 +43,9 @@ ParamSchema Schema(Model /*model: both families take the same parameters*/) {
        std::string("person"),
        0,
        0,
-       {"person", "lidar", "lidar+person"},
-       "readings that enter the network (the row must configure the matching sensors)"},
+       {"person", "lidar", "lidar+person", "person+route", "lidar+route", "lidar+person+route"},
+       "readings that enter the network (the row must configure the matching sensors; "
+       "+route: the route sensor's path distance and waypoint too, beyond the paper)"},
       {"weights",
        ParamType::kString,
        std::string(""),
@@ -89,7 +101,12 @@ ParamSchema Schema(Model /*model: both families take the same parameters*/) {
 ValueRlConfig ConfigFromParams(Model model, const Params& params) {
   ValueRlConfig c;
   c.model = model;
-  const std::string& s = params.GetString("sensors");
+  const std::string& given = params.GetString("sensors");
+  std::string s = given;
+  if (s.ends_with(kRouteSuffix)) {
+    c.route = true;
+    s.resize(s.size() - std::string_view(kRouteSuffix).size());
+  }
   if (s == "person") {
     c.sensors = SensorSet::kPerson;
   } else if (s == "lidar") {
@@ -97,8 +114,9 @@ ValueRlConfig ConfigFromParams(Model model, const Params& params) {
   } else if (s == "lidar+person") {
     c.sensors = SensorSet::kLidarPerson;
   } else {
-    throw std::invalid_argument(std::string(ModelName(model)) + ": sensors '" + s +
-                                "' is not valid; valid: person, lidar, lidar+person");
+    throw std::invalid_argument(
+        std::string(ModelName(model)) + ": sensors '" + given +
+        "' is not valid; valid: person, lidar, lidar+person, each optionally +route");
   }
   c.lidar_beams = static_cast<int>(params.GetInt("lidar_beams"));
   c.speed_samples = static_cast<int>(params.GetInt("speed_samples"));

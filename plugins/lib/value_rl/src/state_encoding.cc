@@ -42,8 +42,16 @@ EncodedState EncodeState(const ValueRlConfig& config, const AgentState& robot, c
                          std::span<const SensorReading> readings) {
   EncodedState state;
   std::vector<float>& v = state.values;
-  v.reserve(kSelfDim + config.LidarInputs() + 6 * kHumanDim);
+  v.reserve(SelfInputs(config) + config.LidarInputs() + 6 * kHumanDim);
   AppendSelf(robot, frame, &v);
+  if (config.route) {
+    const SensorReading& route = Find(readings, "route");
+    if (static_cast<int>(route.values.size()) != kRouteDim) {
+      throw std::runtime_error("the route reading has " + std::to_string(route.values.size()) +
+                               " values, expected " + std::to_string(kRouteDim));
+    }
+    for (double x : route.values) v.push_back(static_cast<float>(x));
+  }
   if (UsesLidar(config.sensors)) {
     const SensorReading& lidar = Find(readings, "lidar2d");
     if (static_cast<int>(lidar.ranges.size()) != config.lidar_beams) {
@@ -67,7 +75,8 @@ EncodedState EncodeState(const ValueRlConfig& config, const AgentState& robot, c
 }
 
 int HumanRows(const ValueRlConfig& config, const EncodedState& state) {
-  const int rest = static_cast<int>(state.values.size()) - kSelfDim - config.LidarInputs();
+  const int rest =
+      static_cast<int>(state.values.size()) - SelfInputs(config) - config.LidarInputs();
   return rest > 0 ? rest / kHumanDim : 0;
 }
 

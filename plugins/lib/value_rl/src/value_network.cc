@@ -25,21 +25,22 @@ torch::nn::Sequential Mlp(int64_t in, std::initializer_list<int64_t> dims, bool 
 StateBatch MakeBatch(const ValueRlConfig& config, std::span<const EncodedState* const> states) {
   const int64_t b = static_cast<int64_t>(states.size());
   const int lidar = config.LidarInputs();
+  const int self_dim = SelfInputs(config);
   int64_t rows = 0;
   for (const auto* s : states) rows = std::max<int64_t>(rows, HumanRows(config, *s));
-  std::vector<float> self(b * kSelfDim), lid(b * lidar), humans(b * rows * kHumanDim, 0.0f);
+  std::vector<float> self(b * self_dim), lid(b * lidar), humans(b * rows * kHumanDim, 0.0f);
   std::vector<uint8_t> mask(b * rows, 0);
   for (int64_t i = 0; i < b; ++i) {
     const float* v = states[i]->values.data();
-    std::copy(v, v + kSelfDim, self.data() + i * kSelfDim);
-    std::copy(v + kSelfDim, v + kSelfDim + lidar, lid.data() + i * lidar);
+    std::copy(v, v + self_dim, self.data() + i * self_dim);
+    std::copy(v + self_dim, v + self_dim + lidar, lid.data() + i * lidar);
     const int n = HumanRows(config, *states[i]);
-    std::copy(v + kSelfDim + lidar, v + kSelfDim + lidar + n * kHumanDim,
+    std::copy(v + self_dim + lidar, v + self_dim + lidar + n * kHumanDim,
               humans.data() + i * rows * kHumanDim);
     std::fill(mask.begin() + i * rows, mask.begin() + i * rows + n, 1);
   }
   StateBatch batch;
-  batch.self = torch::from_blob(self.data(), {b, kSelfDim}).clone();
+  batch.self = torch::from_blob(self.data(), {b, self_dim}).clone();
   if (lidar > 0) batch.lidar = torch::from_blob(lid.data(), {b, lidar}).clone();
   if (UsesPerson(config.sensors)) {
     batch.humans = torch::from_blob(humans.data(), {b, rows, kHumanDim}).clone();
@@ -63,10 +64,10 @@ torch::Tensor ForwardJoined(torch::nn::Sequential& mlp, const torch::Tensor& sta
 
 namespace {
 
-/// Self state joined with the lidar feature (when there is a lidar): (B, 6 [+ F]).
+/// Self state joined with the lidar feature (when there is a lidar): (B, 6 [+ 3] [+ F]).
 class SelfEncoder {
  public:
-  SelfEncoder(torch::nn::Module* owner, const ValueRlConfig& c) {
+  SelfEncoder(torch::nn::Module* owner, const ValueRlConfig& c) : dim_(SelfInputs(c)) {
     if (UsesLidar(c.sensors)) {
       lidar_ = owner->register_module(
           "lidar", Mlp(c.lidar_beams, {c.lidar_hidden, c.lidar_features}, /*last_relu=*/true));
@@ -81,7 +82,7 @@ class SelfEncoder {
 
  private:
   torch::nn::Sequential lidar_{nullptr};
-  int64_t dim_ = kSelfDim;
+  int64_t dim_;
 };
 
 /// CADRL: one value per (robot, human) pair, the minimum over humans.
@@ -111,7 +112,7 @@ class Sarl final : public ValueNetwork {
  public:
   explicit Sarl(const ValueRlConfig& c) : self_(this, c), humans_(UsesPerson(c.sensors)) {
     if (humans_) {
-      mlp1_ = register_module("mlp1", Mlp(kSelfDim + kHumanDim, {150, 100}, true));
+      mlp1_ = register_module("mlp1", Mlp(SelfInputs(c) + kHumanDim, {150, 100}, true));
       mlp2_ = register_module("mlp2", Mlp(100, {100, 50}, false));
       attention_ = register_module("attention", Mlp(200, {100, 100, 1}, false));
     }

@@ -124,7 +124,7 @@ const ValueRlConfig& ValuePolicy::config() const { return impl_->config; }
 PolicyNeeds ValuePolicy::Needs() const {
   PolicyNeeds needs;
   needs.lookahead = true;
-  needs.sensors = SensorPlugins(impl_->config.sensors);
+  needs.sensors = SensorPlugins(impl_->config);
   return needs;
 }
 
@@ -184,7 +184,7 @@ size_t EarliestBest(std::span<const float> values) {
 
 std::string ValuePolicy::Describe() const {
   const ValueRlConfig& c = impl_->config;
-  return std::string(ModelName(c.model)) + " sensors=" + SensorSetName(c.sensors) +
+  return std::string(ModelName(c.model)) + " sensors=" + SensorsLabel(c) +
          " actions=" + std::to_string(c.ActionCount()) +
          " lidar_beams=" + std::to_string(c.LidarInputs()) +
          " parameters=" + std::to_string(ParameterCount());

@@ -25,7 +25,7 @@ std::string Found(torch::serialize::InputArchive& archive, const std::string& ke
 }  // namespace
 
 WeightsMeta MetaOf(const ValueRlConfig& config) {
-  return WeightsMeta{ModelName(config.model), SensorSetName(config.sensors), config.ActionCount(),
+  return WeightsMeta{ModelName(config.model), SensorsLabel(config), config.ActionCount(),
                      config.LidarInputs()};
 }
 

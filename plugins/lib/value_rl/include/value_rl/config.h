@@ -24,9 +24,6 @@ const char* SensorSetName(SensorSet s);
 inline bool UsesPerson(SensorSet s) { return s != SensorSet::kLidar; }
 inline bool UsesLidar(SensorSet s) { return s != SensorSet::kPerson; }
 
-/// Plugin names of the sensors a sensor set reads (checked against the row's sensors).
-std::vector<std::string> SensorPlugins(SensorSet s);
-
 /// Everything a value policy is built from.
 struct ValueRlConfig {
   Model model = Model::kCadrl;
@@ -34,6 +31,7 @@ struct ValueRlConfig {
   int lidar_beams = 45;         ///< beams of the lidar reading (network input size)
   int lidar_hidden = 64;        ///< width of the lidar encoder's hidden layer
   int lidar_features = 32;      ///< size of the lidar feature joined to the self state
+  bool route = false;           ///< the route sensor's distance and waypoint join the self state
   int speed_samples = 2;        ///< speeds per direction, exponentially spaced up to v_pref
   int rotation_samples = 8;     ///< directions, evenly spaced in [0, 2 pi), world frame
   bool stop_action = false;     ///< prepend CrowdNav's stop action
@@ -46,6 +44,12 @@ struct ValueRlConfig {
   /// Lidar beams entering the network (0 without lidar).
   int LidarInputs() const { return UsesLidar(sensors) ? lidar_beams : 0; }
 };
+
+/// The `sensors` parameter as written ("lidar+person", "lidar+person+route").
+std::string SensorsLabel(const ValueRlConfig& c);
+
+/// Plugin names of the sensors the network reads (checked against the row's sensors).
+std::vector<std::string> SensorPlugins(const ValueRlConfig& c);
 
 /// The plugin parameters of `model` (both plugins share them).
 ParamSchema Schema(Model model);

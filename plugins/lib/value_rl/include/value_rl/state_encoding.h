@@ -1,6 +1,6 @@
 // The robot-centric state of CrowdNav's rotate() (reference 1.6), built from the harness's
 // sensor readings (already in the frame whose x axis points to the goal), plus the lidar.
-// Layout of an EncodedState: [self (6)] [lidar (L)] [human rows (n x 7)].
+// Layout of an EncodedState: [self (6)] [route (3), with +route] [lidar (L)] [human rows (n x 7)].
 #pragma once
 
 #include <span>
@@ -14,10 +14,14 @@
 namespace crowdsim::value_rl {
 
 inline constexpr int kSelfDim = 6;   ///< dg, v_pref, theta, radius, vx, vy
+inline constexpr int kRouteDim = 3;  ///< route distance, waypoint x, waypoint y (frame)
 inline constexpr int kHumanDim = 7;  ///< px1, py1, vx1, vy1, radius1, da, radius_sum
 /// A person model seeing nobody gets one stand-in human this far behind the robot (m),
 /// standing still: "nobody near" in the network's own terms.
 inline constexpr double kAbsentHumanDistance = 10.0;
+
+/// Width of the self state the network sees: the 6 values, plus the route's 3 with +route.
+inline int SelfInputs(const ValueRlConfig& c) { return kSelfDim + (c.route ? kRouteDim : 0); }
 
 /// Self part: dg, v_pref, theta (0: holonomic), radius, velocity in `frame`.
 void AppendSelf(const AgentState& robot, const Frame& frame, std::vector<float>* out);

@@ -14,7 +14,7 @@ namespace crowdsim::value_rl {
 /// What a weights file was trained for.
 struct WeightsMeta {
   std::string model;    ///< cadrl | sarl
-  std::string sensors;  ///< person | lidar | lidar+person
+  std::string sensors;  ///< person | lidar | lidar+person, each optionally +route
   int64_t actions = 0;
   int64_t lidar_beams = 0;  ///< 0 without lidar
 };
