@@ -95,6 +95,58 @@ TEST(StateEncodingTest, NobodySeenGivesTheFarStandIn) {
                std::runtime_error);
 }
 
+TEST(StateEncodingTest, RouteJoinsTheSelfStateBeforeTheLidar) {
+  const AgentState robot = Robot();
+  const Frame frame = Frame::Make(robot.position, robot.heading);
+  ValueRlConfig c = Config(Model::kSarl, SensorSet::kLidarPerson);
+  c.route = true;
+  c.lidar_beams = 2;
+  SensorReading lidar;
+  lidar.sensor = "lidar2d";
+  lidar.ranges = {5.0, 2.5};
+  lidar.max_range = 5.0;
+  SensorReading route;
+  route.sensor = "route";
+  route.values = {7.5, 0.6, 0.8};
+  SensorReading people;
+  people.sensor = "person";
+  people.people.push_back(Person(frame));
+  // The readings' order is the row's; the layout is the encoder's.
+  const std::vector<SensorReading> readings = {people, lidar, route};
+  const EncodedState s = EncodeState(c, robot, frame, readings);
+  ASSERT_EQ(s.values.size(), 6u + 3u + 2u + 7u);
+  EXPECT_NEAR(s.values[0], 5.0, 1e-6);  // dg stays the straight distance
+  EXPECT_FLOAT_EQ(s.values[6], 7.5f);
+  EXPECT_FLOAT_EQ(s.values[7], 0.6f);
+  EXPECT_FLOAT_EQ(s.values[8], 0.8f);
+  EXPECT_FLOAT_EQ(s.values[9], 1.0f);
+  EXPECT_FLOAT_EQ(s.values[10], 0.5f);
+  EXPECT_NEAR(s.values[11], 3.0, 1e-6);
+  EXPECT_EQ(SelfInputs(c), 9);
+  EXPECT_EQ(HumanRows(c, s), 1);
+
+  route.values = {7.5, 0.6};
+  EXPECT_THROW(EncodeState(c, robot, frame, std::vector<SensorReading>{people, lidar, route}),
+               std::runtime_error);
+  EXPECT_THROW(EncodeState(c, robot, frame, std::vector<SensorReading>{people, lidar}),
+               std::runtime_error);
+}
+
+TEST(StateEncodingTest, RouteIsASuffixOfTheSensorsParameter) {
+  const ParamSchema schema = Schema(Model::kSarl);
+  Params params = Params::Defaults(schema);
+  params.Set("sensors", std::string("lidar+person+route"));
+  const ValueRlConfig c = ConfigFromParams(Model::kSarl, params);
+  EXPECT_EQ(c.sensors, SensorSet::kLidarPerson);
+  EXPECT_TRUE(c.route);
+  EXPECT_EQ(SensorsLabel(c), "lidar+person+route");
+  EXPECT_EQ(SensorPlugins(c), (std::vector<std::string>{"lidar2d", "person", "route"}));
+  params.Set("sensors", std::string("person"));
+  const ValueRlConfig plain = ConfigFromParams(Model::kSarl, params);
+  EXPECT_FALSE(plain.route);
+  EXPECT_EQ(SensorPlugins(plain), (std::vector<std::string>{"person"}));
+}
+
 TEST(ActionSpaceTest, ExponentialSpeedsAsCrowdNav) {
   const auto two = ExponentialSpeeds(2, 1.0);
   ASSERT_EQ(two.size(), 2u);
@@ -133,6 +185,11 @@ TEST(ValueNetworkTest, ParameterCountsAsCrowdNav) {
             27401 + encoder + 32 * 150);
   EXPECT_EQ(ValuePolicy(Config(Model::kSarl, SensorSet::kLidar)).ParameterCount(),
             encoder + (38 * 150 + 150) + (150 * 100 + 100) + (100 * 100 + 100) + 101);
+  // +route: 3 more self inputs, in the self MLP of SARL's humans and in its value MLP.
+  ValueRlConfig routed = Config(Model::kSarl, SensorSet::kLidarPerson);
+  const int64_t plain = ValuePolicy(routed).ParameterCount();
+  routed.route = true;
+  EXPECT_EQ(ValuePolicy(routed).ParameterCount(), plain + 3 * 150 + 3 * 150);
 }
 
 /// Encodes one state with `n` humans spread around the robot.
