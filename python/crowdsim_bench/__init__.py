@@ -105,7 +105,8 @@ class Env(_Base):
     v_pref, heading (world frame, m, m/s, rad); `humans` (H, 5) = x, y, vx, vy, radius of the
     people the person sensor sees, in the robot's frame (x towards the goal), padded to the row's
     human count with `humans_mask` (H,) marking real rows; `lidar` (beams,) ranges in m (only
-    when the row has a range sensor). Action: a velocity (vx, vy) in m/s, world frame, or with
+    when the row has a range sensor); and under its name each sensor reporting other features
+    (`route` (3,): path distance to the goal, waypoint x, y in the robot's frame). Action: a velocity (vx, vy) in m/s, world frame, or with
     `discrete=True` an index into `actions` (CrowdNav's 81 holonomic actions). Reward: the
     harness's (success 1, collision -0.25, discomfort penalty). `terminated` on success or
     collision, `truncated` on timeout; `info["status"]` names the outcome.
@@ -139,6 +140,9 @@ class Env(_Base):
         probe = self._env.reset(0, False)
         if "lidar" in probe:
             obs_spaces["lidar"] = _box(0.0, np.inf, probe["lidar"].shape)
+        for name, value in probe.items():  # other sensors' features (route, ...)
+            if name not in obs_spaces:
+                obs_spaces[name] = _box(-np.inf, np.inf, np.shape(value))
         self.observation_space = _dict(obs_spaces)
 
     # -- Gymnasium API -----------------------------------------------------------------------

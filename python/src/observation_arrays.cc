@@ -70,6 +70,13 @@ py::dict ObservationDict(const Observation& obs, int max_humans) {
     std::copy(ranges->begin(), ranges->end(), lidar.mutable_data());
     d["lidar"] = lidar;
   }
+  // Any other sensor's features under its name (route: distance, waypoint x, y).
+  for (const SensorReading& reading : obs.readings) {
+    if (reading.values.empty()) continue;
+    py::array_t<double> values(static_cast<py::ssize_t>(reading.values.size()));
+    std::copy(reading.values.begin(), reading.values.end(), values.mutable_data());
+    d[py::str(reading.sensor)] = values;
+  }
   return d;
 }
 

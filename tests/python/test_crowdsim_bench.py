@@ -55,6 +55,20 @@ class EnvContract(unittest.TestCase):
         self.assertIn("status", info)
         self.assertAlmostEqual(float(obs2["time"]), 0.25)
 
+    def test_other_sensors_features_come_under_their_name(self):
+        env = cb.Env(QUICK, row="orca",
+                     set=["rows[orca].sensors=[person, {type: lidar2d, beams: 45}, route]"])
+        self.assertIsNone(self.env.observation_space.get("route"))
+        for seed in range(3):
+            obs, _ = env.reset(seed=seed)
+            self.assertTrue(env.observation_space.contains(obs))
+            route = obs["route"]
+            self.assertEqual(route.shape, (3,))
+            r = obs["robot"]
+            straight = math.hypot(r[4] - r[0], r[5] - r[1])
+            self.assertGreaterEqual(route[0], straight - 1e-9)  # around obstacles, never shorter
+            self.assertLessEqual(math.hypot(route[1], route[2]), 1.0 + 1e-9)  # lookahead 1 m
+
     def test_seed_selects_the_suite_episode_and_repeats_exactly(self):
         a, info_a = self.env.reset(seed=7)
         b, info_b = self.env.reset(seed=7)
