@@ -17,7 +17,8 @@ class VectorEnv:
     row (default 0); sub-environment i then plays episodes k+i, k+i+n, k+i+2n, ... whatever
     the thread count, so a batch run is reproducible. Observations are the Env's dict with a
     leading batch axis (`robot` (n, 9), `humans` (n, H, 5), `humans_mask` (n, H), `lidar`
-    (n, beams), `time` (n,)). `step(actions)` takes (n, 2) velocities (m/s, world frame) or,
+    (n, beams), `time` (n,); other sensors' features, such as `route`, are the single Env's
+    only so far). `step(actions)` takes (n, 2) velocities (m/s, world frame) or,
     with `discrete=True`, (n,) indices into `actions`, and returns obs, reward (n,),
     terminated (n,), truncated (n,), info with `status` (n,) codes into STATUS_NAMES and
     `episode` (n,). Autoreset is Gymnasium's "next step" mode: the step after a sub-environment

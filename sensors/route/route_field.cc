@@ -20,14 +20,14 @@ namespace {
 
 const double kDiagonal = std::sqrt(2.0), kKnight = std::sqrt(5.0);
 const RouteField::Move kMoves[16] = {
-    {0, 1, 1.0, {0, 0}, {0, 0}},         {1, 0, 1.0, {0, 0}, {0, 0}},
-    {0, -1, 1.0, {0, 0}, {0, 0}},        {-1, 0, 1.0, {0, 0}, {0, 0}},
-    {1, 1, kDiagonal, {0, 1}, {1, 0}},   {1, -1, kDiagonal, {0, 1}, {-1, 0}},
+    {0, 1, 1.0, {0, 0}, {0, 0}},           {1, 0, 1.0, {0, 0}, {0, 0}},
+    {0, -1, 1.0, {0, 0}, {0, 0}},          {-1, 0, 1.0, {0, 0}, {0, 0}},
+    {1, 1, kDiagonal, {0, 1}, {1, 0}},     {1, -1, kDiagonal, {0, 1}, {-1, 0}},
     {-1, -1, kDiagonal, {0, -1}, {-1, 0}}, {-1, 1, kDiagonal, {0, -1}, {1, 0}},
-    {1, 2, kKnight, {0, 1}, {1, 1}},     {2, 1, kKnight, {1, 1}, {0, 1}},
-    {-1, 2, kKnight, {0, -1}, {1, 1}},   {-2, 1, kKnight, {-1, -1}, {0, 1}},
-    {1, -2, kKnight, {0, 1}, {-1, -1}},  {2, -1, kKnight, {1, 1}, {0, -1}},
-    {-1, -2, kKnight, {0, -1}, {-1, -1}}, {-2, -1, kKnight, {-1, -1}, {0, -1}},
+    {1, 2, kKnight, {0, 1}, {1, 1}},       {2, 1, kKnight, {1, 1}, {0, 1}},
+    {-1, 2, kKnight, {0, -1}, {1, 1}},     {-2, 1, kKnight, {-1, -1}, {0, 1}},
+    {1, -2, kKnight, {0, 1}, {-1, -1}},    {2, -1, kKnight, {1, 1}, {0, -1}},
+    {-1, -2, kKnight, {0, -1}, {-1, -1}},  {-2, -1, kKnight, {-1, -1}, {0, -1}},
 };
 
 double RectDistanceSquared(const Rect& r, const Vec2& p) {
@@ -38,8 +38,7 @@ double RectDistanceSquared(const Rect& r, const Vec2& p) {
 
 }  // namespace
 
-RouteField::RouteField(const StaticMap& map, const Vec2& goal, double clearance,
-                       double resolution)
+RouteField::RouteField(const StaticMap& map, const Vec2& goal, double clearance, double resolution)
     : origin_(map.bounds.min),
       goal_(goal),
       resolution_(resolution),
@@ -53,14 +52,16 @@ RouteField::RouteField(const StaticMap& map, const Vec2& goal, double clearance,
   // Cells whose centre lies closer than `clearance` to a rectangle are blocked.
   const double c2 = clearance * clearance;
   for (const Rect& r : map.rectangles) {
-    const int c0 = std::max(0, static_cast<int>(std::ceil(
-                                   (r.min.x() - clearance - origin_.x()) / resolution - 0.5)));
-    const int c1 = std::min(cols_ - 1, static_cast<int>(std::floor(
-                                           (r.max.x() + clearance - origin_.x()) / resolution - 0.5)));
-    const int r0 = std::max(0, static_cast<int>(std::ceil(
-                                   (r.min.y() - clearance - origin_.y()) / resolution - 0.5)));
-    const int r1 = std::min(rows_ - 1, static_cast<int>(std::floor(
-                                           (r.max.y() + clearance - origin_.y()) / resolution - 0.5)));
+    const int c0 = std::max(
+        0, static_cast<int>(std::ceil((r.min.x() - clearance - origin_.x()) / resolution - 0.5)));
+    const int c1 = std::min(
+        cols_ - 1,
+        static_cast<int>(std::floor((r.max.x() + clearance - origin_.x()) / resolution - 0.5)));
+    const int r0 = std::max(
+        0, static_cast<int>(std::ceil((r.min.y() - clearance - origin_.y()) / resolution - 0.5)));
+    const int r1 = std::min(
+        rows_ - 1,
+        static_cast<int>(std::floor((r.max.y() + clearance - origin_.y()) / resolution - 0.5)));
     for (int row = r0; row <= r1; ++row) {
       for (int col = c0; col <= c1; ++col) {
         if (RectDistanceSquared(r, Centre(row, col)) < c2) free_[Index(row, col)] = 0;

@@ -32,8 +32,7 @@ RouteSensor::RouteSensor(const Params& params)
       margin_(params.GetDouble("margin")),
       lookahead_(params.GetDouble("lookahead")) {}
 
-std::shared_ptr<const RouteField> RouteSensor::Field(const SenseInput& in,
-                                                     double clearance) const {
+std::shared_ptr<const RouteField> RouteSensor::Field(const SenseInput& in, double clearance) const {
   const std::uint64_t world = in.world.serial();
   const Vec2& goal = in.robot.goal;
   {

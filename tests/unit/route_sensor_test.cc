@@ -16,8 +16,9 @@ std::shared_ptr<const StaticMap> Room(double wall_top) {
   auto map = std::make_shared<StaticMap>();
   map->name = "route_test";
   map->bounds = Rect::FromCorners(-5, -5, 5, 5);
-  map->rectangles = {Rect::FromCorners(-5.0, -5.0, 5.0, -4.9), Rect::FromCorners(-5.0, 4.9, 5.0, 5.0),
-                     Rect::FromCorners(-5.0, -5.0, -4.9, 5.0), Rect::FromCorners(4.9, -5.0, 5.0, 5.0)};
+  map->rectangles = {
+      Rect::FromCorners(-5.0, -5.0, 5.0, -4.9), Rect::FromCorners(-5.0, 4.9, 5.0, 5.0),
+      Rect::FromCorners(-5.0, -5.0, -4.9, 5.0), Rect::FromCorners(4.9, -5.0, 5.0, 5.0)};
   if (wall_top > -5.0) map->rectangles.push_back(Rect::FromCorners(-0.05, -5.0, 0.05, wall_top));
   return map;
 }
