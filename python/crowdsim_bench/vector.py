@@ -17,8 +17,8 @@ class VectorEnv:
     row (default 0); sub-environment i then plays episodes k+i, k+i+n, k+i+2n, ... whatever
     the thread count, so a batch run is reproducible. Observations are the Env's dict with a
     leading batch axis (`robot` (n, 9), `humans` (n, H, 5), `humans_mask` (n, H), `lidar`
-    (n, beams), `time` (n,); other sensors' features, such as `route`, are the single Env's
-    only so far). `step(actions)` takes (n, 2) velocities (m/s, world frame) or,
+    (n, beams), `time` (n,), other sensors' features under their name, e.g. `route` (n, 3)).
+    `step(actions)` takes (n, 2) velocities (m/s, world frame) or,
     with `discrete=True`, (n,) indices into `actions`, and returns obs, reward (n,),
     terminated (n,), truncated (n,), info with `status` (n,) codes into STATUS_NAMES and
     `episode` (n,). Autoreset is Gymnasium's "next step" mode: the step after a sub-environment
@@ -53,6 +53,10 @@ class VectorEnv:
         if self._env.beams >= 0:
             single["lidar"] = _box(0.0, np.inf, (self._env.beams,))
             batch["lidar"] = _box(0.0, np.inf, (n, self._env.beams))
+        for name, value in probe.reset(0, False).items():  # other sensors' features (route)
+            if name not in single and name != "lidar":
+                single[name] = _box(-np.inf, np.inf, np.shape(value))
+                batch[name] = _box(-np.inf, np.inf, (n,) + np.shape(value))
         self.single_observation_space = _dict(single)
         self.observation_space = _dict(batch)
 

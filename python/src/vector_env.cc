@@ -17,6 +17,9 @@ struct VectorEnv::Batch {
   py::array_t<bool> mask, terminated, truncated;
   py::array_t<std::int8_t> status;
   py::array_t<std::int64_t> episode;
+  std::vector<py::array_t<double>> features;  // VectorEnv::features_' order
+  std::vector<double*> features_p;
+  const std::vector<std::pair<std::string, int>>* feature_names = nullptr;
   double *robot_p, *humans_p, *lidar_p = nullptr, *time_p, *reward_p;
   bool *mask_p, *terminated_p, *truncated_p;
   std::int8_t* status_p;
@@ -29,6 +32,8 @@ struct VectorEnv::Batch {
     d["humans"] = humans;
     d["humans_mask"] = mask;
     if (lidar_p != nullptr) d["lidar"] = lidar;
+    for (size_t k = 0; k < features.size(); ++k)
+      d[py::str((*feature_names)[k].first)] = features[k];
     return d;
   }
 };
@@ -42,8 +47,13 @@ VectorEnv::VectorEnv(std::unique_ptr<PythonRow> row, int num_envs, int threads)
   next_episode_.assign(envs_.size(), 0);
   ended_.assign(envs_.size(), false);
   // The range sensor's beam count fixes the lidar batch's shape.
-  const std::vector<double>* ranges = FirstRanges(envs_[0]->Reset(0, false));
+  const Observation& first = envs_[0]->Reset(0, false);
+  const std::vector<double>* ranges = FirstRanges(first);
   beams_ = ranges ? static_cast<int>(ranges->size()) : -1;
+  // So do the other sensors' feature counts (route: 3).
+  for (const SensorReading& r : first.readings) {
+    if (!r.values.empty()) features_.emplace_back(r.sensor, static_cast<int>(r.values.size()));
+  }
 }
 
 VectorEnv::~VectorEnv() = default;
@@ -73,6 +83,11 @@ VectorEnv::Batch VectorEnv::MakeBatch() const {
     b.lidar = py::array_t<double>({n, py::ssize_t{beams_}});
     b.lidar_p = b.lidar.mutable_data();
   }
+  b.feature_names = &features_;
+  for (const auto& [name, size] : features_) {
+    b.features.emplace_back(std::vector<py::ssize_t>{n, py::ssize_t{size}});
+    b.features_p.push_back(b.features.back().mutable_data());
+  }
   return b;
 }
 
@@ -85,6 +100,13 @@ void VectorEnv::Write(size_t i, const Observation& obs, Batch& b) const {
     if (ranges == nullptr || static_cast<int>(ranges->size()) != beams_)
       throw std::logic_error("the range sensor's beam count changed between steps");
     std::copy(ranges->begin(), ranges->end(), b.lidar_p + i * beams_);
+  }
+  for (size_t k = 0; k < features_.size(); ++k) {
+    const auto& [name, size] = features_[k];
+    const SensorReading* r = obs.Reading(name);
+    if (r == nullptr || static_cast<int>(r->values.size()) != size)
+      throw std::logic_error("sensor '" + name + "' changed its number of values between steps");
+    std::copy(r->values.begin(), r->values.end(), b.features_p[k] + i * size);
   }
 }
 

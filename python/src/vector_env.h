@@ -49,6 +49,8 @@ class VectorEnv {
   std::vector<std::uint8_t> ended_;  // not vector<bool>: workers write neighbouring entries
   int humans_ = 0;
   int beams_ = -1;
+  /// Sensors reporting other features (SensorReading::values), with their sizes.
+  std::vector<std::pair<std::string, int>> features_;
   WorkerPool pool_;
 };
 

@@ -215,6 +215,20 @@ class VectorEnvContract(unittest.TestCase):
         discrete.reset()
         discrete.step(np.array([0, 80]))
 
+    def test_other_sensors_features_are_batched_under_their_name(self):
+        route = ["rows[orca].sensors=[person, {type: lidar2d, beams: 45}, route]"]
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=3, set=route)
+        obs, _ = venv.reset(seed=5)
+        self.assertEqual(obs["route"].shape, (3, 3))
+        self.assertTrue(venv.observation_space.contains(obs))
+        env = cb.Env(QUICK, row="orca", set=route)
+        for i in range(3):
+            single, _ = env.reset(seed=5 + i)
+            np.testing.assert_array_equal(obs["route"][i], single["route"])
+        obs, *_ = venv.step(np.zeros((3, 2)))
+        single, *_ = env.step(np.zeros(2))  # episode 7, as sub-environment 2
+        np.testing.assert_array_equal(obs["route"][2], single["route"])
+
     def test_each_sub_environment_plays_the_envs_episodes_with_next_step_autoreset(self):
         _, log = self.run_batches(threads=1)
         env = cb.Env(QUICK, row="linear")
