@@ -199,6 +199,9 @@ def export(weights: Path, out: Path, lidar_max_range: Optional[float] = None) ->
     model = str(archive.crowdsim_model)
     sensors = str(archive.crowdsim_sensors)
     beams = int(archive.crowdsim_lidar_beams)
+    if sensors.endswith("+route"):
+        raise SystemExit(f"{weights}: a {sensors} model; the torchscript plugin has no route input "
+                         "yet, so models that read the route sensor cannot be exported")
     state = {name: p.detach().clone() for name, p in archive.named_parameters()}
     hidden, features = 64, 32
     if "lidar.0.weight" in state:
