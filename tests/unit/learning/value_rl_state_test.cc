@@ -147,6 +147,31 @@ TEST(StateEncodingTest, RouteIsASuffixOfTheSensorsParameter) {
   EXPECT_EQ(SensorPlugins(plain), (std::vector<std::string>{"person"}));
 }
 
+TEST(StateEncodingTest, RoutePriorTakesItsShareOfThePathDistanceOffTheValue) {
+  ValueRlConfig c = Config(Model::kSarl, SensorSet::kPerson);
+  c.route = true;
+  c.init_seed = 7;
+  ValueRlConfig prior = c;
+  prior.route_prior = 0.05;
+  // dg, v_pref, theta, radius, vx, vy | route distance, waypoint | one human row.
+  EncodedState near, far;
+  near.values = {4.0f, 1.0f, 0.0f, 0.3f, 0.2f, 0.0f, 5.0f, 1.0f,
+                 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.3f, 1.4f, 0.6f};
+  far = near;
+  far.values[6] = 12.0f;
+  const std::vector<const EncodedState*> states = {&near, &far};
+  const std::vector<float> without = ValuePolicy(c).Values(states);
+  const std::vector<float> with = ValuePolicy(prior).Values(states);
+  EXPECT_NEAR(with[0], without[0] - 0.05 * 5.0, 1e-5);
+  EXPECT_NEAR(with[1], without[1] - 0.05 * 12.0, 1e-5);
+  // The prior needs the route in the state.
+  Params params = Params::Defaults(Schema(Model::kSarl));
+  params.Set("route_prior", 0.05);
+  EXPECT_THROW(ConfigFromParams(Model::kSarl, params), std::invalid_argument);
+  params.Set("sensors", std::string("person+route"));
+  EXPECT_DOUBLE_EQ(ConfigFromParams(Model::kSarl, params).route_prior, 0.05);
+}
+
 TEST(ActionSpaceTest, ExponentialSpeedsAsCrowdNav) {
   const auto two = ExponentialSpeeds(2, 1.0);
   ASSERT_EQ(two.size(), 2u);

@@ -114,6 +114,19 @@ TEST(WeightsFileTest, MismatchesAreClearErrors) {
   more_beams.lidar_beams = 45;
   ExpectRejected(more_beams, lidar_file, "lidar_beams: expected 45, found 9");
 
+  // The route prior is part of what the weights mean; files without one have 0.
+  ValueRlConfig routed = Config(Model::kSarl, SensorSet::kLidarPerson);
+  routed.route = true;
+  const auto plain_route = dir.path() / "sarl_route.pt";
+  ValuePolicy(routed).SaveWeights(plain_route);
+  ValueRlConfig with_prior = routed;
+  with_prior.route_prior = 0.05;
+  ExpectRejected(with_prior, plain_route, "route_prior: expected 0.05, found 0");
+  const auto prior_file = dir.path() / "sarl_route_prior.pt";
+  ValuePolicy(with_prior).SaveWeights(prior_file);
+  ExpectRejected(routed, prior_file, "route_prior: expected 0, found 0.05");
+  EXPECT_NO_THROW(ValuePolicy(with_prior).LoadWeights(prior_file));
+
   ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), dir.path() / "missing.pt",
                  "does not exist");
   const auto junk = dir.Write("junk.pt", "not a torch archive");

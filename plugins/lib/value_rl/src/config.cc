@@ -53,6 +53,14 @@ ParamSchema Schema(Model /*model: both families take the same parameters*/) {
        0,
        {},
        "trained weights (.pt from `crowdsim-bench train`); empty = untrained network"},
+      {"route_prior",
+       ParamType::kDouble,
+       0.0,
+       0.0,
+       1.0,
+       {},
+       "with +route: value less this much per metre of the route's path distance, a fixed prior "
+       "(potential-based shaping); 0 = none"},
       {"lidar_beams",
        ParamType::kInt,
        std::int64_t{45},
@@ -117,6 +125,12 @@ ValueRlConfig ConfigFromParams(Model model, const Params& params) {
     throw std::invalid_argument(
         std::string(ModelName(model)) + ": sensors '" + given +
         "' is not valid; valid: person, lidar, lidar+person, each optionally +route");
+  }
+  c.route_prior = params.GetDouble("route_prior");
+  if (c.route_prior > 0.0 && !c.route) {
+    throw std::invalid_argument(
+        std::string(ModelName(model)) + ": route_prior " + std::to_string(c.route_prior) +
+        " needs the route sensor in the state; use sensors '" + given + "+route' or route_prior 0");
   }
   c.lidar_beams = static_cast<int>(params.GetInt("lidar_beams"));
   c.speed_samples = static_cast<int>(params.GetInt("speed_samples"));

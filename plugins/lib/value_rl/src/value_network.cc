@@ -64,6 +64,16 @@ torch::Tensor ForwardJoined(torch::nn::Sequential& mlp, const torch::Tensor& sta
 
 namespace {
 
+/// The route prior: the value less `w` per metre of the route's path distance (the first
+/// route value, right after the 6 self values). A fixed, exact part of the value: the network
+/// learns what the path distance does not say, and every decision sees the exact gain of
+/// progress along the route (the same as potential-based reward shaping with potential
+/// -w x distance, Ng et al. 1999, which leaves the best policy unchanged).
+torch::Tensor WithRoutePrior(const torch::Tensor& value, const StateBatch& b, double w) {
+  if (w == 0.0) return value;
+  return value - w * b.self.select(1, kSelfDim);
+}
+
 /// Self state joined with the lidar feature (when there is a lidar): (B, 6 [+ 3] [+ F]).
 class SelfEncoder {
  public:
@@ -88,29 +98,32 @@ class SelfEncoder {
 /// CADRL: one value per (robot, human) pair, the minimum over humans.
 class Cadrl final : public ValueNetwork {
  public:
-  explicit Cadrl(const ValueRlConfig& c) : self_(this, c), humans_(UsesPerson(c.sensors)) {
+  explicit Cadrl(const ValueRlConfig& c)
+      : self_(this, c), humans_(UsesPerson(c.sensors)), route_prior_(c.route_prior) {
     mlp_ = register_module("mlp",
                            Mlp(self_.dim() + (humans_ ? kHumanDim : 0), {150, 100, 100, 1}, false));
   }
 
   torch::Tensor Forward(const StateBatch& b) override {
     torch::Tensor s = self_(b);
-    if (!humans_) return mlp_->forward(s).squeeze(1);
+    if (!humans_) return WithRoutePrior(mlp_->forward(s).squeeze(1), b, route_prior_);
     torch::Tensor v = ForwardJoined(mlp_, s, b.humans, /*state_first=*/true).squeeze(2);
     v = v.masked_fill(b.mask.logical_not(), std::numeric_limits<float>::infinity());
-    return std::get<0>(v.min(1));
+    return WithRoutePrior(std::get<0>(v.min(1)), b, route_prior_);
   }
 
  private:
   SelfEncoder self_;
   bool humans_;
+  double route_prior_;
   torch::nn::Sequential mlp_{nullptr};
 };
 
 /// SARL: per-human embeddings, attention with the mean embedding, crowd feature + self state.
 class Sarl final : public ValueNetwork {
  public:
-  explicit Sarl(const ValueRlConfig& c) : self_(this, c), humans_(UsesPerson(c.sensors)) {
+  explicit Sarl(const ValueRlConfig& c)
+      : self_(this, c), humans_(UsesPerson(c.sensors)), route_prior_(c.route_prior) {
     if (humans_) {
       mlp1_ = register_module("mlp1", Mlp(SelfInputs(c) + kHumanDim, {150, 100}, true));
       mlp2_ = register_module("mlp2", Mlp(100, {100, 50}, false));
@@ -137,12 +150,13 @@ class Sarl final : public ValueNetwork {
       torch::Tensor crowd = (w.unsqueeze(2) * h).sum(1);
       joint = torch::cat({joint, crowd}, 1);
     }
-    return mlp3_->forward(joint).squeeze(1);
+    return WithRoutePrior(mlp3_->forward(joint).squeeze(1), b, route_prior_);
   }
 
  private:
   SelfEncoder self_;
   bool humans_;
+  double route_prior_;
   torch::nn::Sequential mlp1_{nullptr}, mlp2_{nullptr}, attention_{nullptr}, mlp3_{nullptr};
 };
 

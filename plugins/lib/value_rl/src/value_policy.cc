@@ -187,6 +187,7 @@ std::string ValuePolicy::Describe() const {
   return std::string(ModelName(c.model)) + " sensors=" + SensorsLabel(c) +
          " actions=" + std::to_string(c.ActionCount()) +
          " lidar_beams=" + std::to_string(c.LidarInputs()) +
+         (c.route_prior != 0.0 ? " route_prior=" + std::to_string(c.route_prior) : "") +
          " parameters=" + std::to_string(ParameterCount());
 }
 

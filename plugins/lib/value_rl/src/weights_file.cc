@@ -3,6 +3,8 @@
 #include <torch/serialize/input-archive.h>
 #include <torch/serialize/output-archive.h>
 
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 #include "value_rl/zip_crc_check.h"
@@ -22,11 +24,19 @@ std::string Found(torch::serialize::InputArchive& archive, const std::string& ke
   return "(unreadable)";
 }
 
+/// The route prior as written in files and messages ("0" for none).
+std::string PriorText(double w) {
+  if (w == 0.0) return "0";
+  std::ostringstream s;
+  s << std::setprecision(15) << w;
+  return s.str();
+}
+
 }  // namespace
 
 WeightsMeta MetaOf(const ValueRlConfig& config) {
   return WeightsMeta{ModelName(config.model), SensorsLabel(config), config.ActionCount(),
-                     config.LidarInputs()};
+                     config.LidarInputs(), config.route_prior};
 }
 
 void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs::path& file) {
@@ -36,6 +46,8 @@ void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs:
   archive.write("crowdsim_sensors", c10::IValue(meta.sensors));
   archive.write("crowdsim_actions", c10::IValue(meta.actions));
   archive.write("crowdsim_lidar_beams", c10::IValue(meta.lidar_beams));
+  if (meta.route_prior != 0.0)
+    archive.write("crowdsim_route_prior", c10::IValue(PriorText(meta.route_prior)));
   net.save(archive);
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
   const fs::path tmp = file.string() + ".tmp";
@@ -66,10 +78,12 @@ void LoadWeightsFile(const WeightsMeta& expected, const fs::path& file, ValueNet
       {"sensors", expected.sensors},
       {"actions", std::to_string(expected.actions)},
       {"lidar_beams", std::to_string(expected.lidar_beams)},
+      {"route_prior", PriorText(expected.route_prior)},
   };
   std::string mismatch;
   for (const auto& [key, want] : checks) {
-    const std::string got = Found(archive, "crowdsim_" + key);
+    std::string got = Found(archive, "crowdsim_" + key);
+    if (key == "route_prior" && got == "(missing)") got = PriorText(0.0);  // older files
     if (got != want) {
       mismatch += (mismatch.empty() ? "" : "; ") + key + ": expected " + want + ", found " + got;
     }

@@ -32,6 +32,7 @@ struct ValueRlConfig {
   int lidar_hidden = 64;        ///< width of the lidar encoder's hidden layer
   int lidar_features = 32;      ///< size of the lidar feature joined to the self state
   bool route = false;           ///< the route sensor's distance and waypoint join the self state
+  double route_prior = 0.0;     ///< per metre of path distance taken off the value (+route only)
   int speed_samples = 2;        ///< speeds per direction, exponentially spaced up to v_pref
   int rotation_samples = 8;     ///< directions, evenly spaced in [0, 2 pi), world frame
   bool stop_action = false;     ///< prepend CrowdNav's stop action

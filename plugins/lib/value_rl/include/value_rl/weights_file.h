@@ -16,7 +16,8 @@ struct WeightsMeta {
   std::string model;    ///< cadrl | sarl
   std::string sensors;  ///< person | lidar | lidar+person, each optionally +route
   int64_t actions = 0;
-  int64_t lidar_beams = 0;  ///< 0 without lidar
+  int64_t lidar_beams = 0;   ///< 0 without lidar
+  double route_prior = 0.0;  ///< written only when not 0 (files before it have none)
 };
 
 /// The metadata a policy with `config` expects.
