@@ -1,5 +1,6 @@
 #include "config_text.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -93,6 +94,12 @@ void Canonical(const PluginUse& u, std::ostream& os) {
   os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
   const std::vector<InputFile> files = InputFiles(u);
   for (const auto& [k, v] : u.params.values()) {
+    if (u.loaded) {
+      const auto& schema = u.loaded->schema;
+      const auto spec = std::find_if(schema.begin(), schema.end(),
+                                     [&k](const ParamSpec& s) { return s.name == k; });
+      if (spec != schema.end() && !spec->hashed_at_default && v == spec->default_value) continue;
+    }
     os << k << "=" << FormatParamValue(v);
     for (const InputFile& f : files) {
       if (f.param == k) os << "#content:" << f.content;

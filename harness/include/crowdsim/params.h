@@ -25,6 +25,9 @@ struct ParamSpec {
   double max = kInfinity;            ///< inclusive
   std::vector<std::string> choices;  ///< strings only; empty = free text
   std::string doc;                   ///< one line, with units
+  /// False for a parameter added after results were committed: at its default it stays out of
+  /// the configuration hash, so those results keep their hash and stay resumable.
+  bool hashed_at_default = true;
 };
 
 using ParamSchema = std::vector<ParamSpec>;

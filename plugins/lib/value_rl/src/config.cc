@@ -60,7 +60,8 @@ ParamSchema Schema(Model /*model: both families take the same parameters*/) {
        1.0,
        {},
        "with +route: value less this much per metre of the route's path distance, a fixed prior "
-       "(potential-based shaping); 0 = none"},
+       "(potential-based shaping); 0 = none",
+       /*hashed_at_default=*/false},
       {"lidar_beams",
        ParamType::kInt,
        std::int64_t{45},
