@@ -42,7 +42,7 @@ RouteField::RouteField(const StaticMap& map, const Vec2& goal, double clearance,
     : origin_(map.bounds.min),
       goal_(goal),
       resolution_(resolution),
-      search_cells_(std::ceil(clearance / resolution) + 1.0) {
+      search_cells_(static_cast<int>(std::ceil(clearance / resolution)) + 1) {
   const Vec2 size = map.bounds.Size();
   cols_ = std::max(1, static_cast<int>(std::ceil(size.x() / resolution)));
   rows_ = std::max(1, static_cast<int>(std::ceil(size.y() / resolution)));
@@ -125,7 +125,7 @@ bool RouteField::Free(int row, int col) const {
 int RouteField::EntryCell(const Vec2& p, double* through) const {
   const int pr = static_cast<int>(std::floor((p.y() - origin_.y()) / resolution_));
   const int pc = static_cast<int>(std::floor((p.x() - origin_.x()) / resolution_));
-  const int k = static_cast<int>(search_cells_);
+  const int k = search_cells_;
   int best = -1;
   *through = kInfinity;
   for (int row = std::max(0, pr - k); row <= std::min(rows_ - 1, pr + k); ++row) {

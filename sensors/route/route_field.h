@@ -34,10 +34,6 @@ class RouteField {
   /// One of the grid's 16 move directions (route_field.cc).
   struct Move;
 
-  /// Grid size, for tests and benchmarks.
-  int rows() const { return rows_; }
-  int cols() const { return cols_; }
-
  private:
   int Index(int row, int col) const { return row * cols_ + col; }
   Vec2 Centre(int row, int col) const;
@@ -57,7 +53,7 @@ class RouteField {
   Vec2 origin_;
   Vec2 goal_;
   double resolution_;
-  double search_cells_;
+  int search_cells_;  // EntryCell's reach in cells: the clearance and one more
   int rows_ = 0;
   int cols_ = 0;
   std::vector<unsigned char> free_;
