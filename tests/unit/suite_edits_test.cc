@@ -110,6 +110,33 @@ TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
   EXPECT_EQ(same.suite->ConfigHash(), s.ConfigHash());
 }
 
+// A parameter marked hashed_at_default = false (value_rl's route_prior, added after the tables
+// were committed) leaves the configuration as it was at its default, and changes it otherwise.
+TEST_F(SuiteEdits, AParameterAddedLaterLeavesTheHashAtItsDefault) {
+  const std::string suite = R"(name: t
+episodes: 3
+world: {source: random_rect, obstacles: 1, split: test}
+humans: {count: 5, policy: orca}
+robot:
+  sensors: [person, route]
+rows:
+  - {label: sarl, policy: sarl, params: {sensors: person+route}}
+)";
+  const auto plain = Load(suite);
+  ASSERT_TRUE(plain.suite) << All(plain);
+  EXPECT_EQ(plain.suite->rows[0].canonical.find("route_prior"), std::string::npos)
+      << plain.suite->rows[0].canonical;
+  const auto zero = Load(suite, {"rows[sarl].params.route_prior=0"});
+  ASSERT_TRUE(zero.suite) << All(zero);
+  EXPECT_EQ(zero.suite->rows[0].canonical, plain.suite->rows[0].canonical);
+  const auto prior = Load(suite, {"rows[sarl].params.route_prior=0.1"});
+  ASSERT_TRUE(prior.suite) << All(prior);
+  EXPECT_NE(prior.suite->rows[0].canonical.find("route_prior=0.1"), std::string::npos);
+  EXPECT_NE(prior.suite->ConfigHash(), plain.suite->ConfigHash());
+  // Parameters without the mark enter at their default too, as they always did.
+  EXPECT_NE(plain.suite->rows[0].canonical.find("torch_threads=1"), std::string::npos);
+}
+
 TEST_F(SuiteEdits, BadOverridesAreNamedByTheOption) {
   auto r = Load(kSuite, {"rows[ocra].policy=orca"});
   ASSERT_FALSE(r.suite);
