@@ -18,7 +18,8 @@ namespace crowdsim {
 
 /// Bump when any interface or this descriptor changes layout.
 /// 2: Observation lost time_step and map; 3: the descriptor's data_files;
-/// 4: PolicyNeeds::heading_frame; 5: SensorReading::values, CollisionWorld::serial.
+/// 4: PolicyNeeds::heading_frame; 5: SensorReading::values, CollisionWorld::serial,
+/// ParamSpec::hashed_at_default.
 inline constexpr std::uint32_t kPluginAbiVersion = 5;
 
 /// Name of the exported alias.
