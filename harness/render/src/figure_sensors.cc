@@ -1,6 +1,7 @@
 #include "crowdsim/render/figure_sensors.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "crowdsim/render/palette.h"
 
@@ -65,8 +66,18 @@ std::string SensorList(const SensorSnapshot& s) {
     if (!what.empty()) what += ", ";
     what += r.sensor;
     if (!r.ranges.empty()) what += " (" + std::to_string(r.ranges.size()) + " beams)";
-    if (!r.people.empty() || r.ranges.empty())
+    if (!r.values.empty()) {
+      // Other sensors' features (e.g. the route's path distance and waypoint), as read.
+      what += " (";
+      for (size_t i = 0; i < r.values.size(); ++i) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%.2f", r.values[i]);
+        what += (i == 0 ? "" : ", ") + std::string(number);
+      }
+      what += ")";
+    } else if (!r.people.empty() || r.ranges.empty()) {
       what += " (" + std::to_string(r.people.size()) + " people)";
+    }
   }
   return what;
 }

@@ -12,6 +12,7 @@
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/render/episode_figure.h"
 #include "crowdsim/render/episode_replay.h"
+#include "crowdsim/render/figure_sensors.h"
 #include "crowdsim/render/palette.h"
 #include "crowdsim/render/svg_writer.h"
 #include "crowdsim/sensor.h"
@@ -186,6 +187,23 @@ TEST(EpisodeFigure, SensorSnapshotDrawsBeamsHitsAndPeople) {
   EXPECT_EQ(d.Count("sensor-caption"), 1);
   // Animation frames never show the snapshot.
   EXPECT_EQ(DrawEpisodeFrame(fig, 3).Count("beam"), 0);
+}
+
+// A sensor reporting other features (as the route sensor does: distance, waypoint x, y).
+struct ValuesSensor : Sensor {
+  void Sense(const SenseInput&, SensorReading* out) const override {
+    out->values = {7.4219, 0.7149, -0.7};
+  }
+};
+
+TEST(EpisodeFigure, SensorCaptionListsEachSensorsReading) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  FakeSensor lidar;
+  ValuesSensor route;
+  const std::vector<MountedSensor> sensors = {{"fake", &lidar}, {"route", &route}};
+  const SensorSnapshot s = TakeSensorSnapshot(sc, r, 8, sensors);
+  EXPECT_EQ(SensorList(s), "fake (3 beams) (1 people), route (7.42, 0.71, -0.70)");
 }
 
 TEST(EpisodeFigure, SensorStepOutsideTheEpisodeNamesTheValidSteps) {

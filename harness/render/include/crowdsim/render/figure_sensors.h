@@ -14,7 +14,8 @@ namespace crowdsim::render {
 void DrawSensorSnapshot(Drawing* d, const View& v, const SensorSnapshot& s,
                         const Color& robot_color);
 
-/// The sensors read, for the header: e.g. "lidar (720 beams), person (3 people)".
+/// The sensors read, for the header: e.g. "lidar (720 beams), person (3 people), route (7.42,
+/// 0.71, -0.70)" (a sensor's other features as read, two decimals).
 std::string SensorList(const SensorSnapshot& s);
 
 }  // namespace crowdsim::render
