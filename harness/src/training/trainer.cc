@@ -194,6 +194,11 @@ void Trainer::Build() {
   if (const std::string unmet = row_->UnmetSensorNeed(); !unmet.empty()) {
     throw TrainError(spec_.file.string() + ": " + unmet + "; add it to `sensors`");
   }
+  // The run's constants before imitation, whose targets the learner fits before it drives an
+  // episode (a value with a discounted route prior needs the run's gamma); no map: no episode.
+  EpisodeContext constants;
+  constants.sim = spec_.sim;
+  learner_policy_->Reset(constants);
 }
 
 Scenario Trainer::MakeScenario(const char* stream, int index) const {

@@ -172,6 +172,41 @@ TEST(StateEncodingTest, RoutePriorTakesItsShareOfThePathDistanceOffTheValue) {
   EXPECT_DOUBLE_EQ(ConfigFromParams(Model::kSarl, params).route_prior, 0.05);
 }
 
+TEST(StateEncodingTest, DiscountedRoutePriorAddsTheFreeRoutesDiscountedReward) {
+  ValueRlConfig c = Config(Model::kSarl, SensorSet::kPerson);
+  c.route = true;
+  c.init_seed = 7;
+  ValueRlConfig prior = c;
+  prior.route_prior = 1.0;
+  prior.route_prior_shape = RoutePriorShape::kDiscounted;
+  EncodedState near;
+  near.values = {4.0f, 1.0f, 0.0f, 0.3f, 0.2f, 0.0f, 5.0f, 1.0f,
+                 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.3f, 1.4f, 0.6f};
+  EncodedState far = near;
+  far.values[6] = 12.0f;
+  const std::vector<const EncodedState*> states = {&near, &far};
+  const std::vector<float> without = ValuePolicy(c).Values(states);
+  ValuePolicy with(prior);
+  std::vector<float> v = with.Values(states);
+  // Before any episode: SimConfig's gamma, 0.9.
+  EXPECT_NEAR(v[0], without[0] + std::pow(0.9, 5.0), 1e-5);
+  EXPECT_NEAR(v[1], without[1] + std::pow(0.9, 12.0), 1e-5);
+  // An episode's gamma replaces it, in the target network too.
+  EpisodeContext ctx;
+  ctx.sim.gamma = 0.8;
+  with.Reset(ctx);
+  v = with.Values(states);
+  EXPECT_NEAR(v[0], without[0] + std::pow(0.8, 5.0), 1e-5);
+  EXPECT_NEAR(with.TargetValues(states)[1], without[1] + std::pow(0.8, 12.0), 1e-5);
+  // The shape is a parameter; without a weight it would do nothing, which is an error.
+  Params params = Params::Defaults(Schema(Model::kSarl));
+  params.Set("sensors", std::string("lidar+person+route"));
+  params.Set("route_prior_shape", std::string("discounted"));
+  EXPECT_THROW(ConfigFromParams(Model::kSarl, params), std::invalid_argument);
+  params.Set("route_prior", 1.0);
+  EXPECT_EQ(ConfigFromParams(Model::kSarl, params).route_prior_shape, RoutePriorShape::kDiscounted);
+}
+
 TEST(ActionSpaceTest, ExponentialSpeedsAsCrowdNav) {
   const auto two = ExponentialSpeeds(2, 1.0);
   ASSERT_EQ(two.size(), 2u);

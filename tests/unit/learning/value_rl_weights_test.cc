@@ -126,6 +126,14 @@ TEST(WeightsFileTest, MismatchesAreClearErrors) {
   ValuePolicy(with_prior).SaveWeights(prior_file);
   ExpectRejected(routed, prior_file, "route_prior: expected 0, found 0.05");
   EXPECT_NO_THROW(ValuePolicy(with_prior).LoadWeights(prior_file));
+  // So is its shape: the same weight, discounted, is another value.
+  ValueRlConfig discounted = with_prior;
+  discounted.route_prior_shape = RoutePriorShape::kDiscounted;
+  ExpectRejected(discounted, prior_file, "route_prior: expected 0.05 discounted, found 0.05");
+  const auto discounted_file = dir.path() / "sarl_route_discounted.pt";
+  ValuePolicy(discounted).SaveWeights(discounted_file);
+  ExpectRejected(with_prior, discounted_file, "route_prior: expected 0.05, found 0.05 discounted");
+  EXPECT_NO_THROW(ValuePolicy(discounted).LoadWeights(discounted_file));
 
   ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), dir.path() / "missing.pt",
                  "does not exist");

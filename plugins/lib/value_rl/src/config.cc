@@ -24,6 +24,10 @@ const char* SensorSetName(SensorSet s) {
   return "unknown";
 }
 
+const char* RoutePriorShapeName(RoutePriorShape s) {
+  return s == RoutePriorShape::kLinear ? "linear" : "discounted";
+}
+
 std::string SensorsLabel(const ValueRlConfig& c) {
   return std::string(SensorSetName(c.sensors)) + (c.route ? kRouteSuffix : "");
 }
@@ -59,8 +63,19 @@ ParamSchema Schema(Model /*model: both families take the same parameters*/) {
        0.0,
        1.0,
        {},
-       "with +route: value less this much per metre of the route's path distance, a fixed prior "
-       "(potential-based shaping); 0 = none",
+       "with +route: weight of a fixed prior added to the network's value (route_prior_shape); "
+       "0 = none",
+       /*hashed_at_default=*/false},
+      {"route_prior_shape",
+       ParamType::kString,
+       std::string("linear"),
+       0,
+       0,
+       {"linear", "discounted"},
+       "linear: value less route_prior per metre of the route's path distance (potential-based "
+       "shaping); discounted: value plus route_prior x gamma^(path distance), the discounted "
+       "success reward of following the free route at v_pref, so the network learns only what "
+       "people and turns change",
        /*hashed_at_default=*/false},
       {"lidar_beams",
        ParamType::kInt,
@@ -132,6 +147,14 @@ ValueRlConfig ConfigFromParams(Model model, const Params& params) {
     throw std::invalid_argument(
         std::string(ModelName(model)) + ": route_prior " + std::to_string(c.route_prior) +
         " needs the route sensor in the state; use sensors '" + given + "+route' or route_prior 0");
+  }
+  c.route_prior_shape = params.GetString("route_prior_shape") == "discounted"
+                            ? RoutePriorShape::kDiscounted
+                            : RoutePriorShape::kLinear;
+  if (c.route_prior_shape != RoutePriorShape::kLinear && c.route_prior == 0.0) {
+    throw std::invalid_argument(std::string(ModelName(model)) +
+                                ": route_prior_shape discounted has no effect with route_prior 0; "
+                                "give route_prior a weight (e.g. 1, the success reward)");
   }
   c.lidar_beams = static_cast<int>(params.GetInt("lidar_beams"));
   c.speed_samples = static_cast<int>(params.GetInt("speed_samples"));

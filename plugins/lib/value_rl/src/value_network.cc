@@ -4,8 +4,10 @@
 #include <torch/nn/modules/linear.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
+#include "crowdsim/sim_config.h"
 #include "value_rl/state_encoding.h"
 
 namespace crowdsim::value_rl {
@@ -62,17 +64,26 @@ torch::Tensor ForwardJoined(torch::nn::Sequential& mlp, const torch::Tensor& sta
   return x;
 }
 
-namespace {
+ValueNetwork::ValueNetwork(const ValueRlConfig& config)
+    : prior_weight_(config.route_prior),
+      prior_shape_(config.route_prior_shape),
+      gamma_(SimConfig{}.gamma) {}
 
-/// The route prior: the value less `w` per metre of the route's path distance (the first
-/// route value, right after the 6 self values). A fixed, exact part of the value: the network
-/// learns what the path distance does not say, and every decision sees the exact gain of
-/// progress along the route (the same as potential-based reward shaping with potential
-/// -w x distance, Ng et al. 1999, which leaves the best policy unchanged).
-torch::Tensor WithRoutePrior(const torch::Tensor& value, const StateBatch& b, double w) {
-  if (w == 0.0) return value;
-  return value - w * b.self.select(1, kSelfDim);
+/// The route prior, a fixed, exact part of the value computed from the route's path distance d
+/// (the first route value, right after the 6 self values); the network learns the rest.
+/// Linear: -w d, the same as potential-based reward shaping with potential -w d (Ng et al.
+/// 1999, leaves the best policy unchanged); the network must still learn how the value falls
+/// with d, now plus w d. Discounted: w gamma^d, the value of following the free route at
+/// v_pref (CrowdNav's discount gamma^(t v_pref), t = d / v_pref) to a success reward w, so
+/// the network learns only how people, turns and the goal's radius change that value.
+torch::Tensor ValueNetwork::WithRoutePrior(const torch::Tensor& value, const StateBatch& b) const {
+  if (prior_weight_ == 0.0) return value;
+  const torch::Tensor d = b.self.select(1, kSelfDim);
+  if (prior_shape_ == RoutePriorShape::kLinear) return value - prior_weight_ * d;
+  return value + prior_weight_ * torch::exp(d * std::log(gamma_));
 }
+
+namespace {
 
 /// Self state joined with the lidar feature (when there is a lidar): (B, 6 [+ 3] [+ F]).
 class SelfEncoder {
@@ -99,23 +110,22 @@ class SelfEncoder {
 class Cadrl final : public ValueNetwork {
  public:
   explicit Cadrl(const ValueRlConfig& c)
-      : self_(this, c), humans_(UsesPerson(c.sensors)), route_prior_(c.route_prior) {
+      : ValueNetwork(c), self_(this, c), humans_(UsesPerson(c.sensors)) {
     mlp_ = register_module("mlp",
                            Mlp(self_.dim() + (humans_ ? kHumanDim : 0), {150, 100, 100, 1}, false));
   }
 
   torch::Tensor Forward(const StateBatch& b) override {
     torch::Tensor s = self_(b);
-    if (!humans_) return WithRoutePrior(mlp_->forward(s).squeeze(1), b, route_prior_);
+    if (!humans_) return WithRoutePrior(mlp_->forward(s).squeeze(1), b);
     torch::Tensor v = ForwardJoined(mlp_, s, b.humans, /*state_first=*/true).squeeze(2);
     v = v.masked_fill(b.mask.logical_not(), std::numeric_limits<float>::infinity());
-    return WithRoutePrior(std::get<0>(v.min(1)), b, route_prior_);
+    return WithRoutePrior(std::get<0>(v.min(1)), b);
   }
 
  private:
   SelfEncoder self_;
   bool humans_;
-  double route_prior_;
   torch::nn::Sequential mlp_{nullptr};
 };
 
@@ -123,7 +133,7 @@ class Cadrl final : public ValueNetwork {
 class Sarl final : public ValueNetwork {
  public:
   explicit Sarl(const ValueRlConfig& c)
-      : self_(this, c), humans_(UsesPerson(c.sensors)), route_prior_(c.route_prior) {
+      : ValueNetwork(c), self_(this, c), humans_(UsesPerson(c.sensors)) {
     if (humans_) {
       mlp1_ = register_module("mlp1", Mlp(SelfInputs(c) + kHumanDim, {150, 100}, true));
       mlp2_ = register_module("mlp2", Mlp(100, {100, 50}, false));
@@ -150,13 +160,12 @@ class Sarl final : public ValueNetwork {
       torch::Tensor crowd = (w.unsqueeze(2) * h).sum(1);
       joint = torch::cat({joint, crowd}, 1);
     }
-    return WithRoutePrior(mlp3_->forward(joint).squeeze(1), b, route_prior_);
+    return WithRoutePrior(mlp3_->forward(joint).squeeze(1), b);
   }
 
  private:
   SelfEncoder self_;
   bool humans_;
-  double route_prior_;
   torch::nn::Sequential mlp1_{nullptr}, mlp2_{nullptr}, attention_{nullptr}, mlp3_{nullptr};
 };
 

@@ -131,6 +131,8 @@ PolicyNeeds ValuePolicy::Needs() const {
 void ValuePolicy::Reset(const EpisodeContext& ctx) {
   impl_->gamma = ctx.sim.gamma;
   impl_->time_step = ctx.sim.time_step;
+  impl_->model->SetDiscount(ctx.sim.gamma);
+  impl_->target->SetDiscount(ctx.sim.gamma);
 }
 
 Action ValuePolicy::Decide(const Observation& obs) {
@@ -188,6 +190,9 @@ std::string ValuePolicy::Describe() const {
          " actions=" + std::to_string(c.ActionCount()) +
          " lidar_beams=" + std::to_string(c.LidarInputs()) +
          (c.route_prior != 0.0 ? " route_prior=" + std::to_string(c.route_prior) : "") +
+         (c.route_prior_shape != RoutePriorShape::kLinear
+              ? std::string(" route_prior_shape=") + RoutePriorShapeName(c.route_prior_shape)
+              : "") +
          " parameters=" + std::to_string(ParameterCount());
 }
 

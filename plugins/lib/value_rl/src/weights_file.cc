@@ -24,11 +24,13 @@ std::string Found(torch::serialize::InputArchive& archive, const std::string& ke
   return "(unreadable)";
 }
 
-/// The route prior as written in files and messages ("0" for none).
-std::string PriorText(double w) {
+/// The route prior as written in files and messages: "0" for none, the weight for the linear
+/// shape (as files before the shapes have it), "<weight> discounted" for the other.
+std::string PriorText(double w, RoutePriorShape shape) {
   if (w == 0.0) return "0";
   std::ostringstream s;
   s << std::setprecision(15) << w;
+  if (shape != RoutePriorShape::kLinear) s << ' ' << RoutePriorShapeName(shape);
   return s.str();
 }
 
@@ -36,7 +38,7 @@ std::string PriorText(double w) {
 
 WeightsMeta MetaOf(const ValueRlConfig& config) {
   return WeightsMeta{ModelName(config.model), SensorsLabel(config), config.ActionCount(),
-                     config.LidarInputs(), config.route_prior};
+                     config.LidarInputs(),    config.route_prior,   config.route_prior_shape};
 }
 
 void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs::path& file) {
@@ -47,7 +49,8 @@ void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs:
   archive.write("crowdsim_actions", c10::IValue(meta.actions));
   archive.write("crowdsim_lidar_beams", c10::IValue(meta.lidar_beams));
   if (meta.route_prior != 0.0)
-    archive.write("crowdsim_route_prior", c10::IValue(PriorText(meta.route_prior)));
+    archive.write("crowdsim_route_prior",
+                  c10::IValue(PriorText(meta.route_prior, meta.route_prior_shape)));
   net.save(archive);
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
   const fs::path tmp = file.string() + ".tmp";
@@ -78,12 +81,12 @@ void LoadWeightsFile(const WeightsMeta& expected, const fs::path& file, ValueNet
       {"sensors", expected.sensors},
       {"actions", std::to_string(expected.actions)},
       {"lidar_beams", std::to_string(expected.lidar_beams)},
-      {"route_prior", PriorText(expected.route_prior)},
+      {"route_prior", PriorText(expected.route_prior, expected.route_prior_shape)},
   };
   std::string mismatch;
   for (const auto& [key, want] : checks) {
     std::string got = Found(archive, "crowdsim_" + key);
-    if (key == "route_prior" && got == "(missing)") got = PriorText(0.0);  // older files
+    if (key == "route_prior" && got == "(missing)") got = "0";  // older files
     if (got != want) {
       mismatch += (mismatch.empty() ? "" : "; ") + key + ": expected " + want + ", found " + got;
     }

@@ -24,15 +24,25 @@ const char* SensorSetName(SensorSet s);
 inline bool UsesPerson(SensorSet s) { return s != SensorSet::kLidar; }
 inline bool UsesLidar(SensorSet s) { return s != SensorSet::kPerson; }
 
+/// How the route prior enters the value (`route_prior_shape`).
+enum class RoutePriorShape {
+  kLinear,      ///< value less w per metre of path distance
+  kDiscounted,  ///< value plus w x gamma^(path distance): the discounted reward of the free route
+};
+
+/// Name as written in parameters and weights files ("linear", "discounted").
+const char* RoutePriorShapeName(RoutePriorShape s);
+
 /// Everything a value policy is built from.
 struct ValueRlConfig {
   Model model = Model::kCadrl;
   SensorSet sensors = SensorSet::kPerson;
-  int lidar_beams = 45;         ///< beams of the lidar reading (network input size)
-  int lidar_hidden = 64;        ///< width of the lidar encoder's hidden layer
-  int lidar_features = 32;      ///< size of the lidar feature joined to the self state
-  bool route = false;           ///< the route sensor's distance and waypoint join the self state
-  double route_prior = 0.0;     ///< per metre of path distance taken off the value (+route only)
+  int lidar_beams = 45;      ///< beams of the lidar reading (network input size)
+  int lidar_hidden = 64;     ///< width of the lidar encoder's hidden layer
+  int lidar_features = 32;   ///< size of the lidar feature joined to the self state
+  bool route = false;        ///< the route sensor's distance and waypoint join the self state
+  double route_prior = 0.0;  ///< weight of the route prior (+route only); 0 = none
+  RoutePriorShape route_prior_shape = RoutePriorShape::kLinear;
   int speed_samples = 2;        ///< speeds per direction, exponentially spaced up to v_pref
   int rotation_samples = 8;     ///< directions, evenly spaced in [0, 2 pi), world frame
   bool stop_action = false;     ///< prepend CrowdNav's stop action

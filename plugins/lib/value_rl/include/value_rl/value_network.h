@@ -36,11 +36,24 @@ torch::nn::Sequential Mlp(int64_t in, std::initializer_list<int64_t> dims, bool 
 torch::Tensor ForwardJoined(torch::nn::Sequential& mlp, const torch::Tensor& state,
                             const torch::Tensor& rows, bool state_first);
 
-/// State value network: V(batch) -> (B).
+/// State value network: V(batch) -> (B), the route prior of its configuration included.
 class ValueNetwork : public torch::nn::Module {
  public:
   /// The network's value of each state of the batch.
   virtual torch::Tensor Forward(const StateBatch& batch) = 0;
+  /// The run's discount (SimConfig::gamma, per metre at v_pref), which the discounted route
+  /// prior uses; set by ValuePolicy::Reset. Default: SimConfig's.
+  void SetDiscount(double gamma) { gamma_ = gamma; }
+
+ protected:
+  explicit ValueNetwork(const ValueRlConfig& config);
+  /// `value` (B) with the configuration's route prior added; unchanged without one.
+  torch::Tensor WithRoutePrior(const torch::Tensor& value, const StateBatch& b) const;
+
+ private:
+  double prior_weight_;
+  RoutePriorShape prior_shape_;
+  double gamma_;
 };
 
 /// The network of `config` (CADRL or SARL, with or without lidar / humans), default init.
