@@ -1,6 +1,6 @@
 // Shortest-path distances to one goal over a world's static rectangles: a grid (Dijkstra over
-// 16 move directions, no corner cutting) whose free cells are those a disc of the given clearance
-// fits at. Built once per (map, goal, clearance); queried per sensor reading.
+// 16 move directions between free cells) whose free cells are those a disc of the given clearance
+// fits at (route_field.cc: how much of it a move keeps). Built once per (map, goal, clearance); queried per sensor reading.
 #pragma once
 
 #include <vector>
@@ -44,15 +44,17 @@ class RouteField {
   /// The next cell down the path from cell `i` (the move's `length` in m), or -1 when i is
   /// next to the goal.
   int Downhill(int i, double* length) const;
-  /// True if the move `m` from (row, col) stays on free cells.
+  /// True if the move `m` from (row, col) ends on a free cell.
   bool CanMove(int row, int col, const Move& m) const;
-  /// True if the segment p -> q crosses no blocked stretch between free cells (p and q may
-  /// stand in the clearance band).
+  /// True if the segment p -> q crosses no blocked cells but those of p's and q's clearance
+  /// band (a robot or a goal near a wall stands in it): a blocked stretch from p or to q
+  /// longer than the band, or any between free cells, is a wall in the way.
   bool Sees(const Vec2& p, const Vec2& q) const;
 
   Vec2 origin_;
   Vec2 goal_;
   double resolution_;
+  double band_;       // how far p or q may stand inside blocked cells: the clearance and a cell
   int search_cells_;  // EntryCell's reach in cells: the clearance and one more
   int rows_ = 0;
   int cols_ = 0;

@@ -15,8 +15,8 @@ ParamSchema Schema() {
        0.0,
        2.0,
        {},
-       "m; kept from walls on top of the robot's radius (a passage narrower than 2 x (radius "
-       "+ margin) is closed)"},
+       "m; kept from walls on top of the robot's radius where the passages allow it (a robot "
+       "behind a narrower one gets the route its radius alone allows)"},
       {"lookahead",
        ParamType::kDouble,
        1.0,
@@ -56,10 +56,14 @@ std::shared_ptr<const RouteField> RouteSensor::Field(const SenseInput& in, doubl
 void RouteSensor::Sense(const SenseInput& in, SensorReading* out) const {
   const Vec2& p = in.robot.position;
   const Vec2& goal = in.robot.goal;
-  const std::shared_ptr<const RouteField> field = Field(in, in.robot.radius + margin_);
-  RouteField::Reading route = field->At(p, lookahead_);
+  RouteField::Reading route = Field(in, in.robot.radius + margin_)->At(p, lookahead_);
+  if (route.distance == kInfinity && margin_ > 0.0) {
+    // Behind a passage narrower than the margin asks for (the robot may stand in one, or in a
+    // room whose door is): the route the robot's own radius allows.
+    route = Field(in, in.robot.radius)->At(p, lookahead_);
+  }
   if (route.distance == kInfinity) {
-    // No free route (outside the map, or every passage narrower than the clearance): the
+    // No free route (outside the map, or every passage narrower than the robot): the
     // straight line, as a robot without this sensor would take.
     route.distance = (goal - p).norm();
     route.waypoint =

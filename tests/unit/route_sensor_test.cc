@@ -90,6 +90,69 @@ TEST_F(RoutePlugin, WithoutAFreeRouteFallsBackToTheStraightLine) {
   EXPECT_NEAR(v[2], 0.0, 1e-9);
 }
 
+// A 10 x 10 room split by a wall at x = 0 with a door `width` wide centred on y = 0.05 (a row
+// of grid cell centres, so that the grid's 0.1 m cells can resolve a few centimetres of slack).
+std::shared_ptr<const StaticMap> RoomWithDoor(double width) {
+  auto map = std::const_pointer_cast<StaticMap>(Room(-5.0));
+  map->rectangles.push_back(Rect::FromCorners(-0.05, -5.0, 0.05, 0.05 - width / 2));
+  map->rectangles.push_back(Rect::FromCorners(-0.05, 0.05 + width / 2, 0.05, 5.0));
+  return map;
+}
+
+TEST_F(RoutePlugin, ADoorNarrowerThanTheMarginStillLeadsThrough) {
+  // 0.68 m: wider than the robot (0.6), narrower than radius + margin on both sides (0.7).
+  const CollisionWorld world(RoomWithDoor(0.68));
+  const std::vector<double> v = Sense(world, Vec2(-2.0, 2.0), Vec2(2.0, 2.0));
+  ASSERT_EQ(v.size(), 3u);
+  // Through the door, not the straight line through the wall (4 m): at least the two legs to
+  // the door's centre, at most those legs and the grid's 2.7% (plus a cell).
+  const double legs = std::hypot(2.0, 1.95) + std::hypot(2.0, 1.95);
+  EXPECT_GT(v[0], legs - 0.05);
+  EXPECT_LT(v[0], 1.027 * legs + 0.1);
+  EXPECT_LT(v[2], -0.3);  // the waypoint turns towards the door, below the line to the goal
+  // A door narrower than the robot: no route, the straight line.
+  const CollisionWorld shut(RoomWithDoor(0.56));
+  EXPECT_NEAR(Sense(shut, Vec2(-2.0, 2.0), Vec2(2.0, 2.0))[0], 4.0, 1e-9);
+}
+
+TEST_F(RoutePlugin, ADiagonalPassageIsOpen) {
+  // Two blocks corner to corner with a diagonal gap of 0.7 m: the robot (0.6 m) fits through
+  // with 5 cm to spare on each side, but no grid cell beside the cells along the gap is free,
+  // so a rule that a diagonal move needs the cells it crosses free closes it (checked: with
+  // that rule, no route at either clearance and the straight line comes back).
+  auto map = std::const_pointer_cast<StaticMap>(Room(-5.0));
+  const double g = 0.7 / std::sqrt(2.0);
+  map->rectangles.push_back(Rect::FromCorners(-5.0, -5.0, 0.0, 0.0));
+  map->rectangles.push_back(Rect::FromCorners(g, g, 5.0, 5.0));
+  const CollisionWorld world(map);
+  // The straight line (4.95 m) crosses the upper block; the route bends through the gap.
+  const Vec2 from(3.0, -0.5), to(-0.5, 3.0), gap_centre(g / 2, g / 2);
+  const double legs = (gap_centre - from).norm() + (to - gap_centre).norm();  // 5.705 m
+  const std::vector<double> v = Sense(world, from, to);
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_GT(v[0], legs - 0.05);
+  EXPECT_LT(v[0], 1.027 * legs + 0.1);
+}
+
+TEST_F(RoutePlugin, ARobotBesideAWallDoesNotSeeThroughIt) {
+  // A block 1.3 m thick; the robot 0.32 m below it, inside the clearance band (radius 0.3 +
+  // margin 0.05), the goal straight across it. The band lets a reading start in blocked cells,
+  // but only its width: the route goes around the block's end, not through it.
+  auto map = std::const_pointer_cast<StaticMap>(Room(-5.0));
+  map->rectangles.push_back(Rect::FromCorners(-3.0, 1.2, 1.4, 2.5));
+  const CollisionWorld world(map);
+  const Vec2 from(0.4, 0.88), to(-0.6, 3.5);
+  const std::vector<double> v = Sense(world, from, to);
+  ASSERT_EQ(v.size(), 3u);
+  // Around the right end (x = 1.4 + 0.35): at least the legs to that corner's clearance.
+  const Vec2 corner(1.75, 2.5);
+  EXPECT_GT(v[0], (corner - from).norm() + (to - corner).norm() - 0.4);
+  // The waypoint leads right along the block (in the frame facing the goal, up and left:
+  // to the right and a little back), not towards the goal.
+  EXPECT_LT(v[2], -0.5);
+  EXPECT_LT(v[1], 0.0);
+}
+
 TEST_F(RoutePlugin, CachedFieldsBelongToTheirWorld) {
   // Same goal, same bounds, same number of rectangles: only the world tells them apart.
   const CollisionWorld open(Room(-4.0));  // a stub of wall, below the robot

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "crowdsim/sim_config.h"
 #include "value_rl/state_encoding.h"
@@ -85,6 +86,13 @@ torch::Tensor ValueNetwork::WithRoutePrior(const torch::Tensor& value, const Sta
 
 namespace {
 
+/// The last layer of an Mlp (a Linear: Mlp's last layer has no ReLU after it).
+torch::nn::Linear LastLinear(torch::nn::Sequential& mlp) {
+  auto last = std::dynamic_pointer_cast<torch::nn::LinearImpl>(mlp->ptr(mlp->size() - 1));
+  if (!last) throw std::logic_error("the value MLP does not end in a Linear layer");
+  return torch::nn::Linear(last);
+}
+
 /// Self state joined with the lidar feature (when there is a lidar): (B, 6 [+ 3] [+ F]).
 class SelfEncoder {
  public:
@@ -122,6 +130,7 @@ class Cadrl final : public ValueNetwork {
     v = v.masked_fill(b.mask.logical_not(), std::numeric_limits<float>::infinity());
     return WithRoutePrior(std::get<0>(v.min(1)), b);
   }
+  torch::nn::Linear OutputLayer() override { return LastLinear(mlp_); }
 
  private:
   SelfEncoder self_;
@@ -162,6 +171,7 @@ class Sarl final : public ValueNetwork {
     }
     return WithRoutePrior(mlp3_->forward(joint).squeeze(1), b);
   }
+  torch::nn::Linear OutputLayer() override { return LastLinear(mlp3_); }
 
  private:
   SelfEncoder self_;

@@ -211,6 +211,14 @@ void ValuePolicy::InitWeights(std::uint64_t seed) {
         p[i] = static_cast<float>(rng.Uniform(-bound, bound));
     }
   }
+  if (impl_->config.route_prior_shape == RoutePriorShape::kDiscounted) {
+    // The network is a correction to the discounted route prior: it starts at none, so the
+    // untrained policy follows the route exactly (a random output layer's differences
+    // between candidate states exceed the prior's ~1% per step and it stalls).
+    torch::nn::Linear out = impl_->model->OutputLayer();
+    out->weight.zero_();
+    out->bias.zero_();
+  }
   UpdateTargetNetwork();
 }
 

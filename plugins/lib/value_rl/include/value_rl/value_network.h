@@ -4,6 +4,7 @@
 
 #include <torch/nn/module.h>
 #include <torch/nn/modules/container/sequential.h>
+#include <torch/nn/modules/linear.h>
 
 #include <memory>
 #include <span>
@@ -44,6 +45,8 @@ class ValueNetwork : public torch::nn::Module {
   /// The run's discount (SimConfig::gamma, per metre at v_pref), which the discounted route
   /// prior uses; set by ValuePolicy::Reset. Default: SimConfig's.
   void SetDiscount(double gamma) { gamma_ = gamma; }
+  /// The layer that gives the network's output (before the route prior).
+  virtual torch::nn::Linear OutputLayer() = 0;
 
  protected:
   explicit ValueNetwork(const ValueRlConfig& config);
