@@ -147,21 +147,29 @@ TEST(StateEncodingTest, RouteIsASuffixOfTheSensorsParameter) {
   EXPECT_EQ(SensorPlugins(plain), (std::vector<std::string>{"person"}));
 }
 
-TEST(StateEncodingTest, RoutePriorTakesItsShareOfThePathDistanceOffTheValue) {
-  ValueRlConfig c = Config(Model::kSarl, SensorSet::kPerson);
-  c.route = true;
-  c.init_seed = 7;
-  ValueRlConfig prior = c;
-  prior.route_prior = 0.05;
-  // dg, v_pref, theta, radius, vx, vy | route distance, waypoint | one human row.
+// A SARL person+route configuration and two of its states that differ only in the route's
+// path distance: 5 m and 12 m.
+struct RoutedStates {
+  RoutedStates() {
+    config.route = true;
+    config.init_seed = 7;
+    // dg, v_pref, theta, radius, vx, vy | route distance, waypoint | one human row.
+    near.values = {4.0f, 1.0f, 0.0f, 0.3f, 0.2f, 0.0f, 5.0f, 1.0f,
+                   0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.3f, 1.4f, 0.6f};
+    far = near;
+    far.values[6] = 12.0f;
+  }
+  ValueRlConfig config = Config(Model::kSarl, SensorSet::kPerson);
   EncodedState near, far;
-  near.values = {4.0f, 1.0f, 0.0f, 0.3f, 0.2f, 0.0f, 5.0f, 1.0f,
-                 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.3f, 1.4f, 0.6f};
-  far = near;
-  far.values[6] = 12.0f;
-  const std::vector<const EncodedState*> states = {&near, &far};
-  const std::vector<float> without = ValuePolicy(c).Values(states);
-  const std::vector<float> with = ValuePolicy(prior).Values(states);
+  std::vector<const EncodedState*> states = {&near, &far};
+};
+
+TEST(StateEncodingTest, RoutePriorTakesItsShareOfThePathDistanceOffTheValue) {
+  const RoutedStates r;
+  ValueRlConfig prior = r.config;
+  prior.route_prior = 0.05;
+  const std::vector<float> without = ValuePolicy(r.config).Values(r.states);
+  const std::vector<float> with = ValuePolicy(prior).Values(r.states);
   EXPECT_NEAR(with[0], without[0] - 0.05 * 5.0, 1e-5);
   EXPECT_NEAR(with[1], without[1] - 0.05 * 12.0, 1e-5);
   // The prior needs the route in the state.
@@ -173,31 +181,27 @@ TEST(StateEncodingTest, RoutePriorTakesItsShareOfThePathDistanceOffTheValue) {
 }
 
 TEST(StateEncodingTest, DiscountedRoutePriorAddsTheFreeRoutesDiscountedReward) {
-  ValueRlConfig c = Config(Model::kSarl, SensorSet::kPerson);
-  c.route = true;
-  c.init_seed = 7;
-  ValueRlConfig prior = c;
+  const RoutedStates r;
+  ValueRlConfig prior = r.config;
   prior.route_prior = 1.0;
   prior.route_prior_shape = RoutePriorShape::kDiscounted;
-  EncodedState near;
-  near.values = {4.0f, 1.0f, 0.0f, 0.3f, 0.2f, 0.0f, 5.0f, 1.0f,
-                 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.3f, 1.4f, 0.6f};
-  EncodedState far = near;
-  far.values[6] = 12.0f;
-  const std::vector<const EncodedState*> states = {&near, &far};
-  const std::vector<float> without = ValuePolicy(c).Values(states);
   ValuePolicy with(prior);
-  std::vector<float> v = with.Values(states);
-  // Before any episode: SimConfig's gamma, 0.9.
-  EXPECT_NEAR(v[0], without[0] + std::pow(0.9, 5.0), 1e-5);
-  EXPECT_NEAR(v[1], without[1] + std::pow(0.9, 12.0), 1e-5);
+  // Untrained, the network's output layer is zero: the value is the prior alone, with
+  // SimConfig's gamma (0.9) before any episode.
+  std::vector<float> v = with.Values(r.states);
+  EXPECT_NEAR(v[0], std::pow(0.9, 5.0), 1e-6);
+  EXPECT_NEAR(v[1], std::pow(0.9, 12.0), 1e-6);
   // An episode's gamma replaces it, in the target network too.
   EpisodeContext ctx;
   ctx.sim.gamma = 0.8;
   with.Reset(ctx);
-  v = with.Values(states);
-  EXPECT_NEAR(v[0], without[0] + std::pow(0.8, 5.0), 1e-5);
-  EXPECT_NEAR(with.TargetValues(states)[1], without[1] + std::pow(0.8, 12.0), 1e-5);
+  EXPECT_NEAR(with.Values(r.states)[0], std::pow(0.8, 5.0), 1e-6);
+  EXPECT_NEAR(with.TargetValues(r.states)[1], std::pow(0.8, 12.0), 1e-6);
+  // Trained, the network adds its own part on top (the zero layer is a start, not a clamp).
+  with.SetLearningRate(0.1, 0.0);
+  const std::vector<float> targets = {0.9f, 0.9f};
+  with.TrainBatch(r.states, targets);
+  EXPECT_GT(with.Values(r.states)[0], std::pow(0.8, 5.0) + 1e-4);
   // The shape is a parameter; without a weight it would do nothing, which is an error.
   Params params = Params::Defaults(Schema(Model::kSarl));
   params.Set("sensors", std::string("lidar+person+route"));
