@@ -24,10 +24,10 @@ namespace {
 
 const double kDiagonal = std::sqrt(2.0), kKnight = std::sqrt(5.0);
 const RouteField::Move kMoves[16] = {
-    {0, 1, 1.0},         {1, 0, 1.0},         {0, -1, 1.0},         {-1, 0, 1.0},
-    {1, 1, kDiagonal},   {1, -1, kDiagonal},  {-1, -1, kDiagonal},  {-1, 1, kDiagonal},
-    {1, 2, kKnight},     {2, 1, kKnight},     {-1, 2, kKnight},     {-2, 1, kKnight},
-    {1, -2, kKnight},    {2, -1, kKnight},    {-1, -2, kKnight},    {-2, -1, kKnight},
+    {0, 1, 1.0},       {1, 0, 1.0},        {0, -1, 1.0},        {-1, 0, 1.0},
+    {1, 1, kDiagonal}, {1, -1, kDiagonal}, {-1, -1, kDiagonal}, {-1, 1, kDiagonal},
+    {1, 2, kKnight},   {2, 1, kKnight},    {-1, 2, kKnight},    {-2, 1, kKnight},
+    {1, -2, kKnight},  {2, -1, kKnight},   {-1, -2, kKnight},   {-2, -1, kKnight},
 };
 
 double RectDistanceSquared(const Rect& r, const Vec2& p) {

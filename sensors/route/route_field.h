@@ -1,6 +1,7 @@
 // Shortest-path distances to one goal over a world's static rectangles: a grid (Dijkstra over
 // 16 move directions between free cells) whose free cells are those a disc of the given clearance
-// fits at (route_field.cc: how much of it a move keeps). Built once per (map, goal, clearance); queried per sensor reading.
+// fits at (route_field.cc: how much of it a move keeps). Built once per (map, goal, clearance);
+// queried per sensor reading.
 #pragma once
 
 #include <vector>
