@@ -170,7 +170,7 @@ void DrawLegend(Drawing* d, const Plot& p, std::size_t window) {
   d->AddText("legend", Vec2(lx + 28, kTop + 94), "validation (greedy)", 12, palette::kInk);
   const std::string notes[] = {"lines: rolling rates of the",
                                "last " + std::to_string(window) + " RL episodes (exploring)",
-                               "points: validation episodes;", "at 0 the imitation weights"};
+                               "points: validation episodes;", "at 0 the starting weights"};
   for (int i = 0; i < 4; ++i) {
     d->AddText("legend-note", Vec2(lx, kTop + 120 + 14 * i), notes[i], 10, palette::kMutedInk);
   }
