@@ -197,6 +197,12 @@ TEST(StateEncodingTest, DiscountedRoutePriorAddsTheFreeRoutesDiscountedReward) {
   with.Reset(ctx);
   EXPECT_NEAR(with.Values(r.states)[0], std::pow(0.8, 5.0), 1e-6);
   EXPECT_NEAR(with.TargetValues(r.states)[1], std::pow(0.8, 12.0), 1e-6);
+  // gamma 0 is allowed: 0^d, finite (1 at the goal, 0 elsewhere), never NaN.
+  ctx.sim.gamma = 0.0;
+  with.Reset(ctx);
+  EXPECT_EQ(with.Values(r.states)[0], 0.0f);
+  ctx.sim.gamma = 0.8;
+  with.Reset(ctx);
   // Trained, the network adds its own part on top (the zero layer is a start, not a clamp).
   with.SetLearningRate(0.1, 0.0);
   const std::vector<float> targets = {0.9f, 0.9f};

@@ -81,7 +81,9 @@ torch::Tensor ValueNetwork::WithRoutePrior(const torch::Tensor& value, const Sta
   if (prior_weight_ == 0.0) return value;
   const torch::Tensor d = b.self.select(1, kSelfDim);
   if (prior_shape_ == RoutePriorShape::kLinear) return value - prior_weight_ * d;
-  return value + prior_weight_ * torch::exp(d * std::log(gamma_));
+  // gamma 0 (allowed): the log of the smallest double keeps 0^0 = 1 instead of 0 x -inf.
+  const double log_gamma = std::log(std::max(gamma_, std::numeric_limits<double>::min()));
+  return value + prior_weight_ * torch::exp(d * log_gamma);
 }
 
 namespace {
