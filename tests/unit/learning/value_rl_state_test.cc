@@ -201,6 +201,10 @@ TEST(StateEncodingTest, DiscountedRoutePriorAddsTheFreeRoutesDiscountedReward) {
   ctx.sim.gamma = 0.0;
   with.Reset(ctx);
   EXPECT_EQ(with.Values(r.states)[0], 0.0f);
+  EncodedState at_goal = r.near;
+  at_goal.values[6] = 0.0f;
+  const std::vector<const EncodedState*> goal_state = {&at_goal};
+  EXPECT_EQ(with.Values(goal_state)[0], 1.0f);
   ctx.sim.gamma = 0.8;
   with.Reset(ctx);
   // Trained, the network adds its own part on top (the zero layer is a start, not a clamp).
