@@ -148,9 +148,10 @@ ValueRlConfig ConfigFromParams(Model model, const Params& params) {
         std::string(ModelName(model)) + ": route_prior " + std::to_string(c.route_prior) +
         " needs the route sensor in the state; use sensors '" + given + "+route' or route_prior 0");
   }
-  c.route_prior_shape = params.GetString("route_prior_shape") == "discounted"
-                            ? RoutePriorShape::kDiscounted
-                            : RoutePriorShape::kLinear;
+  c.route_prior_shape =
+      params.GetString("route_prior_shape") == RoutePriorShapeName(RoutePriorShape::kDiscounted)
+          ? RoutePriorShape::kDiscounted
+          : RoutePriorShape::kLinear;
   if (c.route_prior_shape != RoutePriorShape::kLinear && c.route_prior == 0.0) {
     throw std::invalid_argument(std::string(ModelName(model)) +
                                 ": route_prior_shape discounted has no effect with route_prior 0; "
