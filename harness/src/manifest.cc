@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "blas_kernel.h"
 #include "config_text.h"
 #include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/metrics.h"
@@ -153,6 +154,8 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   j["crowdsim_version"] = Version();
   j["git_commit"] = GitCommit();
   j["compiler"] = __VERSION__;
+  j["cpu"] = CpuModel();
+  j["blas_coretype"] = BlasCoreType();
   j["config_hash"] = suite.ConfigHash();
   // Each row's own hash (HASH LABEL): a later run resumes the rows whose hash is unchanged.
   Json row_hashes = Json::array();

@@ -6,6 +6,8 @@
 #include <optional>
 #include <sstream>
 
+#include "blas_kernel.h"
+
 namespace crowdsim {
 namespace fs = std::filesystem;
 
@@ -147,6 +149,7 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   if (auto it = loaded_.find(key); it != loaded_.end()) return *it->second;
 
   auto lib = std::make_shared<boost::dll::shared_library>();
+  PinBlasKernel();  // before a learned policy's plugin brings OpenBLAS in
   try {
     lib->load(canonical, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
   } catch (const std::exception& e) {

@@ -1,5 +1,7 @@
-// What build this is, for self-describing results.
+// What build this is and what processor runs it, for self-describing results.
 #pragma once
+
+#include <string>
 
 namespace crowdsim {
 
@@ -9,5 +11,9 @@ const char* Version();
 /// The git commit the library was built from ("-dirty" with uncommitted changes, "unknown"
 /// outside a git checkout); refreshed at every build.
 const char* GitCommit();
+
+/// The processor's model name from /proc/cpuinfo ("unknown" where there is none): results
+/// and trainings record it, since BLAS kernels differ between processors.
+std::string CpuModel();
 
 }  // namespace crowdsim

@@ -12,6 +12,7 @@
 #include <optional>
 #include <sstream>
 
+#include "blas_kernel.h"
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/results.h"
 #include "crowdsim/bench/row_instance.h"
@@ -57,23 +58,6 @@ class SignalGuard {
 };
 
 using Clock = std::chrono::steady_clock;
-
-/// The processor's model name (summary.json: trainings are platform-sensitive).
-std::string CpuModel() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      std::string m = colon == std::string::npos ? line : line.substr(colon + 1);
-      m.erase(0, m.find_first_not_of(' '));
-      std::erase(m, '"');
-      std::erase(m, '\\');
-      return m;
-    }
-  }
-  return "unknown";
-}
 
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -567,6 +551,7 @@ void Trainer::WriteSummaryJson() const {
                     {"validation_interval", p.validation_interval},
                     {"validation_episodes", p.validation_episodes}};
   j["cpu"] = CpuModel();
+  j["blas_coretype"] = BlasCoreType();
   j["commit"] = GitCommit();
   j["finished"] = summary_.finished;
   j["phase"] = static_cast<int>(state_.phase);

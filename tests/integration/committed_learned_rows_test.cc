@@ -1,0 +1,109 @@
+// The committed tables of learned policies rerun identically on this processor. OpenBLAS picks
+// its kernels by processor, and kernels that round differently flip a decision between two
+// nearly equal actions now and then (on AMD Zen 4, whose AVX-512 kernels differ from the
+// Haswell kernels the tables were made with: episode 417 of Table 1's line 13, episodes 302
+// and 475 of line 4 with 3 obstacles). The harness pins the Haswell kernels before it loads a
+// plugin (harness/src/blas_kernel.h); this test reruns those rows from their suites and
+// compares every episode with results/. It needs the learned policies' plugins (a build with
+// libtorch) and must not link libtorch itself: OpenBLAS would be loaded before the pin.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#include "blas_kernel.h"
+#include "crowdsim/bench/episode_columns.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/runner.h"
+#include "shell.h"
+#include "temp_dir.h"
+#include "test_paths.h"
+
+namespace crowdsim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::ReadText;
+using testing::TempDir;
+
+// The header line and the lines of `row` of an episodes.csv text.
+std::string LinesOfRow(const std::string& csv, const std::string& row) {
+  std::istringstream in(csv);
+  std::string line, out;
+  std::getline(in, line);
+  out = line + "\n";
+  while (std::getline(in, line)) {
+    if (line.rfind(row + ",", 0) == 0) out += line + "\n";
+  }
+  return out;
+}
+
+class CommittedLearnedRowsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // The suites name weights and world files relative to the repository root.
+    fs::current_path(testing::SourceDir());
+    if (!fs::exists(testing::PluginDir() / "crowdsim_sarl.so")) {
+      GTEST_SKIP() << "no learned-policy plugins in this build (built without libtorch)";
+    }
+    const char* core = std::getenv("OPENBLAS_CORETYPE");
+    if (core != nullptr && std::string(core) != "Haswell") {
+      GTEST_SKIP() << "OPENBLAS_CORETYPE=" << core << " is set outside the harness; the "
+                   << "committed tables were made with OpenBLAS's Haswell kernels";
+    }
+  }
+
+  // Reruns `row` of suites/<suite>.yaml alone and compares its episodes with results/<suite>/.
+  void ExpectRowReruns(const std::string& suite_name, const std::string& row) {
+    const SuiteLoadResult loaded =
+        LoadSuite(testing::SourceDir() / "suites" / (suite_name + ".yaml"), registry_);
+    ASSERT_TRUE(loaded.suite) << suite_name;
+    Suite suite = *loaded.suite;
+    std::erase_if(suite.rows, [&](const RowSpec& r) { return r.label != row; });
+    suite.summaries.clear();
+    ASSERT_EQ(suite.rows.size(), 1u) << "no row " << row << " in " << suite_name;
+    RunOptions o;
+    o.out_dir = dir_.path() / row;
+    o.jobs = 2;
+    o.progress = false;
+    RunSuite(suite, registry_, o);
+    const std::string ours = WithoutTimingColumns(ReadText(o.out_dir / "episodes.csv"));
+    const std::string committed = LinesOfRow(
+        WithoutTimingColumns(ReadText(testing::SourceDir() / "results" / suite_name /
+                                      "episodes.csv")),
+        row);
+    EXPECT_EQ(std::count(committed.begin(), committed.end(), '\n'), 1 + 500);
+    EXPECT_EQ(ours, committed) << row << " of " << suite_name << " differs from results/"
+                               << suite_name << " with OPENBLAS_CORETYPE=" << BlasCoreType();
+  }
+
+  TempDir dir_;
+  PluginRegistry registry_{{testing::PluginDir()}};
+};
+
+TEST_F(CommittedLearnedRowsTest, SarlRowOfTable1RerunsIdentically) {
+  ExpectRowReruns("table1", "line13_sarl_pp_lidar_person_rect0");
+}
+
+TEST_F(CommittedLearnedRowsTest, CadrlRowOfTable1With3ObstaclesRerunsIdentically) {
+  ExpectRowReruns("table1_3obs", "line04_cadrl_pp_lidar_rect1_nohumans");
+}
+
+// An OPENBLAS_CORETYPE set before the harness runs (a user's, or an environment that avoids a
+// kernel known to fail on its processor) is left as it is.
+TEST(PinBlasKernel, LeavesAChoiceMadeOutsideAlone) {
+  const char* before = std::getenv("OPENBLAS_CORETYPE");
+  const std::string saved = before != nullptr ? before : "";
+  setenv("OPENBLAS_CORETYPE", "Sandybridge", 1);
+  PinBlasKernel();
+  EXPECT_EQ(BlasCoreType(), "Sandybridge");
+  if (before != nullptr) {
+    setenv("OPENBLAS_CORETYPE", saved.c_str(), 1);
+  } else {
+    unsetenv("OPENBLAS_CORETYPE");
+  }
+}
+
+}  // namespace
+}  // namespace crowdsim
