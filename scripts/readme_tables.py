@@ -15,7 +15,8 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+) begin -->\n)(?P<body>.*?)(<!-- table:(?P=name) end -->)",
                    re.S)
-INFO = ["line", "model", "sensor(s)", "# of obstacles", "humans", "floor plan"]
+INFO = ["line", "model", "sensor(s)", "# of obstacles", "humans", "floor plan", "seed", "weights",
+        "procedure"]
 # The paper's column names where they need a word more out of the paper's context.
 HEADER = {"# of obstacles": "trained with # obstacles", "humans": "trained with humans"}
 
