@@ -69,10 +69,10 @@ class CommittedLearnedRowsTest : public ::testing::Test {
     o.progress = false;
     RunSuite(suite, registry_, o);
     const std::string ours = WithoutTimingColumns(ReadText(o.out_dir / "episodes.csv"));
-    const std::string committed = LinesOfRow(
-        WithoutTimingColumns(ReadText(testing::SourceDir() / "results" / suite_name /
-                                      "episodes.csv")),
-        row);
+    const std::string committed =
+        LinesOfRow(WithoutTimingColumns(
+                       ReadText(testing::SourceDir() / "results" / suite_name / "episodes.csv")),
+                   row);
     EXPECT_EQ(std::count(committed.begin(), committed.end(), '\n'), 1 + 500);
     EXPECT_EQ(ours, committed) << row << " of " << suite_name << " differs from results/"
                                << suite_name << " with OPENBLAS_CORETYPE=" << BlasCoreType();
