@@ -39,7 +39,7 @@ bench: build
 # (nice'd, one core each), resuming interrupted ones: hours of work, see docs/training.md.
 TRAIN_JOBS ?= 2
 train-all: build
-	scripts/train_all.sh -j $(TRAIN_JOBS)
+	scripts/train_all.sh -j $(TRAIN_JOBS) --build $(BUILD)
 
 # Builds the Python package crowdsim_bench into $(BUILD)/python (part of `make build` too).
 python: build

@@ -4,30 +4,41 @@
 # checkpoint. Safe to rerun at any time: finished trainings are skipped (one whose file now
 # asks for more RL episodes resumes from its last checkpoint and goes on to the new length).
 #
-#   scripts/train_all.sh [-j N] [--seeds "1010 2020 3030"] [--bin PATH] [FILE.yaml[@SEED] ...]
+#   scripts/train_all.sh [-j N] [--seeds "1010 2020 3030"] [--build DIR | --bin PATH]
+#                        [FILE.yaml[@SEED] ...]
 #
 # Without files: suites/train/*.yaml. A file trains with its own seed into
 # results/train/<name>/; FILE@SEED (or --seeds for every file) with another seed into
 # results/train/<name>_seed<SEED>/. Trainings start in the order given. Each training's
-# output goes to <out>/train.log.
+# output goes to <out>/train.log. The trainings run from a frozen copy of the build (DIR,
+# default build/): its install (programs, libraries, plugins, data; not the models) under
+# results/train/.frozen/<time>-<commit>/, so that rebuilding during a campaign of hours
+# changes no training that runs or waits. --bin PATH runs that program as it is instead.
 set -euo pipefail
 
 jobs=2
 seeds=""
-bin="build/bin/crowdsim-bench"
+build="build"
+bin=""
 files=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -j) jobs="$2"; shift 2 ;;
     --seeds) seeds="$2"; shift 2 ;;
+    --build) build="$2"; shift 2 ;;
     --bin) bin="$2"; shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
     -*) echo "train_all: unknown option '$1' (see --help)" >&2; exit 2 ;;
     *) files+=("$1"); shift ;;
   esac
 done
 [[ ${#files[@]} -gt 0 ]] || files=(suites/train/*.yaml)
-[[ -x "$bin" ]] || { echo "train_all: '$bin' not found; run 'make build' first (or pass --bin)" >&2; exit 2; }
+if [[ -n "$bin" ]]; then
+  [[ -x "$bin" ]] || { echo "train_all: '$bin' not found (--bin)" >&2; exit 2; }
+else
+  [[ -x "$build/bin/crowdsim-bench" && -f "$build/cmake_install.cmake" ]] ||
+    { echo "train_all: no build in '$build'; run 'make build' first (or pass --build DIR)" >&2; exit 2; }
+fi
 
 # One line per training to run: FILE SEED OUT (SEED '-' = the file's own).
 plan=()
@@ -57,6 +68,16 @@ for entry in "${files[@]}"; do
 done
 [[ ${#plan[@]} -gt 0 ]] || { echo "train_all: nothing to train"; exit 0; }
 echo "train_all: ${#plan[@]} training(s), $jobs at a time"
+if [[ -z "$bin" ]]; then
+  commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+  [[ -z "$(git status --porcelain --untracked-files=no 2>/dev/null)" ]] || commit="$commit-dirty"
+  frozen="results/train/.frozen/$(date -u +%Y%m%dT%H%M%SZ)-$commit"
+  # The models are not part of it (component "models"): trainings do not read them.
+  cmake --install "$build" --prefix "$frozen" --component Unspecified > /dev/null ||
+    { echo "train_all: could not install '$build' into $frozen" >&2; exit 1; }
+  bin="$frozen/bin/crowdsim-bench"
+  echo "train_all: running a frozen copy of $build: $frozen"
+fi
 
 run_one() {
   local f="$1" s="$2" out="$3" bin="$4"
