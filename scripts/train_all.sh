@@ -69,9 +69,9 @@ done
 [[ ${#plan[@]} -gt 0 ]] || { echo "train_all: nothing to train"; exit 0; }
 echo "train_all: ${#plan[@]} training(s), $jobs at a time"
 if [[ -z "$bin" ]]; then
-  commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-  [[ -z "$(git status --porcelain --untracked-files=no 2>/dev/null)" ]] || commit="$commit-dirty"
-  frozen="results/train/.frozen/$(date -u +%Y%m%dT%H%M%SZ)-$commit"
+  # Named after the commit the build was made from (as its manifests record it), not HEAD's.
+  commit=$("$build/bin/crowdsim-bench" --version | sed -n 's/.*(commit \([^)]*\)).*/\1/p')
+  frozen="results/train/.frozen/$(date -u +%Y%m%dT%H%M%SZ)-${commit:-unknown}"
   # The models are not part of it (component "models"): trainings do not read them.
   cmake --install "$build" --prefix "$frozen" --component Unspecified > /dev/null ||
     { echo "train_all: could not install '$build' into $frozen" >&2; exit 1; }
