@@ -16,7 +16,6 @@
 #include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/results.h"
 #include "crowdsim/bench/runner.h"
-#include "shell.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
