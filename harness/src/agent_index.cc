@@ -1,6 +1,7 @@
 #include "crowdsim/agent_index.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -37,6 +38,8 @@ class KBest {
   void Write(std::vector<int>* out) const {
     for (int k = 0; k < n_; ++k) out->push_back(slots_[k].i);
   }
+  /// The k-th best distance squared, or -1 while fewer than k hits have come.
+  double KthD2() const { return n_ == k_ ? slots_[n_ - 1].d2 : -1.0; }
 
  private:
   Hit* slots_;
@@ -53,9 +56,21 @@ inline double GapTo(double x, double lo, double hi, double margin) {
   return std::max(0.0, std::max(lo - x, x - hi) - margin);
 }
 
+// First and last cell (of `cells` along an axis) that hold coordinates from lo to hi, given
+// as offsets from the grid's origin times the inverse cell size; first > last when none.
+// Truncation stands in for floor: a negative lower bound clamps to 0 either way, and a
+// negative upper bound (the span lies before the grid) is tested first.
+inline void CellRange(double lo, double hi, int cells, int* first, int* last) {
+  const double top = static_cast<double>(cells - 1);
+  *first = static_cast<int>(std::clamp(lo, 0.0, top + 1.0));
+  *last = hi < 0.0 ? -1 : static_cast<int>(std::min(hi, top));
+}
+
 }  // namespace
 
 void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
+  // A new crowd size is taken for new agents: their radii start unknown (0).
+  if (hint_.size() != agents.size()) hint_.assign(agents.size(), 0.0f);
   agents_ = agents;
   cell_ = cell_size;
   if (agents.empty()) {
@@ -147,6 +162,82 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
     NearestOfFew(p, range_sq, max_count, exclude, out);
     return;
   }
+  // The querying agent's radius from its last query, when there is one: a disc that held its
+  // k nearest a step ago most likely holds them now.
+  const bool hinted =
+      exclude >= 0 && exclude < static_cast<int>(hint_.size()) && max_count <= kMaxHintedCount;
+  double kth_d2 = -1.0;
+  if (!hinted) {
+    RingSearch(p, range, max_count, exclude, out, &kth_d2);
+    return;
+  }
+  std::atomic_ref<float> hint(hint_[exclude]);
+  const double radius = hint.load(std::memory_order_relaxed);
+  if (!(radius > 0.0 &&
+        DiscSearch(p, range, std::min(range, radius), max_count, exclude, out, &kth_d2))) {
+    RingSearch(p, range, max_count, exclude, out, &kth_d2);
+  }
+  hint.store(kth_d2 < 0.0 ? static_cast<float>(range)
+                          : static_cast<float>(kHintScale * std::sqrt(kth_d2) + kHintSlack),
+             std::memory_order_relaxed);
+}
+
+bool AgentIndex::DiscSearch(const Vec2& p, double range, double radius, int max_count, int exclude,
+                            std::vector<int>* out, double* kth_d2) const {
+  // Every agent within `radius` of p (and within range) is gathered, row by row of cells, each
+  // row cut to the chord of the disc; the cell bounds carry margin_ for rounding. Gathering is
+  // a store and a count, without a branch on the distance.
+  const double range_sq = range * range;
+  const double radius_sq = radius * radius;
+  const double reach = radius + margin_;
+  const double inv_cell = 1.0 / cell_;
+  int y0, y1;
+  CellRange((p.y() - reach - origin_.y()) * inv_cell, (p.y() + reach - origin_.y()) * inv_cell, ny_,
+            &y0, &y1);
+  // First each row's run of agents (the square roots of all rows at once), then the agents.
+  constexpr int kMaxRows = 64;
+  if (y1 - y0 + 1 > kMaxRows) return false;  // a disc of very many cells: the ring walk
+  int run_begin[kMaxRows], run_end[kMaxRows];
+  int runs = 0, total = 0;
+  for (int cy = y0; cy <= y1; ++cy) {
+    const double gy =
+        GapTo(p.y(), origin_.y() + cy * cell_, origin_.y() + (cy + 1) * cell_, margin_);
+    const double half_chord = std::sqrt(std::max(0.0, radius_sq - gy * gy)) + margin_;
+    int xa, xb;
+    CellRange((p.x() - half_chord - origin_.x()) * inv_cell,
+              (p.x() + half_chord - origin_.x()) * inv_cell, nx_, &xa, &xb);
+    if (gy > radius || xa > xb) continue;
+    run_begin[runs] = cell_start_[cy * nx_ + xa];
+    run_end[runs] = cell_start_[cy * nx_ + xb + 1];
+    total += run_end[runs] - run_begin[runs];
+    ++runs;
+  }
+  if (total > kDiscCapacity) return false;  // a crowd too dense for the slots
+  Hit found[kDiscCapacity];
+  int n = 0;
+  for (int r = 0; r < runs; ++r) {
+    for (int k = run_begin[r]; k < run_end[r]; ++k) {
+      const double d2 = (position_[k] - p).squaredNorm();
+      const int i = order_[k];
+      found[n] = {d2, i};
+      n += static_cast<int>((d2 <= radius_sq) & (d2 < range_sq) & (i != exclude));
+    }
+  }
+  // Enough agents within the disc: the k nearest of all are the k nearest of these, as any
+  // agent outside the disc is farther than each of them. Fewer: only a disc that covered the
+  // whole range gives the answer (all of them).
+  if (n < max_count && radius < range) return false;
+  Hit slots[kMaxHintedCount];
+  KBest best(slots, max_count);
+  for (int j = 0; j < n; ++j) best.Offer(found[j]);
+  best.Write(out);
+  *kth_d2 = best.KthD2();
+  return true;
+}
+
+void AgentIndex::RingSearch(const Vec2& p, double range, int max_count, int exclude,
+                            std::vector<int>* out, double* kth_d2) const {
+  const double range_sq = range * range;
   constexpr int kOnStack = 32;
   Hit stack_slots[kOnStack];
   std::vector<Hit> heap_slots(max_count > kOnStack ? max_count : 0);
@@ -165,7 +256,7 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
   const int y0 = std::max(0, static_cast<int>(std::floor((p.y() - range - origin_.y()) / cell_)));
   const int y1 =
       std::min(ny_ - 1, static_cast<int>(std::floor((p.y() + range - origin_.y()) / cell_)));
-  if (x0 > x1 || y0 > y1) return;
+  if (x0 > x1 || y0 > y1) return;  // kth_d2 stays -1: none in range
 
   // Agents of cells [xa, xb] of row cy: one contiguous run of the cell-sorted arrays, skipped
   // when its nearest point is too far.
@@ -212,6 +303,7 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
     }
   }
   best.Write(out);
+  *kth_d2 = best.KthD2();
 }
 
 }  // namespace crowdsim

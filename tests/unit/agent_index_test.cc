@@ -157,6 +157,39 @@ TEST(AgentIndex, NearestMatchesBruteForceInSmallCrowdsWithTies) {
   }
 }
 
+// A crowd that moves from step to step, each agent querying from where it stands (its own
+// index excluded), as ORCA's humans do: a query starts from the disc its last query found,
+// which the motion makes too small (agents jump away), too large (they crowd in) or right.
+// Every answer is still the brute-force one, also when the agents swap places in the array
+// (a hint then belongs to another agent) and when the crowd changes size.
+TEST(AgentIndex, QueriesOfAMovingCrowdMatchBruteForce) {
+  Rng rng(31);
+  AgentIndex index;
+  std::vector<AgentState> agents;
+  for (int step = 0; step < 120; ++step) {
+    if (step % 40 == 0) {
+      agents.assign(60 + 70 * (step / 40), AgentState{});
+      for (auto& a : agents) a.position = Vec2(rng.Uniform(0, 40), rng.Uniform(0, 40));
+    }
+    const int n = static_cast<int>(agents.size());
+    for (auto& a : agents) {
+      const double jump = rng.Below(50) == 0 ? 15.0 : 0.4;  // now and then far away
+      a.position += Vec2(rng.Uniform(-jump, jump), rng.Uniform(-jump, jump));
+    }
+    if (step % 10 == 5) {  // everybody gathers in a corner: discs too large
+      for (auto& a : agents) a.position = 0.2 * a.position;
+    }
+    if (step % 10 == 7) std::swap(agents[0], agents[n - 1]);
+    index.Rebuild(agents);
+    const double range = step % 3 == 0 ? 4.0 : 12.0;  // often fewer than k in range
+    const int k = 1 + static_cast<int>(rng.Below(15));
+    for (int i = 0; i < n; ++i) {
+      SCOPED_TRACE("step " + std::to_string(step) + " agent " + std::to_string(i));
+      ExpectBruteForceAnswer(agents, index, agents[i].position, range, k, i);
+    }
+  }
+}
+
 TEST(AgentIndex, EmptyAndSingle) {
   AgentIndex index;
   std::vector<AgentState> none;
