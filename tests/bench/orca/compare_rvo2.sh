@@ -4,7 +4,8 @@
 # not part of this repository. Its Circle.cc and Blocks.cc are built as its own build would
 # (g++ -O2 -DNDEBUG, no OpenMP: one thread, as our benchmark), with the position output off and
 # Blocks' random generator unseeded (the same run every time). A second build with the output
-# on counts each example's steps (one output line per step). Then, ROUNDS times, each RVO2
+# on counts each example's steps (one output line per step) and gives its worst overlap, to set
+# beside ours (the benchmark's counters). Then, ROUNDS times, each RVO2
 # example runs as a whole process (time per step = its CPU time / its steps; its set-up is
 # microseconds) alternated with our build/bench/rvo2_scenarios_bench (its per_step counter,
 # CPU time per step).
@@ -21,17 +22,57 @@ for f in src/RVOSimulator.cc examples/Circle.cc examples/Blocks.cc; do
 done
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-declare -A steps
+# The worst overlap of a run printed by an example built with its output on: each line is the
+# time, then every agent's position "(x,y)" (6 significant digits: ~1e-4 m at 100 m); the
+# deepest pairwise penetration 2 r - distance over all lines, or 0 (all agents of radius r).
+cat > "$work/worst_overlap.cc" <<'CC'
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+int main(int argc, char** argv) {
+  const double r = std::atof(argv[1]);
+  double worst = 0.0;
+  std::string line;
+  std::vector<double> x, y;
+  while (std::getline(std::cin, line)) {
+    x.clear();
+    y.clear();
+    for (std::size_t at = line.find('('); at != std::string::npos; at = line.find('(', at + 1)) {
+      double px, py;
+      if (std::sscanf(line.c_str() + at, "(%lf,%lf)", &px, &py) == 2) {
+        x.push_back(px);
+        y.push_back(py);
+      }
+    }
+    for (std::size_t i = 0; i < x.size(); ++i)
+      for (std::size_t j = i + 1; j < x.size(); ++j)
+        worst = std::max(worst, 2.0 * r - std::hypot(x[i] - x[j], y[i] - y[j]));
+  }
+  std::printf("%.3f\n", worst);
+}
+CC
+g++ -O2 -std=c++17 "$work/worst_overlap.cc" -o "$work/worst_overlap"
+declare -A steps overlap
+declare -A radius=([Circle]=1.5 [Blocks]=2)
 for example in Circle Blocks; do
   for output in 0 1; do
     g++ -O2 -DNDEBUG -std=c++17 -DRVO_OUTPUT_TIME_AND_POSITIONS=$output \
       -DRVO_SEED_RANDOM_NUMBER_GENERATOR=0 -I"$rvo2/src" "$rvo2/examples/$example.cc" \
       "$rvo2"/src/*.cc -o "$work/$example$output"
   done
-  steps[$example]=$("$work/${example}1" | wc -l)
+  "$work/${example}1" > "$work/$example.out"
+  steps[$example]=$(wc -l < "$work/$example.out")
+  overlap[$example]=$("$work/worst_overlap" "${radius[$example]}" < "$work/$example.out")
 done
 echo "RVO2 at $(git -C "$rvo2" rev-parse --short HEAD 2>/dev/null || echo '?'):" \
-  "Circle ${steps[Circle]} steps, Blocks ${steps[Blocks]} steps"
+  "Circle ${steps[Circle]} steps, worst overlap ${overlap[Circle]} m;" \
+  "Blocks ${steps[Blocks]} steps, worst overlap ${overlap[Blocks]} m"
+echo "ours: $("$bench" --benchmark_min_time=0.01 2>/dev/null |
+  awk '/^BM_/ { printf "%s", $1; for (i = 2; i <= NF; ++i) if ($i ~ /^(steps|worst_overlap_m)=/) printf " %s", $i; printf "; " }')"
 # CPU seconds (user + system) of one whole run of $1, as our benchmark counts CPU time.
 seconds() {
   local TIMEFORMAT='%3U %3S' t
