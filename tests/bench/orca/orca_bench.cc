@@ -51,6 +51,35 @@ void BM_OrcaDecision5Neighbours7Rects(benchmark::State& state) {
 }
 BENCHMARK(BM_OrcaDecision5Neighbours7Rects);
 
+// The obstacle edges near an agent (range 5.3 m, a CrowdNav human's), among boxes of 0.5-1.5 m
+// scattered over a square: 30 in 12 m (a Gibson plan's count and size) and 600 in 44 m (an
+// S3DIS building floor's), queried from random points.
+void BM_ObstacleQuery(benchmark::State& state) {
+  const int boxes = static_cast<int>(state.range(0));
+  const double side = state.range(1);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> where(0.0, side), size(0.5, 1.5);
+  std::vector<Rect> rects;
+  for (int i = 0; i < boxes; ++i) {
+    const double x = where(rng), y = where(rng);
+    rects.push_back(Rect::FromCorners(x, y, x + size(rng), y + size(rng)));
+  }
+  const OrcaObstacles obstacles = OrcaObstacles::FromRects(rects);
+  std::vector<Vec2> points(256);
+  for (Vec2& p : points) p = Vec2(where(rng), where(rng));
+  std::vector<ObstacleNeighbor> near;
+  std::size_t next = 0;
+  double edges = 0.0;
+  for (auto _ : state) {
+    obstacles.Query(points[next], 5.3, &near);
+    next = (next + 1) % points.size();
+    edges += static_cast<double>(near.size());
+    benchmark::DoNotOptimize(near.data());
+  }
+  state.counters["edges"] = edges / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_ObstacleQuery)->Args({30, 12})->Args({600, 44});
+
 // RVO2's Blocks (reference facts 2.6), restarted whenever every agent is within 20 m.
 testing::TestSim MakeBlocks() { return testing::MakeBlocksSim(0.25); }
 

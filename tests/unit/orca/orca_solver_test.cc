@@ -2,12 +2,15 @@
 // walls and corners, speed limit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "crowdsim/rng.h"
 #include "orca/geometry.h"
 #include "orca/linear_program.h"
 #include "orca/obstacles.h"
@@ -99,6 +102,49 @@ TEST(OrcaObstaclesTest, RectanglesBecomeCounterClockwiseConvexPolygons) {
   obstacles.Query(Vec2(3.0, -0.5), 5.0, &near);
   ASSERT_EQ(near.size(), 2u);
   EXPECT_LE(near[0].dist_sq, near[1].dist_sq);
+}
+
+// Every query gives each edge facing the point within range, nearest first, equal distances in
+// insertion order, among many boxes that touch, share sides or are flat walls, also from far
+// outside.
+TEST(OrcaObstaclesTest, QueryGivesEveryFacingEdgeInRangeNearestFirst) {
+  Rng rng(41);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Rect> rects;
+    const int count = 8 + static_cast<int>(rng.Below(120));
+    for (int i = 0; i < count; ++i) {
+      // On a 1 m lattice half of the time: shared sides and equal distances.
+      const bool lattice = trial % 2 == 0;
+      const double x = lattice ? static_cast<double>(rng.Below(30)) : rng.Uniform(0, 30);
+      const double y = lattice ? static_cast<double>(rng.Below(30)) : rng.Uniform(0, 30);
+      const double w = rng.Below(6) == 0 ? 0.0 : (lattice ? 1.0 : rng.Uniform(0.1, 3));
+      const double h = lattice ? 1.0 : rng.Uniform(0.1, 3);
+      rects.push_back(Rect::FromCorners(x, y, x + w, y + h));
+    }
+    const OrcaObstacles obstacles = OrcaObstacles::FromRects(rects);
+    const auto v = obstacles.vertices();
+    std::vector<ObstacleNeighbor> got;
+    for (int q = 0; q < 50; ++q) {
+      const Vec2 p = q % 10 == 0 ? Vec2(rng.Uniform(-40, 70), rng.Uniform(-40, 70))
+                                 : Vec2(rng.Uniform(-2, 32), rng.Uniform(-2, 32));
+      const double range = q % 7 == 0 ? 60.0 : rng.Uniform(0.5, 8);
+      std::vector<ObstacleNeighbor> scan;
+      for (int i = 0; i < static_cast<int>(v.size()); ++i) {
+        if (LeftOf(v[i].point, v[v[i].next].point, p) >= 0.0) continue;
+        const double d2 = SegmentDistanceSq(v[i].point, v[v[i].next].point, p);
+        if (d2 < range * range) scan.push_back({d2, i});
+      }
+      std::stable_sort(scan.begin(), scan.end(),
+                       [](const auto& a, const auto& b) { return a.dist_sq < b.dist_sq; });
+      obstacles.Query(p, range, &got);
+      SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
+      ASSERT_EQ(got.size(), scan.size());
+      for (std::size_t k = 0; k < got.size(); ++k) {
+        EXPECT_EQ(got[k].vertex, scan[k].vertex);
+        EXPECT_EQ(got[k].dist_sq, scan[k].dist_sq);
+      }
+    }
+  }
 }
 
 TEST(OrcaSolverTest, FreeAgentTakesItsPreferredVelocity) {

@@ -65,13 +65,15 @@ void OrcaObstacles::Query(const Vec2& p, double range, std::vector<ObstacleNeigh
       if (LeftOf(v1.point, v2.point, p) >= 0.0) continue;
       const double dist_sq = SegmentDistanceSq(v1.point, v2.point, p);
       if (dist_sq >= range_sq) continue;
-      // Insertion keeps the list sorted; it is short (a few edges).
       out->push_back({dist_sq, i});
-      for (std::size_t k = out->size() - 1; k > 0 && dist_sq < (*out)[k - 1].dist_sq; --k) {
-        std::swap((*out)[k], (*out)[k - 1]);
-      }
     }
   }
+  // Nearest first; equal distances in insertion order, which is the order of the first vertex
+  // (polygons and their vertices are stored as added, and visited in that order). In a floor
+  // plan 25-60 edges come back, where one sort beats sorted insertion.
+  std::sort(out->begin(), out->end(), [](const ObstacleNeighbor& a, const ObstacleNeighbor& b) {
+    return a.dist_sq < b.dist_sq || (a.dist_sq == b.dist_sq && a.vertex < b.vertex);
+  });
 }
 
 }  // namespace crowdsim::orca
