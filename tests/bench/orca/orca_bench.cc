@@ -94,8 +94,7 @@ void BM_Blocks100AgentStep(benchmark::State& state) {
       const Vec2 d = a.goal - a.state.position;
       done = done && d.squaredNorm() <= 400.0;
       const double phi = angle(rng);
-      a.pref_velocity = (d.squaredNorm() > 1.0 ? Vec2(d.normalized()) : d) +
-                        size(rng) * Vec2(std::cos(phi), std::sin(phi));
+      a.pref_velocity = testing::TowardsGoal(a) + size(rng) * Vec2(std::cos(phi), std::sin(phi));
     }
     if (done) {
       state.PauseTiming();

@@ -21,6 +21,7 @@ namespace {
 
 using testing::SimAgent;
 using testing::TestSim;
+using testing::TowardsGoal;
 
 /// One of RVO2's examples: its set-up, its preferred-velocity rule and its arrival test.
 struct Rvo2Example {
@@ -33,12 +34,6 @@ struct Rvo2Example {
 };
 
 constexpr float kTwoPi = 6.28318530717958647692F;  // RVO2's RVO_TWO_PI, a float
-
-// Towards the goal at most 1 m/s per metre away (RVO2's examples).
-Vec2 TowardsGoal(const SimAgent& a) {
-  const Vec2 d = a.goal - a.state.position;
-  return d.squaredNorm() > 1.0 ? Vec2(d.normalized()) : d;
-}
 
 // Every agent within `distance(agent)` of its goal (RVO2's reachedGoal).
 template <typename Distance>

@@ -59,11 +59,10 @@ CircleResult RunCircle(bool mirror) {
       break;
     }
     for (auto& a : sim.agents()) {
-      const Vec2 d = a.goal - a.state.position;
       const double phi = 2.0 * std::numbers::pi * unit(rng);
       Vec2 noise = 1e-3 * unit(rng) * Vec2(std::cos(phi), std::sin(phi));
       if (mirror) noise.x() = -noise.x();
-      a.pref_velocity = (d.squaredNorm() > 1.0 ? Vec2(d.normalized()) : d) + noise;
+      a.pref_velocity = testing::TowardsGoal(a) + noise;
     }
     sim.Step();
     result.worst_overlap = std::max(result.worst_overlap, -testing::MinPairGap(sim.agents()));
@@ -117,11 +116,9 @@ TEST(OrcaScenarioTest, BlocksOf100AgentsGetWithin20mAndNeverEnterAnObstacle) {
       done = done && (a.state.position - a.goal).squaredNorm() <= 400.0;
     if (done) break;
     for (auto& a : sim.agents()) {
-      const Vec2 d = a.goal - a.state.position;
       const double phi = angle(rng);
       const double dist = size(rng);
-      a.pref_velocity = (d.squaredNorm() > 1.0 ? Vec2(d.normalized()) : d) +
-                        dist * Vec2(std::cos(phi), std::sin(phi));
+      a.pref_velocity = testing::TowardsGoal(a) + dist * Vec2(std::cos(phi), std::sin(phi));
     }
     sim.Step();
     for (const auto& a : sim.agents()) {

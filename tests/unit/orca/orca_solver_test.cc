@@ -37,12 +37,6 @@ SimAgent CrowdNavAgent(const Vec2& position, const Vec2& goal) {
   return a;
 }
 
-// CrowdNav's rule: towards the goal, unit length when farther than 1 m.
-Vec2 Pref(const SimAgent& a) {
-  const Vec2 d = a.goal - a.state.position;
-  return d.squaredNorm() > 1.0 ? Vec2(d.normalized()) : d;
-}
-
 double Penetration(const SimAgent& a, const Rect& r) {
   return a.state.radius - std::sqrt(RectDistanceSq(r, a.state.position));
 }
@@ -160,7 +154,7 @@ double SwapHeadOn(double offset, TestSim* sim) {
   sim->AddAgent(CrowdNavAgent(Vec2(4.0, offset), Vec2(-4.0, offset)));
   double min_gap = kInfinity;
   for (int step = 0; step < 80; ++step) {
-    for (auto& a : sim->agents()) a.pref_velocity = Pref(a);
+    for (auto& a : sim->agents()) a.pref_velocity = testing::TowardsGoal(a);
     sim->Step();
     min_gap = std::min(min_gap, testing::MinPairGap(sim->agents()));
   }

@@ -23,6 +23,13 @@ struct SimAgent {
   bool feasible = true;               ///< whether its last solve satisfied every ORCA line
 };
 
+/// The preferred velocity of RVO2's examples (and CrowdNav's rule): towards the goal, of unit
+/// length when the goal is farther than 1 m.
+inline Vec2 TowardsGoal(const SimAgent& agent) {
+  const Vec2 d = agent.goal - agent.state.position;
+  return d.squaredNorm() > 1.0 ? Vec2(d.normalized()) : d;
+}
+
 /// RVO2-like simulation: a neighbour grid rebuilt each step, then compute all, move all.
 class TestSim {
  public:
