@@ -23,4 +23,9 @@ if(CROWDSIM_BUILD_BENCHMARKS)
   crowdsim_add_benchmark(rvo2_scenarios_bench
     SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bench/orca/rvo2_scenarios_bench.cc
     LIBS crowdsim_orca_solver crowdsim_orca_test_sim)
+  # One seeded run of Circle or Blocks, for overlap_stats.sh's paired comparison with RVO2.
+  add_executable(rvo2_overlap_stats ${CMAKE_CURRENT_SOURCE_DIR}/bench/orca/rvo2_overlap_stats.cc)
+  target_link_libraries(rvo2_overlap_stats PRIVATE crowdsim_orca_solver crowdsim_orca_test_sim)
+  target_compile_options(rvo2_overlap_stats PRIVATE ${CROWDSIM_WARNINGS})
+  set_target_properties(rvo2_overlap_stats PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bench")
 endif()
