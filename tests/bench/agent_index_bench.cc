@@ -47,6 +47,7 @@ void BM_NearestPerAgent(benchmark::State& state, bool move) {
 }
 BENCHMARK_CAPTURE(BM_NearestPerAgent, moving, true)
     ->Arg(5)
+    ->Arg(16)
     ->Arg(50)
     ->Arg(200)
     ->Arg(1000)
