@@ -1,6 +1,8 @@
 #include "crowdsim/human_placement.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -88,9 +90,10 @@ double RelaxedDistance(double full, int t, int max_tries) {
   return full * (1.0 - f);
 }
 
-bool Draw(const PlacementArea& area, const PointRule& rule, int max_tries, Rng& rng, Vec2* out) {
+bool Draw(const PlacementArea& area, const PointSampler& sample, const PointRule& rule,
+          int max_tries, Rng& rng, Vec2* out) {
   for (int t = 0; t < max_tries; ++t) {
-    const Vec2 p = area.sample(rng);
+    const Vec2 p = sample(rng);
     if (!area.is_free(p)) continue;
     if (rule.stricter != nullptr && *rule.stricter && t < max_tries / 2 && !(*rule.stricter)(p)) {
       continue;
@@ -107,14 +110,54 @@ bool Draw(const PlacementArea& area, const PointRule& rule, int max_tries, Rng& 
   return false;
 }
 
+// The area of the free space in `area.region`: the share of a 256 x 256 grid of cell centres
+// where a centre may stand (m^2; taken only when placement has failed).
+double FreeArea(const PlacementArea& area) {
+  constexpr int kGrid = 256;
+  const Rect& r = area.region;
+  const Vec2 cell((r.max.x() - r.min.x()) / kGrid, (r.max.y() - r.min.y()) / kGrid);
+  int free = 0;
+  for (int i = 0; i < kGrid; ++i) {
+    for (int j = 0; j < kGrid; ++j) {
+      free += area.is_free(r.min + Vec2((i + 0.5) * cell.x(), (j + 0.5) * cell.y())) ? 1 : 0;
+    }
+  }
+  return r.Area() * free / (kGrid * kGrid);
+}
+
+std::string Format(const char* format, double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), format, value);
+  return buf;
+}
+
 [[noreturn]] void Fail(const std::string& what, int human, int num_humans,
-                       const HumanPlacementOptions& o) {
-  throw PlacementError(
-      "cannot place the " + what + " of human " + std::to_string(human + 1) + " of " +
-      std::to_string(num_humans) + " after " + std::to_string(o.max_tries) +
-      " tries: the free space is too small or too crowded for discs of radius " +
-      std::to_string(o.human_radius) + " m kept " + std::to_string(o.discomfort_dist) +
-      " m apart. Fix: use fewer humans (num_humans), smaller radii, or a larger world.");
+                       const HumanPlacementOptions& o, const PlacementArea& area) {
+  const double gap = 2.0 * o.human_radius + o.discomfort_dist;
+  std::string message = "cannot place the " + what + " of human " + std::to_string(human + 1) +
+                        " of " + std::to_string(num_humans) + " after " +
+                        std::to_string(o.max_tries) + " tries";
+  if (area.region.Area() > 0.0) {
+    // Discs dropped at random on an open plane stop fitting at 54.7% of it covered (random
+    // sequential adsorption's jamming limit); a centre's disc here has the diameter `gap`. The
+    // free space of centres is the floor shrunk by the clearance, so narrow places can hold a
+    // little more than this per m^2 of it (Gibson hard: 70 humans placed in 62 m^2, 80 not).
+    const double free_area = FreeArea(area);
+    const double jammed = 0.547 / (std::numbers::pi * 0.25 * gap * gap);
+    message += " (and as many over the whole free space): " + std::to_string(num_humans) +
+               " humans in about " + Format("%.0f", free_area) + " m^2 of free space is " +
+               Format("%.2f", num_humans / std::max(free_area, 1e-9)) +
+               " per m^2, and humans kept " + Format("%g", gap) +
+               " m apart (starts from starts, goals from goals) jam at about " +
+               Format("%.2f", jammed) +
+               " per m^2 when placed at random on open floor. Fix: fewer humans (num_humans), "
+               "a smaller human_radius or discomfort_dist, or a larger world.";
+  } else {
+    message += ": the free space is too small or too crowded for discs of radius " +
+               Format("%g", o.human_radius) + " m kept " + Format("%g", o.discomfort_dist) +
+               " m apart. Fix: use fewer humans (num_humans), smaller radii, or a larger world.";
+  }
+  throw PlacementError(message);
 }
 
 }  // namespace
@@ -135,6 +178,13 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
   const double human_gap = 2.0 * options.human_radius + options.discomfort_dist;
   const double robot_gap = options.human_radius + options.robot_radius + options.discomfort_dist;
 
+  // Candidates for a point the area's own sampler gives no place: the whole region.
+  const PointSampler more = area.region.Area() > 0.0 ? UniformSampler(area.region) : PointSampler();
+  auto draw = [&](const PointRule& rule, Vec2* out) {
+    return Draw(area, area.sample, rule, options.max_tries, rng, out) ||
+           (more && Draw(area, more, rule, options.max_tries, rng, out));
+  };
+
   std::vector<Vec2> starts;
   // goals_by_index[k]: the k-th goals of the humans placed so far (goal k meets goal k).
   std::vector<std::vector<Vec2>> goals_by_index(static_cast<size_t>(goals_per_human));
@@ -146,7 +196,7 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
     h.radius = options.human_radius;
     h.v_pref = options.human_v_pref;
     PointRule start_rule{&starts, human_gap, robot_start, robot_gap, nullptr, 0.0};
-    if (!Draw(area, start_rule, options.max_tries, rng, &h.start)) Fail("start", i, n, options);
+    if (!draw(start_rule, &h.start)) Fail("start", i, n, options, area);
 
     Vec2 previous = h.start;
     for (int k = 0; k < goals_per_human; ++k) {
@@ -158,9 +208,7 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
                           options.goal_min_dist,
                           &area.is_goal_free};
       Vec2 goal;
-      if (!Draw(area, goal_rule, options.max_tries, rng, &goal)) {
-        Fail("goal " + std::to_string(k + 1), i, n, options);
-      }
+      if (!draw(goal_rule, &goal)) Fail("goal " + std::to_string(k + 1), i, n, options, area);
       h.goals.push_back(goal);
       goals_by_index[static_cast<size_t>(k)].push_back(goal);
       previous = goal;

@@ -102,8 +102,10 @@ Scenario FloorplanWorld::Make(const ScenarioRequest& request) const {
   // Goals leave room to pass: a human who stays on its goal must not close a passage.
   const auto goal_space = std::make_shared<DiscFreeSpace>(
       map_, PassableGoalClearance(request.sim.human_radius, passage_padding_));
+  // The plan's free points first (the scenarios of every committed table); a crowd larger than
+  // those points hold goes on to the whole floor.
   PlacementArea area{[free](const Vec2& p) { return free->Contains(p); }, ListSampler(free_points_),
-                     [goal_space](const Vec2& p) { return goal_space->Contains(p); }};
+                     [goal_space](const Vec2& p) { return goal_space->Contains(p); }, map_->bounds};
   Rng rng(request.seed);
   s.humans = PlaceHumans(area, s.robot_start, s.robot_goal, request,
                          HumanPlacementOptions::FromRequest(request), rng);

@@ -199,7 +199,8 @@ Scenario RandomRectWorld::Make(const ScenarioRequest& request) const {
   const auto goal_space = std::make_shared<const DiscFreeSpace>(
       map, PassableGoalClearance(request.sim.human_radius, options_.passage_padding));
   const PlacementArea area{[human_space](const Vec2& p) { return human_space->Contains(p); },
-                           sample, [goal_space](const Vec2& p) { return goal_space->Contains(p); }};
+                           sample, [goal_space](const Vec2& p) { return goal_space->Contains(p); },
+                           map->bounds};
   HumanPlacementOptions placement = HumanPlacementOptions::FromRequest(request);
   placement.goal_min_dist = options_.human_goal_min_dist;
   placement.new_goal_count = options_.new_goal_count;

@@ -59,6 +59,11 @@ struct PlacementArea {
   /// (a human who stays on its goal must leave room for another to pass). Relaxed to
   /// `is_free` over the second half of the tries when the world has too little such room.
   std::function<bool(const Vec2&)> is_goal_free;
+  /// Optional (zero area: none): a rectangle holding the whole free space. When `sample` gives
+  /// no place for a point within max_tries (a floor plan's list of free points is used up
+  /// long before its floor is full), candidates are then drawn uniformly from it for as many
+  /// tries again; and a failure's message gives the crowd's density in the free space.
+  Rect region;
 };
 
 /// The worlds' default `passage_padding` (m): 0.01, the radius padding CrowdNav's ORCA humans use.
@@ -88,8 +93,9 @@ struct HumanPlacementOptions {
 /// goals likewise from each other (goal k against goal k) and from the robot's goal; each goal
 /// at least goal_min_dist from the point before it and where area.is_goal_free holds (if
 /// set), both relaxed over the second half of the tries when the room is too small. kStay gives one
-/// goal, kNewGoal new_goal_count goals. Deterministic for a given rng state. Throws PlacementError
-/// when a point cannot be placed.
+/// goal, kNewGoal new_goal_count goals. Candidates come from area.sample, then (for a point it
+/// gives no place) from area.region if set. Deterministic for a given rng state. Throws
+/// PlacementError when a point cannot be placed, with the density when area.region is set.
 std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_start,
                                    const Vec2& robot_goal, const ScenarioRequest& request,
                                    const HumanPlacementOptions& options, Rng& rng);

@@ -19,8 +19,9 @@ namespace crowdsim {
 /// Bump when any interface or this descriptor changes layout.
 /// 2: Observation lost time_step and map; 3: the descriptor's data_files;
 /// 4: PolicyNeeds::heading_frame; 5: SensorReading::values, CollisionWorld::serial,
-/// ParamSpec::hashed_at_default; 6: AgentIndex keeps each agent's last query radius.
-inline constexpr std::uint32_t kPluginAbiVersion = 6;
+/// ParamSpec::hashed_at_default; 6: AgentIndex keeps each agent's last query radius;
+/// 7: PlacementArea::region.
+inline constexpr std::uint32_t kPluginAbiVersion = 7;
 
 /// Name of the exported alias.
 inline constexpr const char* kPluginAliasName = "crowdsim_plugin_v1";

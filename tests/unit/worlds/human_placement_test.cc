@@ -23,7 +23,8 @@ std::shared_ptr<const StaticMap> Room(double size, std::vector<Rect> obstacles =
 
 PlacementArea AreaOf(std::shared_ptr<const StaticMap> map, double clearance) {
   auto space = std::make_shared<DiscFreeSpace>(map, clearance);
-  return {[space](const Vec2& p) { return space->Contains(p); }, UniformSampler(map->bounds)};
+  return {
+      [space](const Vec2& p) { return space->Contains(p); }, UniformSampler(map->bounds), {}, {}};
 }
 
 ScenarioRequest Request(int humans, HumanGoalMode mode) {
@@ -209,8 +210,8 @@ TEST(HumanPlacement, ListSamplerDrawsOnlyListedPoints) {
     for (int j = -4; j <= 4; ++j) points.emplace_back(i, j);
   }
   const auto space = std::make_shared<DiscFreeSpace>(map, 0.4);
-  const PlacementArea area{[space](const Vec2& p) { return space->Contains(p); },
-                           ListSampler(points)};
+  const PlacementArea area{
+      [space](const Vec2& p) { return space->Contains(p); }, ListSampler(points), {}, {}};
   Rng rng(11);
   const auto humans =
       PlaceHumans(area, Vec2(0, -4), Vec2(0, 4), Request(5, HumanGoalMode::kNewGoal),
@@ -224,6 +225,73 @@ TEST(HumanPlacement, ListSamplerDrawsOnlyListedPoints) {
   }
   ExpectRules(humans, *space, Vec2(0, -4), Vec2(0, 4), 3.0);
   EXPECT_THROW(ListSampler({}), std::invalid_argument);
+}
+
+// A floor plan's list of free points holds a few dozen humans; the area's region takes the
+// crowd on from where the list has no place left, and changes nothing for a crowd the list holds.
+TEST(HumanPlacement, TheRegionPlacesWhatTheListHasNoPlaceFor) {
+  const auto map = Room(10.0);
+  std::vector<Vec2> points;  // 3 x 3 points 3 m apart: at most 9 starts
+  for (int i = -1; i <= 1; ++i) {
+    for (int j = -1; j <= 1; ++j) points.emplace_back(3.0 * i, 3.0 * j);
+  }
+  const auto space = std::make_shared<DiscFreeSpace>(map, 0.4);
+  auto is_free = [space](const Vec2& p) { return space->Contains(p); };
+  const PlacementArea list_only{is_free, ListSampler(points), {}, {}};
+  const PlacementArea with_region{is_free, ListSampler(points), {}, map->bounds};
+  HumanPlacementOptions options;
+  options.max_tries = 300;
+  Rng rng(3);
+  EXPECT_THROW(PlaceHumans(list_only, Vec2(0, -4.5), Vec2(0, 4.5),
+                           Request(20, HumanGoalMode::kStay), options, rng),
+               PlacementError);
+  rng = Rng(3);
+  const auto crowd = PlaceHumans(with_region, Vec2(0, -4.5), Vec2(0, 4.5),
+                                 Request(20, HumanGoalMode::kStay), options, rng);
+  ASSERT_EQ(crowd.size(), 20u);
+  ExpectRules(crowd, *space, Vec2(0, -4.5), Vec2(0, 4.5), 3.0);
+  auto listed = [&](const Vec2& p) {
+    return std::find(points.begin(), points.end(), p) != points.end();
+  };
+  EXPECT_TRUE(std::any_of(crowd.begin(), crowd.end(),
+                          [&](const HumanSpec& h) { return !listed(h.start); }));
+
+  // Four humans fit the list: the region is never drawn from, the crowd is the list's own.
+  rng = Rng(8);
+  const auto small = PlaceHumans(with_region, Vec2(0, -4.5), Vec2(0, 4.5),
+                                 Request(4, HumanGoalMode::kStay), options, rng);
+  rng = Rng(8);
+  const auto small_listed = PlaceHumans(list_only, Vec2(0, -4.5), Vec2(0, 4.5),
+                                        Request(4, HumanGoalMode::kStay), options, rng);
+  ASSERT_EQ(small.size(), small_listed.size());
+  for (std::size_t i = 0; i < small.size(); ++i) {
+    EXPECT_EQ(small[i].start, small_listed[i].start) << i;
+    EXPECT_EQ(small[i].goals, small_listed[i].goals) << i;
+  }
+}
+
+TEST(HumanPlacement, AnImpossibleDensityIsNamedInTheError) {
+  const auto map = Room(2.0);  // centres fit in 1.2 x 1.2 m with a clearance of 0.4 m
+  const auto space = std::make_shared<DiscFreeSpace>(map, 0.4);
+  const PlacementArea area{[space](const Vec2& p) { return space->Contains(p); },
+                           UniformSampler(map->bounds),
+                           {},
+                           map->bounds};
+  HumanPlacementOptions options;
+  options.max_tries = 200;
+  Rng rng(1);
+  try {
+    PlaceHumans(area, Vec2(0, 0), Vec2(0, 0), Request(10, HumanGoalMode::kStay), options, rng);
+    FAIL() << "expected PlacementError";
+  } catch (const PlacementError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("10 humans in about 1 m^2 of free space"), std::string::npos) << what;
+    // 0.547 of the plane covered by discs of diameter 0.8 m: 1.09 per m^2.
+    EXPECT_NE(what.find("0.8 m apart (starts from starts, goals from goals) jam at about 1.09"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("num_humans"), std::string::npos) << what;
+  }
 }
 
 TEST(HumanPlacement, ZeroHumansIsEmpty) {
