@@ -56,6 +56,31 @@ void BM_CrowdStep(benchmark::State& state, RobotKind robot, bool replay) {
   state.counters["square_m"] = width;
 }
 
+// The same in a real building: Gibson hard (worlds/gibson/hard.yaml, the paper's hardest plan,
+// about 62 m^2 where a human's centre may stand), the robot on the plan's test pairs, humans
+// from 5 up to 70 (what random placement reaches there), each episode its own scenario.
+void BM_FloorplanCrowdStep(benchmark::State& state) {
+  const int humans = static_cast<int>(state.range(0));
+  bench::RowAgents row(RobotKind::kOrcaLidarPerson, humans);
+  const auto world = row.MakeWorld(
+      "floorplan", {{"file", (testing::SourceDir() / "worlds" / "gibson" / "hard.yaml").string()}});
+  auto make_scenario = [&](int episode) {
+    ScenarioRequest request;
+    request.seed = 14 + static_cast<std::uint64_t>(episode);
+    request.episode_index = episode;
+    request.num_humans = humans;
+    return world->Make(request);
+  };
+  bench::TimeSteps(state, make_scenario, row.agents, humans + 1);
+}
+BENCHMARK(BM_FloorplanCrowdStep)
+    ->ArgName("humans")
+    ->Arg(5)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(70)
+    ->Unit(benchmark::kMicrosecond);
+
 void CrowdSizes(benchmark::internal::Benchmark* b) {
   for (int n : {5, 20, 50, 100, 200, 500, 1000}) b->Arg(n);
   b->ArgName("humans")->Unit(benchmark::kMicrosecond);
