@@ -1,6 +1,7 @@
 #include "crowdsim/human_placement.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <string>
@@ -77,8 +78,17 @@ struct PointRule {
 };
 
 bool FarFromAll(const Vec2& p, const std::vector<Vec2>& points, double gap) {
-  return std::all_of(points.begin(), points.end(),
-                     [&](const Vec2& q) { return (p - q).norm() >= gap; });
+  // (p - q).norm() >= gap, decided on squares where they are clearly apart (the margins are
+  // far beyond the rounding of a square and of a square root), with the square root only near
+  // the boundary: the same answers without a square root per placed point and candidate.
+  const double gap_sq = gap * gap;
+  const double surely_far = gap_sq * (1.0 + 1e-9), surely_near = gap_sq * (1.0 - 1e-9);
+  return std::all_of(points.begin(), points.end(), [&](const Vec2& q) {
+    const double d_sq = (p - q).squaredNorm();
+    if (d_sq > surely_far) return true;
+    if (d_sq < surely_near) return false;
+    return std::sqrt(d_sq) >= gap;
+  });
 }
 
 // Required distance from the previous point at try t: full over the first half of the
@@ -94,14 +104,17 @@ bool Draw(const PlacementArea& area, const PointSampler& sample, const PointRule
           int max_tries, Rng& rng, Vec2* out) {
   for (int t = 0; t < max_tries; ++t) {
     const Vec2 p = sample(rng);
-    if (!area.is_free(p)) continue;
-    if (rule.stricter != nullptr && *rule.stricter && t < max_tries / 2 && !(*rule.stricter)(p)) {
-      continue;
-    }
+    // A candidate must pass every test; they are pure, so their order changes only the cost:
+    // the distances first (in a crowd most candidates fall near a human already placed), the
+    // free-space predicates (a test against every rectangle of the map) last.
     if ((p - rule.robot_point).norm() < rule.robot_gap) continue;
     if (!FarFromAll(p, *rule.others, rule.other_gap)) continue;
     if (rule.previous != nullptr &&
         (p - *rule.previous).norm() < RelaxedDistance(rule.previous_min, t, max_tries)) {
+      continue;
+    }
+    if (!area.is_free(p)) continue;
+    if (rule.stricter != nullptr && *rule.stricter && t < max_tries / 2 && !(*rule.stricter)(p)) {
       continue;
     }
     *out = p;
@@ -178,11 +191,19 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
   const double human_gap = 2.0 * options.human_radius + options.discomfort_dist;
   const double robot_gap = options.human_radius + options.robot_radius + options.discomfort_dist;
 
-  // Candidates for a point the area's own sampler gives no place: the whole region.
+  // Candidates for a point the area's own sampler gives no place: the whole region. Once the
+  // sampler has failed a kind of point (the starts, or the k-th goals), the later points of that
+  // kind go to the region at once: each must keep clear of one more point than the last, so the
+  // sampler's few candidates (a floor plan's list) would only be tried in vain again.
   const PointSampler more = area.region.Area() > 0.0 ? UniformSampler(area.region) : PointSampler();
-  auto draw = [&](const PointRule& rule, Vec2* out) {
-    return Draw(area, area.sample, rule, options.max_tries, rng, out) ||
-           (more && Draw(area, more, rule, options.max_tries, rng, out));
+  std::vector<char> sampler_spent(static_cast<size_t>(goals_per_human) + 1, 0);  // starts, goals
+  auto draw = [&](const PointRule& rule, int kind, Vec2* out) {
+    char& spent = sampler_spent[static_cast<size_t>(kind)];
+    if (!spent) {
+      if (Draw(area, area.sample, rule, options.max_tries, rng, out)) return true;
+      spent = 1;
+    }
+    return more && Draw(area, more, rule, options.max_tries, rng, out);
   };
 
   std::vector<Vec2> starts;
@@ -196,7 +217,7 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
     h.radius = options.human_radius;
     h.v_pref = options.human_v_pref;
     PointRule start_rule{&starts, human_gap, robot_start, robot_gap, nullptr, 0.0};
-    if (!draw(start_rule, &h.start)) Fail("start", i, n, options, area);
+    if (!draw(start_rule, 0, &h.start)) Fail("start", i, n, options, area);
 
     Vec2 previous = h.start;
     for (int k = 0; k < goals_per_human; ++k) {
@@ -208,7 +229,8 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
                           options.goal_min_dist,
                           &area.is_goal_free};
       Vec2 goal;
-      if (!draw(goal_rule, &goal)) Fail("goal " + std::to_string(k + 1), i, n, options, area);
+      if (!draw(goal_rule, k + 1, &goal))
+        Fail("goal " + std::to_string(k + 1), i, n, options, area);
       h.goals.push_back(goal);
       goals_by_index[static_cast<size_t>(k)].push_back(goal);
       previous = goal;

@@ -18,36 +18,43 @@ namespace {
 struct WorldCase {
   std::string plugin;
   std::vector<std::pair<std::string, ParamValue>> params;
+  int humans = 5;
 };
 const WorldCase kRect1{"random_rect",
                        {{"obstacles", std::int64_t{1}}, {"split", std::string("test")}}};
 const WorldCase kRect3{"random_rect",
                        {{"obstacles", std::int64_t{3}}, {"split", std::string("test")}}};
 const WorldCase kCircle{"crowdnav", {{"scenario", std::string("circle_crossing")}}};
+// The paper's hardest floor plan with its 5 humans, and with 50 (beyond what the plan's 400
+// free points hold: the rest are drawn from the whole floor).
+const WorldCase kGibsonHard{
+    "floorplan", {{"file", (testing::SourceDir() / "worlds/gibson/hard.yaml").string()}}};
+const WorldCase kGibsonHard50{kGibsonHard.plugin, kGibsonHard.params, 50};
 
 enum class Part { kScenario, kEpisode, kBoth };
 
 // Episode k of a suite with seed 1000 (every layout of the frozen sets is visited in turn).
-ScenarioRequest Request(const WorldSource& world, std::int64_t k) {
+ScenarioRequest Request(const WorldSource& world, std::int64_t k, int humans) {
   ScenarioRequest request;
   request.seed = DeriveSeed(1000, world.Identity(), static_cast<std::uint64_t>(k % 500));
   request.episode_index = k % 500;
-  request.num_humans = 5;
+  request.num_humans = humans;
   return request;
 }
 
 void BM_EpisodeSetup(benchmark::State& state, const WorldCase& world_case, Part part) {
-  bench::RowAgents row(bench::RobotKind::kOrcaLidarPerson, 5);
+  bench::RowAgents row(bench::RobotKind::kOrcaLidarPerson, world_case.humans);
   const auto world = row.MakeWorld(world_case.plugin, world_case.params);
   const SimConfig sim;
   std::int64_t k = 0;
-  Scenario fixed = world->Make(Request(*world, 0));  // the one kEpisode constructs on
+  Scenario fixed =
+      world->Make(Request(*world, 0, world_case.humans));  // the one kEpisode constructs on
   for (auto _ : state) {
     if (part == Part::kEpisode) {
       Episode episode(fixed, sim, row.agents);
       benchmark::DoNotOptimize(&episode);
     } else {
-      const Scenario scenario = world->Make(Request(*world, k++));
+      const Scenario scenario = world->Make(Request(*world, k++, world_case.humans));
       if (part == Part::kBoth) {
         Episode episode(scenario, sim, row.agents);
         benchmark::DoNotOptimize(&episode);
@@ -72,6 +79,10 @@ BENCHMARK_CAPTURE(BM_EpisodeSetup, circle_crossing_scenario, kCircle, Part::kSce
 BENCHMARK_CAPTURE(BM_EpisodeSetup, circle_crossing_episode, kCircle, Part::kEpisode)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_EpisodeSetup, circle_crossing_both, kCircle, Part::kBoth)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_EpisodeSetup, gibson_hard_scenario, kGibsonHard, Part::kScenario)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_EpisodeSetup, gibson_hard_50_scenario, kGibsonHard50, Part::kScenario)
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -270,6 +270,27 @@ TEST(HumanPlacement, TheRegionPlacesWhatTheListHasNoPlaceFor) {
   }
 }
 
+// "At least the gap apart" includes exactly the gap: two points 1 m apart (radius 0.25 m and a
+// discomfort distance of 0.5 m make the gap exactly 1 m) take two humans.
+TEST(HumanPlacement, PointsExactlyTheGapApartHoldTwoHumans) {
+  const auto map = Room(10.0);
+  const auto space = std::make_shared<DiscFreeSpace>(map, 0.35);
+  const PlacementArea area{[space](const Vec2& p) { return space->Contains(p); },
+                           ListSampler({Vec2(0.0, 0.0), Vec2(1.0, 0.0)}),
+                           {},
+                           {}};
+  HumanPlacementOptions options;
+  options.human_radius = 0.25;
+  options.discomfort_dist = 0.5;
+  options.max_tries = 400;
+  Rng rng(2);
+  const auto humans =
+      PlaceHumans(area, Vec2(0, -4), Vec2(0, 4), Request(2, HumanGoalMode::kStay), options, rng);
+  ASSERT_EQ(humans.size(), 2u);
+  EXPECT_EQ((humans[0].start - humans[1].start).norm(), 1.0);
+  EXPECT_EQ((humans[0].goals[0] - humans[1].goals[0]).norm(), 1.0);
+}
+
 TEST(HumanPlacement, AnImpossibleDensityIsNamedInTheError) {
   const auto map = Room(2.0);  // centres fit in 1.2 x 1.2 m with a clearance of 0.4 m
   const auto space = std::make_shared<DiscFreeSpace>(map, 0.4);
