@@ -28,38 +28,7 @@ using testing::SimAgent;
 using testing::TestSim;
 using testing::TowardsGoal;
 
-constexpr float kTwoPi = 6.28318530717958647692F;  // RVO2's RVO_TWO_PI, a float
-constexpr float kDrawMax = static_cast<float>(std::mt19937::max());
 constexpr int kMaxSteps = 10000;
-
-struct FloatOffset {
-  float x, y;
-};
-
-// A float offset of length up to `max_length` in a random direction: angle, then length.
-FloatOffset DrawOffset(std::mt19937& rng, float max_length) {
-  const float angle = static_cast<float>(rng()) * kTwoPi / kDrawMax;
-  const float length = static_cast<float>(rng()) * max_length / kDrawMax;
-  return {length * std::cos(angle), length * std::sin(angle)};
-}
-
-TestSim MakeCircle(unsigned seed) {
-  std::mt19937 rng(seed);
-  TestSim sim = testing::MakeRvo2Circle(250, 200.0, 0.25);
-  for (std::size_t i = 0; i < sim.agents().size(); ++i) {
-    const float angle = static_cast<float>(i) * kTwoPi * 0.004F;
-    float x = 200.0F * std::cos(angle);
-    float y = 200.0F * std::sin(angle);
-    if (seed != 0) {
-      const FloatOffset offset = DrawOffset(rng, 0.01F);
-      x += offset.x;  // float sums, as RVO2's Vector2 adds
-      y += offset.y;
-    }
-    sim.agents()[i].state.position = Vec2(x, y);
-    sim.agents()[i].goal = -Vec2(x, y);
-  }
-  return sim;
-}
 
 struct Stats {
   int steps = 0;
@@ -83,15 +52,6 @@ void CountOverlaps(const std::vector<SimAgent>& agents, Stats& stats) {
   }
 }
 
-// Every agent within `radius` of its goal, or within its own radius when `radius` < 0.
-bool AllWithin(const TestSim& sim, double radius) {
-  for (const SimAgent& a : sim.agents()) {
-    const double r = radius < 0.0 ? a.state.radius : radius;
-    if ((a.state.position - a.goal).squaredNorm() > r * r) return false;
-  }
-  return true;
-}
-
 int Main(int argc, char** argv) {
   const std::string scenario = argc == 3 ? argv[1] : "";
   if (scenario != "circle" && scenario != "blocks") {
@@ -100,15 +60,17 @@ int Main(int argc, char** argv) {
   }
   const auto seed = static_cast<unsigned>(std::strtoul(argv[2], nullptr, 10));
   const bool circle = scenario == "circle";
-  TestSim sim = circle ? MakeCircle(seed) : testing::MakeBlocksSim(0.25);
-  const double arrive_radius = circle ? -1.0 : 20.0;
-  std::mt19937 rng(seed);  // Blocks' per-step perturbation
+  std::mt19937 rng(seed);  // Circle's start offsets, or Blocks' per-step perturbation
+  TestSim sim = !circle     ? testing::MakeBlocksSim(0.25)
+                : seed == 0 ? testing::MakeRvo2FloatCircle()
+                            : testing::MakeRvo2FloatCircle(&rng, 0.01F);
+  auto arrive_distance = [circle](const SimAgent& a) { return circle ? a.state.radius : 20.0; };
   Stats stats;
-  while (!(stats.arrived = AllWithin(sim, arrive_radius)) && stats.steps < kMaxSteps) {
+  while (!(stats.arrived = testing::AllWithin(sim, arrive_distance)) && stats.steps < kMaxSteps) {
     for (SimAgent& a : sim.agents()) {
       a.pref_velocity = TowardsGoal(a);
       if (circle) continue;
-      const FloatOffset offset = DrawOffset(rng, 0.0001F);
+      const testing::Rvo2Offset offset = testing::DrawRvo2Offset(rng, 0.0001F);
       a.pref_velocity += Vec2(offset.x, offset.y);
     }
     sim.Step();

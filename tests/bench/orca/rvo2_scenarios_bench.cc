@@ -33,17 +33,6 @@ struct Rvo2Example {
   int max_steps;  ///< a run that has not arrived by then is reported with all_arrived 0
 };
 
-constexpr float kTwoPi = 6.28318530717958647692F;  // RVO2's RVO_TWO_PI, a float
-
-// Every agent within `distance(agent)` of its goal (RVO2's reachedGoal).
-template <typename Distance>
-bool AllWithin(const TestSim& sim, Distance distance) {
-  return std::all_of(sim.agents().begin(), sim.agents().end(), [&](const SimAgent& a) {
-    const double r = distance(a);
-    return (a.state.position - a.goal).squaredNorm() <= r * r;
-  });
-}
-
 // Circle.cc: 250 agents on a circle of radius 200 m walk to the antipode; time step 0.25,
 // setAgentDefaults(neighbour dist 15, max neighbours 10, horizons 10 and 10, radius 1.5,
 // max speed 2); done when every agent is within its radius of its goal. RVO2 computes in
@@ -52,23 +41,13 @@ bool AllWithin(const TestSim& sim, Distance distance) {
 // perturbation. The same starts here (in double from then on), and no perturbation either.
 // (A ring computed in double is symmetric enough to be a fixed point of ORCA: the agents
 // close in and stand still; orca_scenarios_test perturbs its rings for that reason.)
-TestSim MakeCircle() {
-  TestSim sim = testing::MakeRvo2Circle(250, 200.0, 0.25);
-  for (std::size_t i = 0; i < sim.agents().size(); ++i) {
-    const float angle = static_cast<float>(i) * kTwoPi * 0.004F;
-    const Vec2 start(200.0F * std::cos(angle), 200.0F * std::sin(angle));
-    sim.agents()[i].state.position = start;
-    sim.agents()[i].goal = -start;
-  }
-  return sim;
-}
-
-const Rvo2Example kCircle{"circle250", &MakeCircle,
+const Rvo2Example kCircle{"circle250", [] { return testing::MakeRvo2FloatCircle(); },
                           [](TestSim& sim, std::mt19937&) {
                             for (SimAgent& a : sim.agents()) a.pref_velocity = TowardsGoal(a);
                           },
                           [](const TestSim& sim) {
-                            return AllWithin(sim, [](const SimAgent& a) { return a.state.radius; });
+                            return testing::AllWithin(
+                                sim, [](const SimAgent& a) { return a.state.radius; });
                           },
                           10000};
 
@@ -79,17 +58,17 @@ const Rvo2Example kCircle{"circle250", &MakeCircle,
 // two integer draws (std::rand there, a Mersenne twister here), the direction from float
 // cosine and sine.
 void PreferBlocks(TestSim& sim, std::mt19937& rng) {
-  constexpr float kDrawMax = static_cast<float>(std::mt19937::max());
   for (SimAgent& a : sim.agents()) {
-    const float angle = static_cast<float>(rng()) * kTwoPi / kDrawMax;
-    const float length = static_cast<float>(rng()) * 0.0001F / kDrawMax;
-    a.pref_velocity = TowardsGoal(a) + Vec2(length * std::cos(angle), length * std::sin(angle));
+    const testing::Rvo2Offset offset = testing::DrawRvo2Offset(rng, 0.0001F);
+    a.pref_velocity = TowardsGoal(a) + Vec2(offset.x, offset.y);
   }
 }
 
-const Rvo2Example kBlocks{
-    "blocks100", [] { return testing::MakeBlocksSim(0.25); }, &PreferBlocks,
-    [](const TestSim& sim) { return AllWithin(sim, [](const SimAgent&) { return 20.0; }); }, 10000};
+const Rvo2Example kBlocks{"blocks100", [] { return testing::MakeBlocksSim(0.25); }, &PreferBlocks,
+                          [](const TestSim& sim) {
+                            return testing::AllWithin(sim, [](const SimAgent&) { return 20.0; });
+                          },
+                          10000};
 
 struct RunReport {
   int steps = 0;

@@ -117,4 +117,28 @@ TestSim MakeRvo2Circle(int agents, double radius, double time_step, bool mirror)
   return sim;
 }
 
+Rvo2Offset DrawRvo2Offset(std::mt19937& rng, float max_length) {
+  constexpr float kDrawMax = static_cast<float>(std::mt19937::max());
+  const float angle = static_cast<float>(rng()) * kRvo2TwoPi / kDrawMax;
+  const float length = static_cast<float>(rng()) * max_length / kDrawMax;
+  return {length * std::cos(angle), length * std::sin(angle)};
+}
+
+TestSim MakeRvo2FloatCircle(std::mt19937* offsets, float max_offset) {
+  TestSim sim = MakeRvo2Circle(250, 200.0, 0.25);
+  for (std::size_t i = 0; i < sim.agents().size(); ++i) {
+    const float angle = static_cast<float>(i) * kRvo2TwoPi * 0.004F;
+    float x = 200.0F * std::cos(angle);
+    float y = 200.0F * std::sin(angle);
+    if (offsets != nullptr) {
+      const Rvo2Offset offset = DrawRvo2Offset(*offsets, max_offset);
+      x += offset.x;
+      y += offset.y;
+    }
+    sim.agents()[i].state.position = Vec2(x, y);
+    sim.agents()[i].goal = -Vec2(x, y);
+  }
+  return sim;
+}
+
 }  // namespace crowdsim::orca::testing

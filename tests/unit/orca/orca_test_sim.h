@@ -2,7 +2,9 @@
 // agent computes its new velocity from the same snapshot, then all move (RVO2's doStep).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <random>
 #include <vector>
 
 #include "crowdsim/agent_index.h"
@@ -74,6 +76,32 @@ TestSim MakeBlocksSim(double time_step);
 /// when asked), each bound for its antipode, with Circle.cc's agent defaults (neighbour dist
 /// 15, max neighbours 10, horizons 10 and 10, radius 1.5, max speed 2).
 TestSim MakeRvo2Circle(int agents, double radius, double time_step, bool mirror = false);
+
+/// RVO2's RVO_TWO_PI, a float.
+inline constexpr float kRvo2TwoPi = 6.28318530717958647692F;
+
+/// A small offset drawn as RVO2's Blocks.cc draws its perturbation, in float: an angle, then a
+/// length up to `max_length`, each from one draw of `rng`; the offset from float cosine and sine.
+struct Rvo2Offset {
+  float x;
+  float y;
+};
+Rvo2Offset DrawRvo2Offset(std::mt19937& rng, float max_length);
+
+/// RVO2's Circle example as Circle.cc builds it: 250 agents (MakeRvo2Circle's defaults), time
+/// step 0.25, the starts computed in float32 (angle i * 2 pi * 0.004, then 200 times its cosine
+/// and sine), each bound for its antipode. Given `offsets`, every start is first moved by
+/// DrawRvo2Offset(*offsets, max_offset), added in float.
+TestSim MakeRvo2FloatCircle(std::mt19937* offsets = nullptr, float max_offset = 0.0F);
+
+/// Every agent within `distance(agent)` of its goal (RVO2's reachedGoal).
+template <typename Distance>
+bool AllWithin(const TestSim& sim, Distance distance) {
+  return std::all_of(sim.agents().begin(), sim.agents().end(), [&](const SimAgent& a) {
+    const double r = distance(a);
+    return (a.state.position - a.goal).squaredNorm() <= r * r;
+  });
+}
 
 /// The four squares of Blocks as rectangles (for inside-obstacle checks).
 std::vector<Rect> BlocksSquares();
