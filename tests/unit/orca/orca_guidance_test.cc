@@ -1,10 +1,13 @@
 // The roadmap and the path following that keep ORCA agents from stalling behind walls.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "crowdsim/rng.h"
 #include "orca/geometry.h"
 #include "orca/guidance.h"
 #include "orca/obstacles.h"
@@ -58,6 +61,80 @@ TEST(OrcaRoadmapTest, EnclosedGoalHasNoPath) {
                     Rect::FromCorners(-3, -2, -2, 2), Rect::FromCorners(2, -2, 3, 2)};
   const Roadmap roadmap(map.rectangles, map.bounds, kRadius, 0.2);
   EXPECT_TRUE(roadmap.ShortestPath(Vec2(-6, 0), Vec2(0, 0)).empty());
+}
+
+// Shortest distance from start to goal over the roadmap's graph, built here segment by segment
+// with the roadmap's own rules (Dijkstra; kInfinity when they are not connected).
+double ReferenceDistance(const Roadmap& roadmap, const Vec2& start, const Vec2& goal) {
+  const auto& rects = roadmap.rects();
+  const auto& nodes = roadmap.nodes();
+  const int n = static_cast<int>(nodes.size());
+  const double slack = 1e-9;
+  const double c_start = std::max(0.0, roadmap.CappedClearance(start) - slack);
+  const double c_goal = std::max(0.0, roadmap.CappedClearance(goal) - slack);
+  if (roadmap.Visible(start, goal)) return (goal - start).norm();
+  std::vector<double> dist(n + 1, kInfinity);  // nodes, then the goal
+  std::vector<char> done(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    if (SegmentClear(rects, start, nodes[i], c_start)) dist[i] = (nodes[i] - start).norm();
+  }
+  for (;;) {
+    int i = -1;
+    for (int k = 0; k <= n; ++k) {
+      if (!done[k] && dist[k] < kInfinity && (i < 0 || dist[k] < dist[i])) i = k;
+    }
+    if (i < 0 || i == n) return dist[n];
+    done[i] = 1;
+    for (int j = 0; j < n; ++j) {
+      if (j == i || done[j]) continue;
+      if (SegmentClear(rects, nodes[i], nodes[j], roadmap.clearance() - slack)) {
+        dist[j] = std::min(dist[j], dist[i] + (nodes[j] - nodes[i]).norm());
+      }
+    }
+    if (SegmentClear(rects, nodes[i], goal, c_goal)) {
+      dist[n] = std::min(dist[n], dist[i] + (goal - nodes[i]).norm());
+    }
+  }
+}
+
+// The search asks whether a node sees the goal only when it reaches that node: the paths it
+// finds are still shortest, and it still finds none exactly when there is none.
+TEST(OrcaRoadmapTest, ShortestPathIsShortestAmongManyBoxes) {
+  Rng rng(17);
+  int connected = 0, unconnected = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<Rect> rects;
+    for (int i = 0; i < 25; ++i) {
+      const double x = rng.Uniform(-9, 8), y = rng.Uniform(-9, 8);
+      rects.push_back(Rect::FromCorners(x, y, x + rng.Uniform(0.2, 3), y + rng.Uniform(0.2, 3)));
+    }
+    const Rect bounds = Rect::FromCorners(-10, -10, 10, 10);
+    const Roadmap roadmap(rects, bounds, kRadius, 0.2);
+    for (int q = 0; q < 15; ++q) {
+      const Vec2 start(rng.Uniform(-10, 10), rng.Uniform(-10, 10));
+      const Vec2 goal(rng.Uniform(-10, 10), rng.Uniform(-10, 10));
+      const double expected = ReferenceDistance(roadmap, start, goal);
+      const std::vector<Vec2> path = roadmap.ShortestPath(start, goal);
+      SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
+      if (expected == kInfinity) {
+        EXPECT_TRUE(path.empty());
+        ++unconnected;
+        continue;
+      }
+      ASSERT_FALSE(path.empty());
+      ++connected;
+      EXPECT_EQ(path.back(), goal);
+      double length = 0.0;
+      Vec2 previous = start;
+      for (const Vec2& p : path) {
+        length += (p - previous).norm();
+        previous = p;
+      }
+      EXPECT_NEAR(length, expected, 1e-9 * (1.0 + expected));
+    }
+  }
+  EXPECT_GT(connected, 20);
+  EXPECT_GT(unconnected, 0);  // starts or goals walled in (or inside a box)
 }
 
 TEST(OrcaRoadmapTest, SharedRoadmapIsBuiltOncePerMapAndRadius) {

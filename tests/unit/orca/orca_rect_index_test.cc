@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,56 @@ TEST(RectIndex, RoadmapVisibilityMatchesAScanOfEveryRectangle) {
                               : Vec2(a + Vec2(rng.Uniform(-2, 2), rng.Uniform(-2, 2)));
     const double c = std::min({clearance, DistanceToRects(boxes, a), DistanceToRects(boxes, b)});
     EXPECT_EQ(roadmap.Visible(a, b), SegmentClear(boxes, a, b, std::max(0.0, c - 1e-9)))
+        << "query " << q;
+  }
+}
+
+// A blocker hint only changes which rectangle is tested first: the answers are SegmentClear's
+// without a hint, whatever the hint (none, stale, out of range, kept from call to call), and a
+// rectangle reported as the blocker does block the segment.
+TEST(RectIndex, SegmentClearAnswersTheSameWhateverTheBlockerHint) {
+  Rng rng(5);
+  const auto boxes = RandomBoxes(rng, 60);
+  const int n = static_cast<int>(boxes.size());
+  int kept = -1;
+  int blocked = 0;
+  for (int q = 0; q < 600; ++q) {
+    const Vec2 a(rng.Uniform(-12, 12), rng.Uniform(-12, 12));
+    const Vec2 b = q % 2 == 0 ? Vec2(rng.Uniform(-12, 12), rng.Uniform(-12, 12))
+                              : Vec2(a + Vec2(rng.Uniform(-2, 2), rng.Uniform(-2, 2)));
+    const double c = q % 5 == 0 ? 0.0 : rng.Uniform(0.0, 0.6);
+    const bool expected = SegmentClear(boxes, a, b, c);
+    blocked += expected ? 0 : 1;
+    for (int hint : {-1, static_cast<int>(rng.Below(static_cast<std::uint64_t>(n))), n + 3, kept}) {
+      int blocker = hint;
+      SCOPED_TRACE("query " + std::to_string(q) + " hint " + std::to_string(hint));
+      EXPECT_EQ(SegmentClear(boxes, a, b, c, &blocker), expected);
+      if (!expected) {
+        ASSERT_GE(blocker, 0);
+        ASSERT_LT(blocker, n);
+        EXPECT_FALSE(SegmentClear(std::span<const Rect>(&boxes[blocker], 1), a, b, c));
+      } else {
+        EXPECT_EQ(blocker, hint);  // a clear segment leaves the hint alone
+      }
+    }
+    SegmentClear(boxes, a, b, c, &kept);
+  }
+  EXPECT_GT(blocked, 100);  // both answers are exercised
+  EXPECT_LT(blocked, 500);
+}
+
+// The roadmap's visibility with a hint kept between calls, as an agent's guidance keeps it.
+TEST(RectIndex, RoadmapVisibilityIgnoresTheBlockerHint) {
+  Rng rng(9);
+  const auto boxes = RandomBoxes(rng, 80);
+  const Roadmap roadmap(boxes, Rect{}, 0.4, 0.1);
+  int blocker = -1;
+  const Vec2 from(0.3, -0.2);
+  for (int q = 0; q < 400; ++q) {
+    const Vec2 a = q % 3 == 0 ? from : Vec2(rng.Uniform(-12, 12), rng.Uniform(-12, 12));
+    const Vec2 b(rng.Uniform(-12, 12), rng.Uniform(-12, 12));
+    const double ca = roadmap.CappedClearance(a), cb = roadmap.CappedClearance(b);
+    EXPECT_EQ(roadmap.Visible(a, ca, b, cb, &blocker), roadmap.Visible(a, ca, b, cb))
         << "query " << q;
   }
 }

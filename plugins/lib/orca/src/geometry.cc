@@ -56,16 +56,37 @@ double DistanceToRects(std::span<const Rect> rects, const Vec2& p) {
   return std::sqrt(best_sq);
 }
 
+namespace {
+
+// True if rectangle r keeps `clearance` from the segment whose box grown by it is [lo, hi].
+bool RectClear(const Vec2& a, const Vec2& b, double clearance, const Vec2& lo, const Vec2& hi,
+               const Rect& r) {
+  // Bounding-box cull first: most rectangles are nowhere near the segment.
+  if (r.min.x() > hi.x() || r.max.x() < lo.x() || r.min.y() > hi.y() || r.max.y() < lo.y()) {
+    return true;
+  }
+  const double d = SegmentRectDistance(a, b, r);
+  return !(d < clearance || d == 0.0);
+}
+
+}  // namespace
+
 bool SegmentClear(std::span<const Rect> rects, const Vec2& a, const Vec2& b, double clearance) {
+  int no_hint = -1;
+  return SegmentClear(rects, a, b, clearance, &no_hint);
+}
+
+bool SegmentClear(std::span<const Rect> rects, const Vec2& a, const Vec2& b, double clearance,
+                  int* blocker) {
   const Vec2 lo = a.cwiseMin(b).array() - clearance;
   const Vec2 hi = a.cwiseMax(b).array() + clearance;
-  for (const Rect& r : rects) {
-    // Bounding-box cull first: most rectangles are nowhere near the segment.
-    if (r.min.x() > hi.x() || r.max.x() < lo.x() || r.min.y() > hi.y() || r.max.y() < lo.y()) {
-      continue;
-    }
-    const double d = SegmentRectDistance(a, b, r);
-    if (d < clearance || d == 0.0) return false;
+  const int hint = *blocker;
+  const int n = static_cast<int>(rects.size());
+  if (hint >= 0 && hint < n && !RectClear(a, b, clearance, lo, hi, rects[hint])) return false;
+  for (int i = 0; i < n; ++i) {
+    if (i == hint || RectClear(a, b, clearance, lo, hi, rects[i])) continue;
+    *blocker = i;
+    return false;
   }
   return true;
 }

@@ -15,6 +15,7 @@ void Guidance::Reset(std::shared_ptr<const Roadmap> roadmap) {
   Restart();
   plans_ = 0;
   goal_clearance_ = -1.0;
+  blocker_ = -1;
 }
 
 void Guidance::Restart() {
@@ -51,7 +52,7 @@ GuidanceTarget Guidance::Next(const Vec2& position, const Vec2& goal) {
     goal_clearance_ = roadmap_->CappedClearance(goal);
   }
   // The common case in open space: nothing to plan.
-  if (roadmap_->Visible(position, here, goal, goal_clearance_)) {
+  if (roadmap_->Visible(position, here, goal, goal_clearance_, &blocker_)) {
     path_.clear();
     waypoint_clearance_.clear();
     unreachable_ = false;
@@ -68,7 +69,7 @@ GuidanceTarget Guidance::Next(const Vec2& position, const Vec2& goal) {
   // others) and the path is planned again from here.
   auto farthest_visible = [&]() -> std::ptrdiff_t {
     for (std::size_t k = path_.size(); k-- > next_;) {
-      if (roadmap_->Visible(position, here, path_[k], waypoint_clearance_[k])) {
+      if (roadmap_->Visible(position, here, path_[k], waypoint_clearance_[k], &blocker_)) {
         return static_cast<std::ptrdiff_t>(k);
       }
     }

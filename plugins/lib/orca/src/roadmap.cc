@@ -70,8 +70,14 @@ bool Roadmap::Visible(const Vec2& a, const Vec2& b) const {
 }
 
 bool Roadmap::Visible(const Vec2& a, double a_clearance, const Vec2& b, double b_clearance) const {
+  int no_hint = -1;
+  return Visible(a, a_clearance, b, b_clearance, &no_hint);
+}
+
+bool Roadmap::Visible(const Vec2& a, double a_clearance, const Vec2& b, double b_clearance,
+                      int* blocker) const {
   const double c = std::min({clearance_, a_clearance, b_clearance});
-  return SegmentClear(rects_, a, b, std::max(0.0, c - kClearanceSlack));
+  return SegmentClear(rects_, a, b, std::max(0.0, c - kClearanceSlack), blocker);
 }
 
 std::vector<Vec2> Roadmap::ShortestPath(const Vec2& start, const Vec2& goal) const {
@@ -81,18 +87,20 @@ std::vector<Vec2> Roadmap::ShortestPath(const Vec2& start, const Vec2& goal) con
   const int kGoal = n + 1;
   // The start and goal join the graph through the nodes they see; the clearance asked of
   // those segments is capped by their own (an agent may stand closer to a wall than a node).
-  const double c_start = CappedClearance(start);
-  const double c_goal = CappedClearance(goal);
-  std::vector<char> sees_goal(n, 0);
+  const double c_start = std::max(0.0, CappedClearance(start) - kClearanceSlack);
+  const double c_goal = std::max(0.0, CappedClearance(goal) - kClearanceSlack);
   std::vector<char> seen_from_start(n, 0);
-  bool any_goal = false;
+  int blocker = -1;
   for (int i = 0; i < n; ++i) {
-    sees_goal[i] = SegmentClear(rects_, nodes_[i], goal, std::max(0.0, c_goal - kClearanceSlack));
-    any_goal = any_goal || sees_goal[i];
-    seen_from_start[i] =
-        SegmentClear(rects_, start, nodes_[i], std::max(0.0, c_start - kClearanceSlack));
+    seen_from_start[i] = SegmentClear(rects_, start, nodes_[i], c_start, &blocker);
   }
-  if (!any_goal) return {};
+  // Whether node i sees the goal matters only once the search expands node i: asked then (the
+  // search stops at the goal, long before it has expanded every node). -1: not asked yet.
+  std::vector<signed char> sees_goal(n, -1);
+  auto node_sees_goal = [&](int i) {
+    if (sees_goal[i] < 0) sees_goal[i] = SegmentClear(rects_, nodes_[i], goal, c_goal) ? 1 : 0;
+    return sees_goal[i] == 1;
+  };
 
   // A* with the straight-line heuristic.
   std::vector<double> cost(n + 2, kInfinity);
@@ -125,7 +133,7 @@ std::vector<Vec2> Roadmap::ShortestPath(const Vec2& start, const Vec2& goal) con
     }
     for (int e = edge_start_[i]; e < edge_start_[i + 1]; ++e)
       relax(i, edges_[e].to, edges_[e].length);
-    if (sees_goal[i]) relax(i, kGoal, (goal - nodes_[i]).norm());
+    if (node_sees_goal(i)) relax(i, kGoal, (goal - nodes_[i]).norm());
   }
   if (parent[kGoal] < 0) return {};
 

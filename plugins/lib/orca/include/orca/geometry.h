@@ -34,5 +34,10 @@ double DistanceToRects(std::span<const Rect> rects, const Vec2& p);
 
 /// True if the segment a-b stays at least `clearance` (m, >= 0) away from every rectangle.
 bool SegmentClear(std::span<const Rect> rects, const Vec2& a, const Vec2& b, double clearance);
+/// The same, testing rects[*blocker] first (-1: none) and setting *blocker to a rectangle
+/// that blocks: segments tested one after another from one point are mostly blocked by the
+/// same rectangle. The answer never depends on the hint.
+bool SegmentClear(std::span<const Rect> rects, const Vec2& a, const Vec2& b, double clearance,
+                  int* blocker);
 
 }  // namespace crowdsim::orca

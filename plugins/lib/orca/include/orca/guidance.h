@@ -65,6 +65,9 @@ class Guidance {
   double best_progress_ = kInfinity;
   int stalled_ = 0;
   int plans_ = 0;
+  // The rectangle that last blocked a line of sight, tested first by the next (an agent's
+  // view is blocked by the same wall decision after decision); only a hint, never an answer.
+  int blocker_ = -1;
 };
 
 }  // namespace crowdsim::orca

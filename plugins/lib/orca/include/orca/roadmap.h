@@ -37,6 +37,11 @@ class Roadmap {
   /// The same with the ends' capped clearances given (CappedClearance(a), CappedClearance(b)),
   /// for a caller that tests one point against many or the same point step after step.
   bool Visible(const Vec2& a, double a_clearance, const Vec2& b, double b_clearance) const;
+  /// The same, testing rectangle *blocker first and setting it to one that blocks (see
+  /// SegmentClear): a caller testing many segments from one place keeps it between calls. The
+  /// answer never depends on it.
+  bool Visible(const Vec2& a, double a_clearance, const Vec2& b, double b_clearance,
+               int* blocker) const;
 
   /// min(clearance, distance from p to the nearest rectangle): only rectangles within the
   /// clearance can lower it, so only those are looked at.
