@@ -1,16 +1,20 @@
-// ORCA costs: one decision in a typical CrowdSim++ scene, one step of RVO2's Blocks, and one
-// decision of the loaded plugin (guidance included).
+// ORCA costs: one decision in a typical CrowdSim++ scene, the obstacle query, the roadmap's
+// path search, one step of RVO2's Blocks, and one decision of the loaded plugin (guidance
+// included).
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/bench/plugin_registry.h"
+#include "orca/geometry.h"
 #include "orca/obstacles.h"
+#include "orca/roadmap.h"
 #include "orca/solver.h"
 #include "orca_test_sim.h"
 #include "test_paths.h"
@@ -79,6 +83,44 @@ void BM_ObstacleQuery(benchmark::State& state) {
   state.counters["edges"] = edges / static_cast<double>(state.iterations());
 }
 BENCHMARK(BM_ObstacleQuery)->Args({30, 12})->Args({600, 44});
+
+// The roadmap's path search, as an ORCA human replans round the boxes between it and its goal
+// (ORCA's defaults: radius 0.3 m + 0.01 padding, corners 0.2 m farther out): trips between random
+// free points among boxes of 0.5-1.5 m, 30 in 12 m and 100 in 22 m.
+void BM_RoadmapShortestPath(benchmark::State& state) {
+  const int boxes = static_cast<int>(state.range(0));
+  const double side = state.range(1);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> where(0.0, side), size(0.5, 1.5);
+  std::vector<Rect> rects;
+  for (int i = 0; i < boxes; ++i) {
+    const double x = where(rng), y = where(rng);
+    rects.push_back(Rect::FromCorners(x, y, x + size(rng), y + size(rng)));
+  }
+  const double clearance = 0.31;
+  const Roadmap roadmap(rects, Rect::FromCorners(0.0, 0.0, side, side), clearance, 0.2);
+  std::vector<std::pair<Vec2, Vec2>> trips;
+  auto free_point = [&]() {
+    for (;;) {
+      const Vec2 p(where(rng), where(rng));
+      if (DistanceToRects(rects, p) > clearance) return p;
+    }
+  };
+  while (trips.size() < 256) trips.emplace_back(free_point(), free_point());
+  std::size_t next = 0;
+  double found = 0.0, waypoints = 0.0;
+  for (auto _ : state) {
+    const std::vector<Vec2> path = roadmap.ShortestPath(trips[next].first, trips[next].second);
+    next = (next + 1) % trips.size();
+    found += path.empty() ? 0.0 : 1.0;
+    waypoints += static_cast<double>(path.size());
+  }
+  const auto n = static_cast<double>(state.iterations());
+  state.counters["nodes"] = static_cast<double>(roadmap.nodes().size());
+  state.counters["found"] = found / n;
+  state.counters["waypoints"] = waypoints / n;
+}
+BENCHMARK(BM_RoadmapShortestPath)->Args({30, 12})->Args({100, 22})->Unit(benchmark::kMicrosecond);
 
 // RVO2's Blocks (reference facts 2.6), restarted whenever every agent is within 20 m.
 testing::TestSim MakeBlocks() { return testing::MakeBlocksSim(0.25); }
