@@ -80,6 +80,59 @@ TEST(RectIndex, RoadmapVisibilityMatchesAScanOfEveryRectangle) {
   }
 }
 
+// SegmentClear against its definition, every rectangle's exact distance (its bounding-box cull
+// may only skip work): random segments, and segments along a side or past a corner of one box
+// at the clearance give or take 1e-12 m, 1e-9 m and 1e-6 m, where any cull of the segment's
+// surroundings with too thin a margin answers wrongly (a cull of boxes beyond the segment's line
+// by clearance - 1e-9 fails here).
+TEST(RectIndex, SegmentClearMatchesTheDistanceToEveryRectangle) {
+  Rng rng(12);
+  // Rectangles as maps hold them (min <= max; the generator's swapped corners left out: the
+  // bounding-box cull has never seen those as boxes).
+  std::vector<Rect> boxes;
+  for (const Rect& r : RandomBoxes(rng, 70)) {
+    if (r.min.x() <= r.max.x() && r.min.y() <= r.max.y()) boxes.push_back(r);
+  }
+  auto by_definition = [](std::span<const Rect> rects, const Vec2& a, const Vec2& b, double c) {
+    return std::all_of(rects.begin(), rects.end(), [&](const Rect& r) {
+      const double d = SegmentRectDistance(a, b, r);
+      return !(d < c || d == 0.0);
+    });
+  };
+  int checked = 0, clear = 0;
+  auto check = [&](std::span<const Rect> rects, const Vec2& a, const Vec2& b, double c) {
+    const bool expected = by_definition(rects, a, b, c);
+    EXPECT_EQ(SegmentClear(rects, a, b, c), expected)
+        << "a (" << a.x() << ", " << a.y() << ") b (" << b.x() << ", " << b.y() << ") c " << c;
+    ++checked;
+    clear += expected ? 1 : 0;
+    return expected;
+  };
+  for (int q = 0; q < 1000; ++q) {
+    const Vec2 a(rng.Uniform(-12, 12), rng.Uniform(-12, 12));
+    const Vec2 b = q % 2 == 0 ? Vec2(rng.Uniform(-12, 12), rng.Uniform(-12, 12))
+                              : Vec2(a + Vec2(rng.Uniform(-3, 3), rng.Uniform(-3, 3)));
+    check(boxes, a, b, q % 7 == 0 ? 0.0 : rng.Uniform(0.0, 0.6));
+  }
+  // One box alone, passed at the clearance give or take: blocked below it, clear above.
+  const Rect box = Rect::FromCorners(2.25, -1.5, 3.5, 0.75);
+  const std::span<const Rect> one(&box, 1);
+  const double c = 0.37;
+  for (double off : {-1e-6, -1e-9, -1e-12, 1e-12, 1e-9, 1e-6}) {
+    SCOPED_TRACE("off " + std::to_string(off));
+    // Along the top side, at c + off above it, longer than the box on both ends.
+    const double y = box.max.y() + c + off;
+    EXPECT_EQ(check(one, Vec2(box.min.x() - 4.0, y), Vec2(box.max.x() + 4.0, y), c), off > 0.0);
+    // Slanted past the top-right corner, at c + off from it.
+    const Vec2 n = Vec2(1.0, 1.0).normalized();
+    const Vec2 touch = box.max + (c + off) * n;
+    const Vec2 along(-n.y(), n.x());
+    EXPECT_EQ(check(one, touch - 5.0 * along, touch + 5.0 * along, c), off > 0.0);
+  }
+  EXPECT_GT(clear, 100);
+  EXPECT_LT(clear, checked - 100);
+}
+
 // A blocker hint only changes which rectangle is tested first: the answers are SegmentClear's
 // without a hint, whatever the hint (none, stale, out of range, kept from call to call), and a
 // rectangle reported as the blocker does block the segment.
