@@ -55,6 +55,17 @@ void BM_OrcaDecision5Neighbours7Rects(benchmark::State& state) {
 }
 BENCHMARK(BM_OrcaDecision5Neighbours7Rects);
 
+// `count` boxes with sides of 0.5-1.5 m at random places of the square [0, side]^2.
+std::vector<Rect> ScatteredBoxes(int count, double side, std::mt19937& rng) {
+  std::uniform_real_distribution<double> where(0.0, side), size(0.5, 1.5);
+  std::vector<Rect> rects;
+  for (int i = 0; i < count; ++i) {
+    const double x = where(rng), y = where(rng);
+    rects.push_back(Rect::FromCorners(x, y, x + size(rng), y + size(rng)));
+  }
+  return rects;
+}
+
 // The obstacle edges near an agent (range 5.3 m, a CrowdNav human's), among boxes of 0.5-1.5 m
 // scattered over a square: 30 in 12 m (a Gibson plan's count and size) and 600 in 44 m (an
 // S3DIS building floor's), queried from random points.
@@ -62,12 +73,8 @@ void BM_ObstacleQuery(benchmark::State& state) {
   const int boxes = static_cast<int>(state.range(0));
   const double side = state.range(1);
   std::mt19937 rng(3);
-  std::uniform_real_distribution<double> where(0.0, side), size(0.5, 1.5);
-  std::vector<Rect> rects;
-  for (int i = 0; i < boxes; ++i) {
-    const double x = where(rng), y = where(rng);
-    rects.push_back(Rect::FromCorners(x, y, x + size(rng), y + size(rng)));
-  }
+  const std::vector<Rect> rects = ScatteredBoxes(boxes, side, rng);
+  std::uniform_real_distribution<double> where(0.0, side);
   const OrcaObstacles obstacles = OrcaObstacles::FromRects(rects);
   std::vector<Vec2> points(256);
   for (Vec2& p : points) p = Vec2(where(rng), where(rng));
@@ -91,12 +98,8 @@ void BM_RoadmapShortestPath(benchmark::State& state) {
   const int boxes = static_cast<int>(state.range(0));
   const double side = state.range(1);
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> where(0.0, side), size(0.5, 1.5);
-  std::vector<Rect> rects;
-  for (int i = 0; i < boxes; ++i) {
-    const double x = where(rng), y = where(rng);
-    rects.push_back(Rect::FromCorners(x, y, x + size(rng), y + size(rng)));
-  }
+  const std::vector<Rect> rects = ScatteredBoxes(boxes, side, rng);
+  std::uniform_real_distribution<double> where(0.0, side);
   const double clearance = 0.31;
   const Roadmap roadmap(rects, Rect::FromCorners(0.0, 0.0, side, side), clearance, 0.2);
   std::vector<std::pair<Vec2, Vec2>> trips;
