@@ -3,6 +3,7 @@
 #include <boost/dll/runtime_symbol_info.hpp>
 #include <boost/dll/shared_library.hpp>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <sstream>
 
@@ -15,6 +16,16 @@ namespace {
 
 constexpr const char* kPrefix = "crowdsim_";
 constexpr const char* kSuffix = ".so";
+
+/// The plugin name a file name gives (crowdsim_<name>.so), or none for another file name.
+std::optional<std::string> PluginNameOfFile(const fs::path& path) {
+  const std::string file = path.filename().string();
+  const std::size_t affixes = std::strlen(kPrefix) + std::strlen(kSuffix);
+  if (file.size() <= affixes || !file.starts_with(kPrefix) || !file.ends_with(kSuffix)) {
+    return std::nullopt;
+  }
+  return file.substr(std::strlen(kPrefix), file.size() - affixes);
+}
 
 /// The folder of the installed core library (PREFIX/lib) when this is an installed copy:
 /// the plugins and data are found relative to it, never through paths of the build machine.
@@ -183,6 +194,16 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
                       "' has an incomplete descriptor (name, description "
                       "and schema are required). Fix the plugin's descriptor.");
   }
+  // A suite finds a plugin by its file (crowdsim_<name>.so), tables and list-plugins name it by
+  // its descriptor: a plugin whose two names differ could be asked for by neither consistently.
+  if (const auto file_name = PluginNameOfFile(path); file_name && *file_name != desc.name) {
+    throw PluginError("plugin file '" + key + "' is named '" + *file_name +
+                      "' but its descriptor calls it '" + desc.name +
+                      "': suites find a plugin by its file name (crowdsim_<name>.so) and tables "
+                      "name it by its descriptor, so the two must agree. Rename the file to " +
+                      kPrefix + desc.name + kSuffix + " or the descriptor's name to '" +
+                      *file_name + "'.");
+  }
   auto loaded = std::make_unique<LoadedPlugin>();
   loaded->path = canonical;
   loaded->library = std::move(lib);
@@ -223,13 +244,11 @@ PluginRegistry::Found PluginRegistry::Discover() {
     if (!fs::is_directory(dir, ec)) continue;
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
-      const std::string file = entry.path().filename().string();
-      if (file.starts_with(kPrefix) && file.ends_with(kSuffix)) files.push_back(entry.path());
+      if (PluginNameOfFile(entry.path())) files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());
     for (const auto& f : files) {
-      const std::string file = f.filename().string();
-      const std::string name = file.substr(9, file.size() - 9 - 3);
+      const std::string name = *PluginNameOfFile(f);
       if (seen[name]) continue;
       seen[name] = true;
       try {

@@ -105,6 +105,28 @@ TEST(PluginLoader, FactoryThrows) {
   }
 }
 
+TEST(PluginLoader, FileNameAndDescriptorNameMustAgree) {
+  // A copy of the linear plugin under another plugin name: found by that name, called 'linear'.
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "renamed_plugin";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(PluginDir() / "crowdsim_linear.so", dir / "crowdsim_mine.so",
+                             std::filesystem::copy_options::overwrite_existing);
+  for (const std::string& asked : {std::string("mine"), (dir / "crowdsim_mine.so").string()}) {
+    PluginRegistry reg({dir});
+    const std::string err = LoadError(reg, asked, PluginKind::kPolicy);
+    EXPECT_NE(err.find("is named 'mine' but its descriptor calls it 'linear'"), std::string::npos)
+        << err;
+    EXPECT_NE(err.find("Rename the file to crowdsim_linear.so"), std::string::npos) << err;
+  }
+  // Another file name (not crowdsim_<name>.so), given as a path: no name to agree with.
+  std::filesystem::copy_file(PluginDir() / "crowdsim_linear.so", dir / "my_policy.so",
+                             std::filesystem::copy_options::overwrite_existing);
+  PluginRegistry reg(std::vector<std::filesystem::path>{});
+  EXPECT_STREQ(reg.Load((dir / "my_policy.so").string(), PluginKind::kPolicy).descriptor->name,
+               "linear");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(PluginLoader, DiscoverReportsBrokenFilesWithoutStopping) {
   PluginRegistry reg({PluginDir(), FixturePluginDir()});
   auto found = reg.Discover();
