@@ -71,8 +71,10 @@ const std::vector<double>& Params::GetDoubleList(const std::string& name) const 
 std::filesystem::path Params::ResolvePath(const std::string& value) const {
   std::filesystem::path p(value);
   if (p.is_absolute()) return p;
-  if (!base_dir_.empty() && std::filesystem::exists(base_dir_ / p)) return base_dir_ / p;
-  return p;
+  if (base_dir_.empty() || std::filesystem::exists(base_dir_ / p)) return base_dir_ / p;
+  if (std::filesystem::exists(p)) return p;
+  // In neither place: the suite-folder path, so that a "does not exist" names where it looked.
+  return base_dir_ / p;
 }
 
 Params Params::Defaults(const ParamSchema& schema, std::filesystem::path base_dir) {

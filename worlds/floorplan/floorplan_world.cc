@@ -38,7 +38,7 @@ ParamSchema Schema() {
 std::filesystem::path ResolveWorldPath(const Params& params, const std::string& value) {
   std::filesystem::path p = params.ResolvePath(value);
   std::error_code ec;
-  if (p.is_absolute() || std::filesystem::exists(p, ec)) return p;
+  if (std::filesystem::path(value).is_absolute() || std::filesystem::exists(p, ec)) return p;
   const std::filesystem::path in_data = DataRoot() / value;
   return std::filesystem::exists(in_data, ec) ? in_data : p;
 }
