@@ -127,6 +127,7 @@ py::dict VectorEnv::Reset(int first) {
       }
     });
   }
+  reset_done_ = true;
   py::dict obs = b.Observations();
   obs["episode"] = b.episode;
   return obs;
@@ -139,7 +140,7 @@ py::tuple VectorEnv::Step(
     throw py::value_error("actions must have shape (" + std::to_string(n) +
                           ", 2): one velocity (vx, vy) per environment");
   }
-  if (!envs_[0]->started()) throw py::value_error("step() before reset()");
+  if (!reset_done_) throw py::value_error("step() before reset(): call reset() first");
   const double* a = actions.data();
   Batch b = MakeBatch();
   {

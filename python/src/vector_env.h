@@ -47,6 +47,9 @@ class VectorEnv {
   std::vector<std::unique_ptr<RowEpisodes>> envs_;
   std::vector<int> next_episode_;
   std::vector<std::uint8_t> ended_;  // not vector<bool>: workers write neighbouring entries
+  // Set by Reset: the constructor resets sub-environment 0 alone (to read the sensors' shapes),
+  // so "env 0 has an episode" does not mean every sub-environment has one.
+  bool reset_done_ = false;
   int humans_ = 0;
   int beams_ = -1;
   /// Sensors reporting other features (SensorReading::values), with their sizes.
