@@ -12,6 +12,7 @@ policy's success rises from 0 to ~0.15-0.2 and the greedy policy reaches ~0.2-0.
 episodes (collisions are most of the rest). The features, the action set (CrowdNav's 81 in the
 robot's frame) and the reward shaping (progress towards the goal) are the example's choices.
 """
+import os
 import sys
 from typing import Dict, Tuple
 
@@ -153,7 +154,10 @@ def main():
     print(f"test (episodes 0-99, greedy): success {r['success']:.2f}, collision "
           f"{r['collision']:.2f}, timeout {r['timeout']:.2f} -> runs/a2c_example/table.md")
     torch.jit.script(greedy).save(out)
-    print(f"TorchScript policy: {out} (suite row: policy: torchscript, weights: {out})")
+    # The row's sensors give the module its inputs: lidar and people, as the Env it trained on.
+    print(f"TorchScript policy: {out}; as a row of a suite with {SUITE}'s worlds and sensors:\n"
+          f"  - {{label: a2c, policy: torchscript, weights: {os.path.abspath(out)}, "
+          f"params: {{sensors: lidar+person}}}}")
 
 
 if __name__ == "__main__":

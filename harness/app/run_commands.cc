@@ -150,8 +150,8 @@ int RunCommand(const std::vector<std::string>& args) {
   RunOptions opt;
   if (auto out = a.Get("--out")) opt.out_dir = *out;
   const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  opt.jobs = a.GetInt("--jobs", hw, 1, 1024);
-  opt.episodes = a.GetInt("--episodes", -1, 1, 10'000'000);
+  opt.jobs = a.GetInt("--jobs", hw, 1, kMaxJobs);
+  opt.episodes = a.GetInt("--episodes", -1, 1, kMaxEpisodes);
   opt.fresh = a.Has("--fresh");
   opt.progress = !a.Has("--quiet");
   opt.shard_index = shard_index;

@@ -95,6 +95,45 @@ def holonomic_actions(v_pref: float = 1.0, speeds: int = 5, rotations: int = 16,
     return np.asarray(acts, dtype=np.float64)
 
 
+def _settings(set) -> list[str]:
+    """`set=` as the core takes it: one "key.path=value" string or a sequence of them."""
+    if isinstance(set, str):
+        return [set]
+    items = list(set)
+    for item in items:
+        if not isinstance(item, str):
+            raise TypeError(f"set must be a 'key.path=value' string or a list of them "
+                            f"(e.g. set=['humans.count=10']), got the entry {item!r}")
+    return items
+
+
+_MAX_EPISODE = 2**31 - 1
+
+
+def _episode_index(value, what: str) -> int:
+    """A suite episode index (reset's seed or options['episode']): a whole number >= 0."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{what} must be a whole number (the suite's episode index), got {value!r}")
+    if not 0 <= int(value) <= _MAX_EPISODE:
+        raise ValueError(f"{what} must be an episode index in [0, {_MAX_EPISODE}], got {value}")
+    return int(value)
+
+
+def _action_indices(actions, count: int, shape: tuple) -> np.ndarray:
+    """Discrete actions: whole numbers in [0, count) of the given shape (no float truncation,
+    no negative indexing from the end)."""
+    a = np.asarray(actions)
+    if a.dtype == np.bool_ or not np.issubdtype(a.dtype, np.integer):
+        raise ValueError(f"discrete actions must be whole numbers in [0, {count - 1}] (indices "
+                         f"into .actions), got {actions!r}")
+    if a.shape != shape:
+        raise ValueError(f"discrete actions must have shape {shape}, got shape {a.shape}")
+    if a.size and (a.min() < 0 or a.max() >= count):
+        raise ValueError(f"discrete actions must be in [0, {count - 1}] (indices into .actions), "
+                         f"got {actions!r}")
+    return a.astype(np.int64)
+
+
 _Base = _gym.Env if _gym is not None else object
 
 
@@ -118,7 +157,7 @@ class Env(_Base):
                  discrete: bool = False, record: bool = False, render_mode: str | None = None):
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode must be None or 'rgb_array', got {render_mode!r}")
-        self._env = _core.Env(str(suite), row, list(set))
+        self._env = _core.Env(str(suite), row, _settings(set))
         self.render_mode = render_mode
         self._record = record or render_mode == "rgb_array"
         self.metadata = dict(self.metadata, render_fps=round(1.0 / self._env.time_step))
@@ -148,9 +187,9 @@ class Env(_Base):
     # -- Gymnasium API -----------------------------------------------------------------------
     def reset(self, *, seed: int | None = None, options: dict | None = None):
         if options and "episode" in options:
-            episode = int(options["episode"])
+            episode = _episode_index(options["episode"], 'options["episode"]')
         elif seed is not None:
-            episode = int(seed)
+            episode = _episode_index(seed, "seed")
         else:
             episode = self._episode + 1
         obs = self._env.reset(episode, self._record)
@@ -159,8 +198,10 @@ class Env(_Base):
         return self._obs(obs), {"episode": episode, "layout": self._env.result()["layout"]}
 
     def step(self, action):
+        if self._episode < 0:
+            raise ValueError("step() before reset(): call reset() first (Gymnasium's order)")
         if self.discrete:
-            velocity = self.actions[int(action)]
+            velocity = self.actions[_action_indices(action, len(self.actions), ())]
         else:
             velocity = np.asarray(action, dtype=np.float64).reshape(-1)
             if velocity.shape != (2,) or not np.all(np.isfinite(velocity)):
@@ -201,6 +242,9 @@ class Env(_Base):
 
     def positions(self) -> np.ndarray:
         """Recorded positions (frames, 1 + humans, 2), robot first; needs `record=True`."""
+        if not self._record:
+            raise ValueError("positions() needs the episode recorded: Env(..., record=True) "
+                             "(or render_mode='rgb_array')")
         return self._env.positions()
 
     @staticmethod
@@ -226,22 +270,41 @@ class _DiscreteSpace:
         return 0 <= int(x) < self.n
 
 
+def _episode_count(episodes) -> int:
+    """evaluate's and run_suite's `episodes`: None (or -1) for the suite's own count."""
+    if episodes is None or (isinstance(episodes, (int, np.integer)) and episodes == -1):
+        return -1
+    if isinstance(episodes, (bool, np.bool_)) or not isinstance(episodes, (int, np.integer)) \
+            or not 1 <= episodes <= _core.MAX_EPISODES:
+        raise ValueError(f"episodes must be a whole number in [1, {_core.MAX_EPISODES}], or None "
+                         f"for the suite's own count; got {episodes!r}")
+    return int(episodes)
+
+
 def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
-             label: str = "python", out: str = "", episodes: int = -1, fresh: bool = True,
-             set: Sequence[str] = (), progress: bool = False) -> list[dict]:
+             label: str = "python", out: str = "", episodes: int | None = None,
+             fresh: bool = True, set: Sequence[str] | str = (),
+             progress: bool = False) -> list[dict]:
     """Runs one suite row with `policy(obs) -> (vx, vy)` as the robot (obs as in Env) and writes
     the CLI's outputs (table.md, table.csv, episodes.csv, manifest.json) to `out` (default
     runs/<suite name>/). Returns the table rows as dicts. A policy that raises ends that episode
-    as policy_error with the message. `fresh=False` resumes stored episodes: only safe when the
+    as policy_error with the message (episodes.csv's `error` column; a RuntimeWarning says how
+    many). `fresh=False` resumes stored episodes: only safe when the
     policy has not changed since."""
-    return _core.evaluate(policy, str(suite), row, label, out, episodes, fresh, list(set), progress)
+    return _core.evaluate(policy, str(suite), row, label, out, _episode_count(episodes), fresh,
+                          _settings(set), progress)
 
 
-def run_suite(suite: str, *, out: str = "", jobs: int = 1, episodes: int = -1, fresh: bool = False,
-              set: Sequence[str] = (), progress: bool = False, dataframe: bool = False):
+def run_suite(suite: str, *, out: str = "", jobs: int = 1, episodes: int | None = None,
+              fresh: bool = False, set: Sequence[str] | str = (), progress: bool = False,
+              dataframe: bool = False):
     """Runs a suite file as `crowdsim-bench run` does (results in `out`, default runs/<name>/);
     returns its table as a list of dicts (a pandas DataFrame with dataframe=True)."""
-    rows = _core.run_suite(str(suite), out, jobs, episodes, fresh, list(set), progress)
+    if isinstance(jobs, (bool, np.bool_)) or not isinstance(jobs, (int, np.integer)) \
+            or not 1 <= jobs <= _core.MAX_JOBS:
+        raise ValueError(f"jobs must be a whole number in [1, {_core.MAX_JOBS}], got {jobs!r}")
+    rows = _core.run_suite(str(suite), out, int(jobs), _episode_count(episodes), fresh,
+                           _settings(set), progress)
     if dataframe:
         import pandas as pd
         return pd.DataFrame(rows)

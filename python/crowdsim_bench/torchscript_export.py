@@ -195,7 +195,20 @@ def _training_setting(weights: Path, plugin: str, key: str) -> Optional[str]:
 
 def export(weights: Path, out: Path, lidar_max_range: Optional[float] = None) -> Dict[str, object]:
     """Writes the TorchScript module of `weights` to `out`; returns the row params to use."""
-    archive = torch.jit.load(str(weights), map_location="cpu")
+    if not weights.is_file():
+        raise SystemExit(f"{weights}: no such file (cadrl/sarl weights are written by "
+                         "`crowdsim-bench train`, e.g. results/train/<name>/weights.pt)")
+    try:
+        archive = torch.jit.load(str(weights), map_location="cpu")
+    except RuntimeError as e:
+        first = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
+        raise SystemExit(f"{weights}: not a TorchScript archive ({first}); give the weights.pt "
+                         "of `crowdsim-bench train`") from None
+    if not hasattr(archive, "crowdsim_model"):
+        raise SystemExit(f"{weights}: a TorchScript module, but not cadrl/sarl weights of "
+                         "`crowdsim-bench train` (no crowdsim_model attribute); a module already "
+                         "exported runs as it is: {policy: torchscript, weights: " + str(weights) +
+                         "}")
     model = str(archive.crowdsim_model)
     sensors = str(archive.crowdsim_sensors)
     beams = int(archive.crowdsim_lidar_beams)

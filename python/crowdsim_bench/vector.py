@@ -30,12 +30,13 @@ class VectorEnv:
     metadata = {"autoreset_mode": "next_step"}
 
     def __init__(self, suite: str, row: str | int = 1, num_envs: int = 16, *,
-                 set: Sequence[str] = (), discrete: bool = False, threads: int = 1):
-        from . import _box, _dict, _discrete_space, holonomic_actions  # no import cycle at load
-        self._env = _core.VectorEnv(str(suite), row, int(num_envs), list(set), int(threads))
+                 set: Sequence[str] | str = (), discrete: bool = False, threads: int = 1):
+        from . import _box, _dict, _discrete_space, _settings, holonomic_actions  # no cycle
+        settings = _settings(set)
+        self._env = _core.VectorEnv(str(suite), row, int(num_envs), settings, int(threads))
         self.num_envs = self._env.num_envs
         self.discrete = discrete
-        probe = _core.Env(str(suite), row, list(set))
+        probe = _core.Env(str(suite), row, settings)
         self.actions = holonomic_actions(probe.v_pref)
         n, h = self.num_envs, self._env.humans
         if discrete:
@@ -65,15 +66,22 @@ class VectorEnv:
         return self._env.threads
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
-        first = int(options["episode"]) if options and "episode" in options else (
-            int(seed) if seed is not None else 0)
+        from . import _MAX_EPISODE, _episode_index
+        if options and "episode" in options:
+            first = _episode_index(options["episode"], 'options["episode"]')
+        else:
+            first = _episode_index(seed, "seed") if seed is not None else 0
+        if first > _MAX_EPISODE - (self.num_envs - 1):
+            raise ValueError(f"the episodes {first}..{first + self.num_envs - 1} pass the last "
+                             f"episode index {_MAX_EPISODE}")
         obs = self._env.reset(first)
         episode = obs.pop("episode")
         return obs, {"episode": episode}
 
     def step(self, actions):
         if self.discrete:
-            velocities = self.actions[np.asarray(actions, dtype=np.int64).reshape(self.num_envs)]
+            from . import _action_indices
+            velocities = self.actions[_action_indices(actions, len(self.actions), (self.num_envs,))]
         else:
             velocities = np.asarray(actions, dtype=np.float64)
         if velocities.shape != (self.num_envs, 2) or not np.all(np.isfinite(velocities)):

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -202,6 +203,20 @@ RunSummary RunWithoutGil(const Suite& suite, PluginRegistry& registry, const Run
   return summary;
 }
 
+// A policy that raises ends its episode, not the run: say so once, with where the messages are.
+void WarnOfPolicyErrors(const RunSummary& summary) {
+  for (const TableRow& r : summary.rows) {
+    const RowMetrics& m = r.metrics;
+    if (m.policy_error_rate <= 0.0) continue;
+    const auto failed = static_cast<long>(std::lround(m.policy_error_rate * m.episodes));
+    const std::string message =
+        std::to_string(failed) + " of " + std::to_string(m.episodes) + " episodes of row '" +
+        r.Label() + "' ended as policy_error (the policy raised or returned a bad velocity); " +
+        "the messages are in the error column of " + (summary.out_dir / "episodes.csv").string();
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+  }
+}
+
 py::list Evaluate(py::object policy, const std::string& suite_path, const py::object& row,
                   const std::string& label, const std::string& out, int episodes, bool fresh,
                   const std::vector<std::string>& set, bool progress) {
@@ -223,6 +238,7 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
   SetNextPythonPolicy(SensorNames(row_spec), row_spec.humans.count, policy.ptr());
   const RunSummary summary = RunWithoutGil(suite, registry, options);
   SetNextPythonPolicy({}, 0, nullptr);
+  WarnOfPolicyErrors(summary);
   return Rows(summary);
 }
 
@@ -246,6 +262,8 @@ py::list RunSuiteFile(const std::string& suite_path, const std::string& out, int
 PYBIND11_MODULE(_core, m) {
   using namespace crowdsim::python;
   m.doc() = "crowdsim-bench's C++ core (use the crowdsim_bench package)";
+  m.attr("MAX_JOBS") = crowdsim::kMaxJobs;
+  m.attr("MAX_EPISODES") = crowdsim::kMaxEpisodes;
   m.attr("__version__") =
       std::string(crowdsim::Version()) + " (commit " + crowdsim::GitCommit() + ")";
   py::class_<Env>(m, "Env")

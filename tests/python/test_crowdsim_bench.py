@@ -166,7 +166,8 @@ class Evaluate(unittest.TestCase):
             raise RuntimeError("my bug")
 
         with tempfile.TemporaryDirectory() as out:
-            rows = cb.evaluate(broken, QUICK, row=1, out=out, episodes=2)
+            with self.assertWarnsRegex(RuntimeWarning, "2 of 2 episodes .* policy_error"):
+                rows = cb.evaluate(broken, QUICK, row=1, out=out, episodes=2)
             self.assertEqual(rows[0]["policy_error"], 1.0)
             with open(os.path.join(out, "episodes.csv"), newline="") as f:
                 errors = [e["error"] for e in csv.DictReader(f)]
@@ -264,6 +265,67 @@ class VectorEnvContract(unittest.TestCase):
             for k in range(1, 4):
                 np.testing.assert_array_equal(a[k], b[k])
             np.testing.assert_array_equal(a[4]["episode"], b[4]["episode"])
+
+
+class UserMistakes(unittest.TestCase):
+    """What a user gets wrong first: each a clear Python error, never a crash or a silent
+    stand-in."""
+
+    def test_stepping_before_reset_is_an_error(self):
+        with self.assertRaisesRegex(ValueError, "before reset"):
+            cb.Env(QUICK, row="orca").step([0.5, 0.0])
+        for n in (1, 2, 3):  # the sub-environments past the first were never started
+            with self.assertRaisesRegex(ValueError, "before reset"):
+                cb.VectorEnv(QUICK, row="orca", num_envs=n).step(np.zeros((n, 2)))
+
+    def test_discrete_actions_must_be_whole_indices_in_range(self):
+        env = cb.Env(QUICK, row="orca", discrete=True)
+        env.reset(seed=0)
+        for bad in (-1, 81, 2.7, True, "3", [1, 2]):
+            with self.assertRaises(ValueError, msg=repr(bad)):
+                env.step(bad)
+        env.step(np.int32(80))
+        env.step(np.array(0))
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=3, discrete=True)
+        venv.reset()
+        for bad in (np.full(3, -1), np.array([0, 81, 1]), np.zeros(3), np.zeros(2, int),
+                    np.zeros((3, 1), int)):
+            with self.assertRaises(ValueError, msg=repr(bad)):
+                venv.step(bad)
+        venv.step([0, 40, 80])
+
+    def test_set_takes_one_string_or_a_list_of_strings(self):
+        one = cb.Env(QUICK, row="orca", set="humans.count=3")
+        listed = cb.Env(QUICK, row="orca", set=["humans.count=3"])
+        self.assertEqual(one.observation_space["humans"].shape, (3, 5))
+        self.assertEqual(listed.observation_space["humans"].shape, (3, 5))
+        with self.assertRaisesRegex(TypeError, "key.path=value"):
+            cb.Env(QUICK, row="orca", set=["humans.count=3", 4])
+
+    def test_counts_out_of_range_are_refused_as_by_the_cli(self):
+        with tempfile.TemporaryDirectory() as out:
+            for episodes in (0, -5, 2.5, True):
+                with self.assertRaisesRegex(ValueError, "episodes must be", msg=repr(episodes)):
+                    cb.run_suite(QUICK, out=out, episodes=episodes)
+                with self.assertRaisesRegex(ValueError, "episodes must be", msg=repr(episodes)):
+                    cb.evaluate(straight_to_goal, QUICK, out=out, episodes=episodes)
+            for jobs in (0, -3, 1025):
+                with self.assertRaisesRegex(ValueError, "jobs must be", msg=repr(jobs)):
+                    cb.run_suite(QUICK, out=out, jobs=jobs, episodes=1)
+            self.assertFalse(os.listdir(out))  # nothing ran
+
+    def test_episode_indices_out_of_range_and_positions_without_recording(self):
+        env = cb.Env(QUICK, row="orca")
+        for bad in (10**12, -1):
+            with self.assertRaisesRegex(ValueError, "episode index"):
+                env.reset(seed=bad)
+        with self.assertRaises(TypeError):
+            env.reset(options={"episode": 1.5})
+        with self.assertRaisesRegex(ValueError, "episode index"):
+            cb.VectorEnv(QUICK, row="orca", num_envs=2).reset(seed=2**31)
+        env.reset(seed=0)
+        with self.assertRaisesRegex(ValueError, "record=True"):
+            env.positions()
 
 
 class Render(unittest.TestCase):

@@ -116,6 +116,26 @@ class TorchScriptExport(unittest.TestCase):
                                            lidar_max_range=5.0)
         self.assertEqual(params["sensors"], "lidar")
 
+    def test_files_that_are_not_trained_weights_are_one_line_errors(self):
+        plain = os.path.join(self.dir, "plain.pt")
+
+        class Plain(torch.nn.Module):
+            def forward(self, x: torch.Tensor) -> torch.Tensor:
+                return x
+
+        torch.jit.script(Plain()).save(plain)
+        text = os.path.join(self.dir, "notes.txt")
+        with open(text, "w") as f:
+            f.write("not a model")
+        for path, expected in ((os.path.join(self.dir, "missing.pt"), "no such file"),
+                               (text, "not a TorchScript archive"),
+                               (plain, "not cadrl/sarl weights")):
+            with self.assertRaises(SystemExit) as e:
+                torchscript_export.export(torchscript_export.Path(path),
+                                          torchscript_export.Path(os.path.join(self.dir, "m.pt")))
+            self.assertIn(expected, str(e.exception))
+            self.assertEqual(len(str(e.exception).splitlines()), 1, str(e.exception))
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

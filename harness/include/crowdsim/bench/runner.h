@@ -20,6 +20,11 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The ranges a run takes for its worker count and its episode count (the CLI's --jobs and
+/// --episodes, the Python package's jobs= and episodes=).
+inline constexpr int kMaxJobs = 1024;
+inline constexpr int kMaxEpisodes = 10'000'000;
+
 struct RunOptions {
   std::filesystem::path out_dir;  ///< default: DefaultRunDir(suite)
   int jobs = 1;                   ///< worker threads, or worker processes when isolated
