@@ -289,8 +289,8 @@ def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
     the CLI's outputs (table.md, table.csv, episodes.csv, manifest.json) to `out` (default
     runs/<suite name>/). Returns the table rows as dicts. A policy that raises ends that episode
     as policy_error with the message (episodes.csv's `error` column; a RuntimeWarning says how
-    many). `fresh=False` resumes stored episodes: only safe when the
-    policy has not changed since."""
+    many). `episodes`: None for the suite's count. `fresh=False` resumes stored episodes: only
+    safe when the policy has not changed since."""
     return _core.evaluate(policy, str(suite), row, label, out, _episode_count(episodes), fresh,
                           _settings(set), progress)
 
