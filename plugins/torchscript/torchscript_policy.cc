@@ -27,21 +27,32 @@ struct TorchScriptPolicy::Impl {
 
   c10::IValue Forward(ObservationDict obs) {
     c10::InferenceMode guard;
+    std::string keys;  // for a module that reads a key the row does not give
+    for (const auto& entry : obs) keys += (keys.empty() ? "" : ", ") + entry.key();
     try {
       return module.forward({c10::IValue(std::move(obs))});
     } catch (const c10::Error& e) {
-      throw std::runtime_error(Failed(e.what_without_backtrace()));
+      throw std::runtime_error(Failed(e.what_without_backtrace(), keys));
     } catch (const std::exception& e) {  // torch::jit::JITException: an error raised in forward
-      throw std::runtime_error(Failed(e.what()));
+      throw std::runtime_error(Failed(e.what(), keys));
     }
   }
 
-  std::string Failed(const std::string& what) const {
+  std::string Failed(const std::string& what, const std::string& keys) const {
     const char* input = config.UsesLookahead()
                             ? "the stacked lookahead observations (output: values: robot (A, 9), "
                               "humans (A, H, 5), ...; one row per action)"
                             : "the observation";
-    return "torchscript: forward of '" + config.weights + "' failed on " + input + ": " + what;
+    std::string message =
+        "torchscript: forward of '" + config.weights + "' failed on " + input + ": " + what;
+    // A dictionary lookup of a missing key raises KeyError in TorchScript: the usual cause is a
+    // module trained with a sensor this row's `sensors` parameter leaves out.
+    if (what.find("KeyError") != std::string::npos) {
+      message += "\nThe observation has the keys " + keys + " (params.sensors: " + config.sensors +
+                 "); a module that reads lidar needs sensors: lidar or lidar+person, and the "
+                 "row the lidar2d sensor";
+    }
+    return message;
   }
 
   void CheckLidar(const Observation& obs) const {

@@ -293,6 +293,14 @@ class TorchScriptPlugin(unittest.TestCase):
         self.assertNotEqual(p.returncode, 0)
         self.assertIn("lidar2d", p.stdout + p.stderr)
 
+        # A module that reads the lidar on a row whose params leave it out (sensors: person).
+        cautious = save(Cautious(), self.path("cautious.pt"))
+        msg = self.validate_error(f"{{label: ts, policy: torchscript, weights: {cautious}}}")
+        self.assertIn("KeyError: lidar", msg)
+        self.assertIn("The observation has the keys robot, time, humans, humans_mask "
+                      "(params.sensors: person); a module that reads lidar needs sensors: lidar "
+                      "or lidar+person", msg)
+
         suite = quick_with_rows(self.dir, [
             f"{{label: ts, policy: torchscript, weights: {pt}, params: {{sensors: lidar+person, lidar_beams: 30}}}}",
         ])
