@@ -18,6 +18,7 @@
 #include "episode_appender.h"
 #include "episode_wire.h"
 #include "run_progress.h"
+#include "stored_episodes.h"
 #include "worker_process.h"
 
 namespace crowdsim {
@@ -68,9 +69,6 @@ fs::path DefaultRunDir(const Suite& suite) { return fs::path("runs") / suite.nam
 
 namespace {
 
-using EpisodeKey = std::pair<std::string, int>;  // (row label, episode index)
-using EpisodeLines = std::map<EpisodeKey, EpisodeLine>;
-
 /// Which (row, episode) pairs a run covers: the first `episodes` of every row, or the shard's
 /// slice of them (row-major position modulo the shard count).
 struct RunScope {
@@ -119,74 +117,6 @@ std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
     facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
   }
   return worlds;
-}
-
-/// The labels of the rows whose stored episodes are this configuration's: all of them when the
-/// suite's hash is unchanged, else those whose own row hash is (a table that grows row by row).
-/// Throws RunError when none is.
-std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir, bool note) {
-  const fs::path manifest = out_dir / "manifest.json";
-  const std::string stored = ReadManifestField(manifest, "config_hash");
-  std::set<std::string> kept;
-  if (stored == suite.ConfigHash()) {
-    for (const RowSpec& row : suite.rows) kept.insert(row.label);
-    return kept;
-  }
-  const std::vector<std::string> row_hashes = ReadManifestStrings(manifest, "row_hashes");
-  const std::set<std::string> stored_rows(row_hashes.begin(), row_hashes.end());
-  for (const RowSpec& row : suite.rows) {
-    if (stored_rows.count(row.ConfigHash() + " " + row.label)) kept.insert(row.label);
-  }
-  if (kept.empty()) {
-    throw RunError("'" + out_dir.string() +
-                   "' holds results of a different configuration "
-                   "of this suite (config hash " +
-                   (stored.empty() ? "unknown" : stored) + ", now " + suite.ConfigHash() +
-                   ", and no row is unchanged). Pass --fresh to "
-                   "replace them, or --out to write elsewhere.");
-  }
-  if (note) {
-    std::string rerun;
-    for (const RowSpec& row : suite.rows) {
-      if (!kept.count(row.label)) rerun += (rerun.empty() ? "" : ", ") + row.label;
-    }
-    std::fprintf(stderr,
-                 "note: the suite changed since '%s' was written: %zu unchanged row(s) "
-                 "resume, new or changed rows run from scratch: %s\n",
-                 out_dir.string().c_str(), kept.size(), rerun.c_str());
-  }
-  return kept;
-}
-
-/// The finished episodes stored in `out_dir` that this run keeps (resume).
-EpisodeLines StoredEpisodes(const Suite& suite, const fs::path& out_dir, bool note) {
-  EpisodeLines done;
-  const fs::path episodes_csv = out_dir / "episodes.csv";
-  if (!fs::exists(episodes_csv)) return done;
-  const std::set<std::string> kept = ResumableRows(suite, out_dir, note);
-  EpisodesCsvRead stored_lines;
-  try {
-    stored_lines = ReadEpisodesCsvChecked(episodes_csv);
-  } catch (const std::runtime_error& e) {
-    throw RunError(e.what());
-  }
-  if (stored_lines.damaged > 0 && note) {
-    std::fprintf(
-        stderr,
-        "note: %d damaged line(s) of %s skipped, their episodes run again (the first: %s)\n",
-        stored_lines.damaged, episodes_csv.string().c_str(), stored_lines.first_damage.c_str());
-  }
-  for (auto& line : stored_lines.lines) {
-    if (kept.count(line.row)) done[{line.row, line.episode}] = std::move(line);
-  }
-  const std::string commit = ReadManifestField(out_dir / "manifest.json", "git_commit");
-  if (!done.empty() && note && commit != GitCommit()) {
-    std::fprintf(stderr,
-                 "note: resuming %zu stored episodes made by commit %s; this is %s. Pass --fresh "
-                 "to rerun them with this build.\n",
-                 done.size(), commit.empty() ? "unknown" : commit.c_str(), GitCommit());
-  }
-  return done;
 }
 
 std::string EpisodesCsvText(const std::vector<const EpisodeLine*>& lines) {
@@ -496,8 +426,9 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   RunSummary summary;
   summary.out_dir = PrepareOutDir(suite, options);
   const auto worlds = PreflightRows(suite, registry, &facts);
-  EpisodeLines done =
-      options.fresh ? EpisodeLines{} : StoredEpisodes(suite, summary.out_dir, options.progress);
+  EpisodeLines done = options.fresh ? EpisodeLines{}
+                                    : StoredEpisodes(suite, worlds, {summary.out_dir, facts.shard},
+                                                     options.progress);
   // Rewrite the stored lines cleanly (drops a line cut short by a crash), then append.
   std::vector<const EpisodeLine*> stored;
   for (const auto& [key, line] : done) stored.push_back(&line);

@@ -232,6 +232,83 @@ TEST_F(RunSuiteTest, AGrowingSuiteRerunsOnlyItsNewOrChangedRows) {
             WithoutTimingColumns(ReadText(dir_.path() / "fresh" / "episodes.csv")));
 }
 
+TEST_F(RunSuiteTest, StoredEpisodesARerunCannotUseAreSetAsideNotLost) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "keep", 1, 4);
+  const fs::path csv = dir_.path() / "keep" / "episodes.csv";
+  const fs::path dropped = dir_.path() / "keep" / "episodes.dropped.csv";
+  const std::string before = ReadText(csv);
+  // The linear row removed from the suite: its stored episodes move aside, orca's resume.
+  std::string without_linear = kSuite;
+  const std::string linear_row = "  - {label: linear, policy: linear}\n";
+  without_linear.erase(without_linear.find(linear_row), linear_row.size());
+  const Suite t = LoadOrDie(without_linear);
+  RunSummary r = Run(t, "keep", 1, 4);
+  EXPECT_EQ(r.episodes_resumed, 4);
+  EXPECT_EQ(r.episodes_run, 0);
+  ASSERT_TRUE(fs::exists(dropped));
+  std::string linear_lines;
+  std::istringstream lines(before);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("linear,")) linear_lines += line + "\n";
+  }
+  EXPECT_EQ(ReadText(dropped), EpisodeCsvHeader() + "\n" + linear_lines);
+  EXPECT_EQ(ReadText(csv).find("\nlinear,"), std::string::npos);
+
+  // A line whose seed is not the one the suite gives its episode (edited, or from another run):
+  // set aside too (appended), and its episode runs again.
+  std::string text = ReadText(csv);
+  const size_t line2 = text.find("\norca,2,");
+  ASSERT_NE(line2, std::string::npos) << text;
+  const size_t seed = line2 + std::string("\norca,2,").size();
+  text.replace(seed, text.find(',', seed) - seed, "12345");
+  std::ofstream(csv) << text;
+  r = Run(t, "keep", 1, 4);
+  EXPECT_EQ(r.episodes_resumed, 3);
+  EXPECT_EQ(r.episodes_run, 1);
+  EXPECT_NE(ReadText(dropped).find("\norca,2,12345,"), std::string::npos);
+  EXPECT_EQ(ReadText(csv).find(",12345,"), std::string::npos);
+  Run(t, "fresh", 1, 4);
+  EXPECT_EQ(WithoutTimingColumns(ReadText(csv)),
+            WithoutTimingColumns(ReadText(dir_.path() / "fresh" / "episodes.csv")));
+}
+
+TEST_F(RunSuiteTest, AShardRefusesAFolderOfAWholeRunOrAnotherShard) {
+  const Suite s = LoadOrDie(kSuite);
+  auto shard = [&](const std::string& out, int k) {
+    RunOptions o;
+    o.out_dir = dir_.path() / out;
+    o.shard_index = k;
+    o.shard_count = 3;
+    o.episodes = 4;
+    o.progress = false;
+    return RunSuite(s, registry_, o);
+  };
+  auto error = [&](const std::string& out, int k) {
+    try {
+      shard(out, k);
+    } catch (const RunError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  Run(s, "whole", 1, 4);
+  const std::string whole = ReadText(dir_.path() / "whole" / "episodes.csv");
+  EXPECT_NE(error("whole", 1)
+                .find("holds a whole run of this suite, and shard 1/3 would keep "
+                      "only its own episodes"),
+            std::string::npos);
+  EXPECT_EQ(ReadText(dir_.path() / "whole" / "episodes.csv"), whole);  // nothing dropped
+  EXPECT_TRUE(fs::exists(dir_.path() / "whole" / "table.csv"));
+  shard("one", 1);
+  EXPECT_NE(error("one", 2).find("holds shard 1/3"), std::string::npos);
+  EXPECT_EQ(shard("one", 1).episodes_resumed, 3);  // its own folder: a resume
+  // A whole run may take a shard's folder: it keeps the shard's episodes and runs the rest.
+  const RunSummary r = Run(s, "one", 1, 4);
+  EXPECT_EQ(r.episodes_resumed, 3);
+  EXPECT_EQ(r.episodes_run, 5);
+}
+
 TEST_F(RunSuiteTest, RefusesToMixConfigurations) {
   const Suite s = LoadOrDie(kSuite);
   Run(s, "out", 1, 2);

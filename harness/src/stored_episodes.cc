@@ -1,0 +1,170 @@
+#include "stored_episodes.h"
+
+#include <cstdio>
+#include <fstream>
+#include <set>
+
+#include "crowdsim/bench/row_instance.h"
+#include "crowdsim/bench/runner.h"
+#include "crowdsim/version.h"
+
+namespace crowdsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The labels of the rows whose stored episodes are this configuration's: all of them when the
+/// suite's hash is unchanged, else those whose own row hash is (a table that grows row by row).
+/// Throws RunError when none is.
+std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir) {
+  const fs::path manifest = out_dir / "manifest.json";
+  const std::string stored = ReadManifestField(manifest, "config_hash");
+  std::set<std::string> kept;
+  if (stored == suite.ConfigHash()) {
+    for (const RowSpec& row : suite.rows) kept.insert(row.label);
+    return kept;
+  }
+  const std::vector<std::string> row_hashes = ReadManifestStrings(manifest, "row_hashes");
+  const std::set<std::string> stored_rows(row_hashes.begin(), row_hashes.end());
+  for (const RowSpec& row : suite.rows) {
+    if (stored_rows.count(row.ConfigHash() + " " + row.label)) kept.insert(row.label);
+  }
+  if (kept.empty()) {
+    throw RunError("'" + out_dir.string() +
+                   "' holds results of a different configuration "
+                   "of this suite (config hash " +
+                   (stored.empty() ? "unknown" : stored) + ", now " + suite.ConfigHash() +
+                   ", and no row is unchanged). Pass --fresh to "
+                   "replace them, or --out to write elsewhere.");
+  }
+  return kept;
+}
+
+/// A shard resumes only a folder of the same shard: anywhere else it would keep its own slice
+/// and drop every other stored episode. (A whole run may resume a shard's folder: it keeps them
+/// all and runs the rest.)
+void CheckShard(const ResumeTarget& target) {
+  if (target.shard.empty()) return;
+  const std::string stored = ReadManifestField(target.out_dir / "manifest.json", "shard");
+  if (stored == target.shard) return;
+  throw RunError("'" + target.out_dir.string() + "' holds " +
+                 (stored.empty() ? std::string("a whole run") : "shard " + stored) +
+                 " of this suite, and shard " + target.shard +
+                 " would keep only its own episodes there. Give each shard its own --out "
+                 "folder (and join them with `crowdsim-bench merge`), or pass --fresh to replace "
+                 "the folder's results.");
+}
+
+/// Appends `lines` to episodes.dropped.csv beside episodes.csv (the header when it is new).
+fs::path SetAside(const fs::path& out_dir, const std::vector<const EpisodeLine*>& lines) {
+  const fs::path path = out_dir / "episodes.dropped.csv";
+  const bool fresh = !fs::exists(path);
+  std::ofstream out(path, std::ios::app);
+  if (fresh) out << EpisodeCsvHeader() << "\n";
+  for (const EpisodeLine* line : lines) out << FormatEpisodeLine(*line) << "\n";
+  out.flush();
+  if (!out) {
+    throw RunError("cannot write " + path.string() +
+                   " (where the stored episodes this run no longer uses are kept): check the "
+                   "disk, or pass --fresh to discard them");
+  }
+  return path;
+}
+
+std::string Quoted(const std::set<std::string>& labels) {
+  std::string text;
+  for (const std::string& label : labels) text += (text.empty() ? "'" : ", '") + label + "'";
+  return text;
+}
+
+}  // namespace
+
+EpisodeLines StoredEpisodes(const Suite& suite,
+                            const std::vector<std::shared_ptr<WorldSource>>& worlds,
+                            const ResumeTarget& target, bool note) {
+  EpisodeLines done;
+  const fs::path& out_dir = target.out_dir;
+  const fs::path episodes_csv = out_dir / "episodes.csv";
+  if (!fs::exists(episodes_csv)) return done;
+  EpisodesCsvRead stored_lines;
+  try {
+    stored_lines = ReadEpisodesCsvChecked(episodes_csv);
+  } catch (const std::runtime_error& e) {
+    throw RunError(e.what());
+  }
+  if (stored_lines.lines.empty()) return done;
+  const std::set<std::string> kept = ResumableRows(suite, out_dir);
+  CheckShard(target);
+  if (stored_lines.damaged > 0 && note) {
+    std::fprintf(
+        stderr,
+        "note: %d damaged line(s) of %s skipped, their episodes run again (the first: %s)\n",
+        stored_lines.damaged, episodes_csv.string().c_str(), stored_lines.first_damage.c_str());
+  }
+
+  std::map<std::string, std::size_t> row_of;  // label -> index in the suite
+  for (std::size_t r = 0; r < suite.rows.size(); ++r) row_of[suite.rows[r].label] = r;
+  std::vector<const EpisodeLine*> aside;
+  std::set<std::string> removed, changed;
+  int foreign = 0;
+  std::string first_foreign;
+  for (const EpisodeLine& line : stored_lines.lines) {
+    const auto row = row_of.find(line.row);
+    if (row == row_of.end() || !kept.count(line.row)) {
+      (row == row_of.end() ? removed : changed).insert(line.row);
+      aside.push_back(&line);
+      continue;
+    }
+    // The seed this suite gives the episode: a line with another is not this suite's (edited
+    // by hand, or copied from another run).
+    const std::uint64_t seed =
+        MakeEpisodeRequest(suite, suite.rows[row->second], *worlds[row->second], line.episode).seed;
+    if (line.episode < 0 || line.seed != seed) {
+      if (foreign++ == 0) {
+        first_foreign = "row '" + line.row + "', episode " + std::to_string(line.episode) +
+                        ", seed " + std::to_string(line.seed) + " where the suite's is " +
+                        std::to_string(seed);
+      }
+      aside.push_back(&line);
+      continue;
+    }
+    done[{line.row, line.episode}] = line;
+  }
+  if (note && (kept.size() < suite.rows.size() || !removed.empty())) {
+    std::string rerun;
+    for (const RowSpec& row : suite.rows) {
+      if (!kept.count(row.label)) rerun += (rerun.empty() ? "" : ", ") + row.label;
+    }
+    std::fprintf(stderr,
+                 "note: the suite changed since '%s' was written: %zu unchanged row(s) resume; "
+                 "new or changed rows run from scratch: %s\n",
+                 out_dir.string().c_str(), kept.size(), rerun.empty() ? "none" : rerun.c_str());
+  }
+  if (!aside.empty()) {
+    const fs::path path = SetAside(out_dir, aside);
+    if (note) {
+      std::string why;
+      if (!removed.empty()) why += "of row(s) " + Quoted(removed) + ", no longer in the suite";
+      if (!changed.empty()) {
+        why += std::string(why.empty() ? "" : "; ") + "of row(s) " + Quoted(changed) +
+               ", whose configuration changed";
+      }
+      if (foreign > 0) {
+        why += std::string(why.empty() ? "" : "; ") + std::to_string(foreign) +
+               " not this suite's episodes (the first: " + first_foreign + ")";
+      }
+      std::fprintf(stderr, "note: %zu stored episode line(s) moved to %s: %s\n", aside.size(),
+                   path.string().c_str(), why.c_str());
+    }
+  }
+  const std::string commit = ReadManifestField(out_dir / "manifest.json", "git_commit");
+  if (!done.empty() && note && commit != GitCommit()) {
+    std::fprintf(stderr,
+                 "note: resuming %zu stored episodes made by commit %s; this is %s. Pass --fresh "
+                 "to rerun them with this build.\n",
+                 done.size(), commit.empty() ? "unknown" : commit.c_str(), GitCommit());
+  }
+  return done;
+}
+
+}  // namespace crowdsim
