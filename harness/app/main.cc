@@ -97,7 +97,8 @@ constexpr const char* kFooter = R"(  crowdsim-bench help [COMMAND]   (or COMMAND
       a bash completion script: source <(crowdsim-bench completion bash)
 
 exit codes: 0 done; 1 failed while running (a plugin, a file, the disk); 2 usage or
-validation error (nothing was run); 130 interrupted (train: checkpoint written, --resume).
+validation error, or results that do not fit (another configuration or shard in --out, shards
+that are not one run): nothing was run; 130 interrupted (train: checkpoint written, --resume).
 environment: CROWDSIM_PLUGIN_PATH (extra plugin folders, searched first, ':'-separated),
 CROWDSIM_DATA_DIR (where worlds/ is found; default: the source folder of the build).
 )";

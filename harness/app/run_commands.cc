@@ -75,6 +75,9 @@ int MergeAndReport(const std::vector<std::filesystem::path>& dirs, const std::fi
     std::cerr << "wrote " << (s.out_dir / "table.md").string()
               << ", table.csv, episodes.csv, manifest.json (" << s.episodes_resumed
               << " episodes from " << from << ")\n";
+  } catch (const RunRefused& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;  // nothing was merged
   } catch (const RunError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
@@ -170,6 +173,9 @@ int RunCommand(const std::vector<std::string>& args) {
               << (shard_count > 1 ? ", manifest.json ("
                                   : ", table.csv, episodes.csv, manifest.json (")
               << s.episodes_run << " episodes run, " << s.episodes_resumed << " resumed)\n";
+  } catch (const RunRefused& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;  // nothing was run
   } catch (const RunError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;

@@ -40,12 +40,41 @@ void RecordShardCommits(const fs::path& manifest,
   WriteFileAtomically(manifest, FormatJson(after));
 }
 
+// "1/3" -> "3"; a whole run's folder (no shard) -> "".
+std::string ShardCount(const std::string& shard) {
+  const auto slash = shard.find('/');
+  return slash == std::string::npos ? std::string() : shard.substr(slash + 1);
+}
+
+std::string ShardName(const std::string& shard) {
+  return shard.empty() ? "a whole run" : "shard " + shard;
+}
+
+// What the manifests of two folders of one suite record differently: the suite file, the
+// --set overrides. Empty when neither differs (then the suite file's content did).
+std::string HowTheyDiffer(const fs::path& a, const fs::path& b) {
+  const fs::path ma = a / "manifest.json", mb = b / "manifest.json";
+  std::string text;
+  const std::string suite_a = ReadManifestField(ma, "suite_file");
+  const std::string suite_b = ReadManifestField(mb, "suite_file");
+  if (suite_a != suite_b) text += "; suite files " + suite_a + " and " + suite_b;
+  auto joined = [](const std::vector<std::string>& sets) {
+    std::string all;
+    for (const std::string& s : sets) all += (all.empty() ? "--set " : " --set ") + s;
+    return all.empty() ? std::string("no --set") : all;
+  };
+  const std::vector<std::string> set_a = ReadManifestStrings(ma, "overrides");
+  const std::vector<std::string> set_b = ReadManifestStrings(mb, "overrides");
+  if (set_a != set_b) text += "; run with " + joined(set_a) + " and with " + joined(set_b);
+  return text;
+}
+
 }  // namespace
 
 RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& out_dir,
                        const fs::path& suite_file, PluginRegistry& registry,
                        bool allow_mixed_commits) {
-  if (shard_dirs.empty()) throw RunError("merge needs the output folders of the shards");
+  if (shard_dirs.empty()) throw RunRefused("merge needs the output folders of the shards");
   std::string hash, episodes_text, manifest_suite;
   std::map<std::pair<std::string, int>, std::pair<EpisodeLine, fs::path>> lines;
   std::set<std::string> shards_seen;
@@ -55,9 +84,9 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   for (const fs::path& dir : shard_dirs) {
     const fs::path manifest = dir / "manifest.json";
     if (!fs::exists(manifest) || !fs::exists(dir / "episodes.csv")) {
-      throw RunError("'" + dir.string() +
-                     "' is not the output folder of a run (no manifest.json "
-                     "and episodes.csv)");
+      throw RunRefused("'" + dir.string() +
+                       "' is not the output folder of a run (no manifest.json "
+                       "and episodes.csv)");
     }
     const std::string h = ReadManifestField(manifest, "config_hash");
     const std::string shard = ReadManifestField(manifest, "shard");
@@ -65,16 +94,23 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
       hash = h;
       manifest_suite = ReadManifestField(manifest, "suite_file");
     } else if (h != hash) {
-      throw RunError("'" + dir.string() + "' holds another configuration (config hash " + h +
-                     ", the first folder " + hash + "): shards of one run only");
+      throw RunRefused("'" + dir.string() + "' holds another configuration (config hash " + h +
+                       ", the first folder " + hash + "): shards of one run only" +
+                       HowTheyDiffer(shard_dirs.front(), dir));
+    }
+    if (const std::string first = ReadManifestField(shard_dirs.front() / "manifest.json", "shard");
+        ShardCount(shard) != ShardCount(first)) {
+      throw RunRefused("'" + shard_dirs.front().string() + "' is " + ShardName(first) + " and '" +
+                       dir.string() + "' " + ShardName(shard) +
+                       ": the shards of one run are K/N with one N");
     }
     if (!shard.empty() && !shards_seen.insert(shard).second) {
-      throw RunError("shard " + shard + " is given twice ('" + dir.string() + "')");
+      throw RunRefused("shard " + shard + " is given twice ('" + dir.string() + "')");
     }
     std::string commit = ReadManifestField(manifest, "git_commit");
     if (commit.empty()) commit = "unknown";
     if (!shard_commits.empty() && commit != shard_commits.front().first && !allow_mixed_commits) {
-      throw RunError(
+      throw RunRefused(
           "'" + shard_dirs.front().string() + "' was made by commit " +
           shard_commits.front().first + ", '" + dir.string() + "' by commit " + commit +
           ": shards of different code do not "
@@ -85,9 +121,9 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     for (auto& line : ReadEpisodesCsv(dir / "episodes.csv")) {
       const auto key = std::make_pair(line.row, line.episode);
       if (auto it = lines.find(key); it != lines.end()) {
-        throw RunError("episode " + std::to_string(line.episode) + " of row '" + line.row +
-                       "' is in both '" + it->second.second.string() + "' and '" + dir.string() +
-                       "'");
+        throw RunRefused("episode " + std::to_string(line.episode) + " of row '" + line.row +
+                         "' is in both '" + it->second.second.string() + "' and '" + dir.string() +
+                         "'");
       }
       lines.emplace(key, std::make_pair(std::move(line), dir));
     }
@@ -98,12 +134,13 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   if (!loaded.suite) {
     std::string msg = "cannot load the suite '" + file.string() + "' of the shards:";
     for (const auto& e : loaded.errors) msg += "\n  " + e.Format();
-    throw RunError(msg);
+    throw RunRefused(msg);
   }
   const Suite& suite = *loaded.suite;
   if (suite.ConfigHash() != hash) {
-    throw RunError("the suite '" + file.string() + "' is now another configuration (config hash " +
-                   suite.ConfigHash() + ") than the shards' (" + hash + "): restore it, or rerun");
+    throw RunRefused("the suite '" + file.string() +
+                     "' is now another configuration (config hash " + suite.ConfigHash() +
+                     ") than the shards' (" + hash + "): restore it, or rerun");
   }
   const long episodes = ReadManifestInteger(shard_dirs.front() / "manifest.json", "episodes");
   if (episodes < 1) {
@@ -116,18 +153,19 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     labels.insert(row.label);
     for (int k = 0; k < episodes; ++k) {
       if (!lines.count({row.label, k})) {
-        throw RunError("episode " + std::to_string(k) + " of row '" + row.label +
-                       "' is in none of the " + std::to_string(shard_dirs.size()) +
-                       " folders: a shard is missing or unfinished "
-                       "(rerun it; finished episodes resume)");
+        throw RunRefused("episode " + std::to_string(k) + " of row '" + row.label +
+                         "' is in none of the " + std::to_string(shard_dirs.size()) +
+                         " folders: a shard is missing or unfinished "
+                         "(rerun it; finished episodes resume)");
       }
     }
   }
   for (const auto& [key, value] : lines) {
     if (!labels.count(key.first) || key.second >= episodes) {
-      throw RunError("'" + value.second.string() + "' holds episode " + std::to_string(key.second) +
-                     " of row '" + key.first + "', which the suite's " + std::to_string(episodes) +
-                     " episodes do not have");
+      throw RunRefused("'" + value.second.string() + "' holds episode " +
+                       std::to_string(key.second) + " of row '" + key.first +
+                       "', which the suite's " + std::to_string(episodes) +
+                       " episodes do not have");
     }
   }
   // The joined episodes under the shards' configuration: the runner resumes all of them and

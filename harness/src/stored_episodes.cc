@@ -30,12 +30,12 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
     if (stored_rows.count(row.ConfigHash() + " " + row.label)) kept.insert(row.label);
   }
   if (kept.empty()) {
-    throw RunError("'" + out_dir.string() +
-                   "' holds results of a different configuration "
-                   "of this suite (config hash " +
-                   (stored.empty() ? "unknown" : stored) + ", now " + suite.ConfigHash() +
-                   ", and no row is unchanged). Pass --fresh to "
-                   "replace them, or --out to write elsewhere.");
+    throw RunRefused("'" + out_dir.string() +
+                     "' holds results of a different configuration "
+                     "of this suite (config hash " +
+                     (stored.empty() ? "unknown" : stored) + ", now " + suite.ConfigHash() +
+                     ", and no row is unchanged). Pass --fresh to "
+                     "replace them, or --out to write elsewhere.");
   }
   return kept;
 }
@@ -47,12 +47,12 @@ void CheckShard(const ResumeTarget& target) {
   if (target.shard.empty()) return;
   const std::string stored = ReadManifestField(target.out_dir / "manifest.json", "shard");
   if (stored == target.shard) return;
-  throw RunError("'" + target.out_dir.string() + "' holds " +
-                 (stored.empty() ? std::string("a whole run") : "shard " + stored) +
-                 " of this suite, and shard " + target.shard +
-                 " would keep only its own episodes there. Give each shard its own --out "
-                 "folder (and join them with `crowdsim-bench merge`), or pass --fresh to replace "
-                 "the folder's results.");
+  throw RunRefused("'" + target.out_dir.string() + "' holds " +
+                   (stored.empty() ? std::string("a whole run") : "shard " + stored) +
+                   " of this suite, and shard " + target.shard +
+                   " would keep only its own episodes there. Give each shard its own --out "
+                   "folder (and join them with `crowdsim-bench merge`), or pass --fresh to replace "
+                   "the folder's results.");
 }
 
 /// Appends `lines` to episodes.dropped.csv beside episodes.csv (the header when it is new).

@@ -3,6 +3,8 @@
 #include <map>
 #include <system_error>
 
+#include "crowdsim/bench/results.h"
+
 namespace crowdsim::suite_internal {
 namespace fs = std::filesystem;
 
@@ -80,8 +82,14 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
     return YAML::Node(YAML::NodeType::Null);
   }
   if (fs::is_directory(file, ec)) {
-    errors->push_back(
-        {file.string(), 0, 0, "", "is a folder; give the " + what + " (a .yaml file) in it"});
+    // The output folder of a run (commands that replay a run take the suite it ran).
+    const std::string ran = fs::exists(file / "manifest.json", ec)
+                                ? ReadManifestField(file / "manifest.json", "suite_file")
+                                : std::string();
+    errors->push_back({file.string(), 0, 0, "",
+                       ran.empty() ? "is a folder; give the " + what + " (a .yaml file) in it"
+                                   : "is the output folder of a run; give the " + what +
+                                         " it ran, which its manifest.json names: " + ran});
     return YAML::Node(YAML::NodeType::Null);
   }
   YAML::Node root;

@@ -33,7 +33,8 @@ set_field "$work/s2" git_commit "$other"
 [[ $(field "$work/s2" git_commit) == "$other" ]] || fail "could not change the commit of shard 2"
 status=0
 "$bin" merge "$work/s1" "$work/s2" --out "$work/mixed" > "$work/mixed.log" 2>&1 || status=$?
-[[ $status -eq 1 ]] || { cat "$work/mixed.log"; fail "merge of two commits' shards exited $status, not 1"; }
+# Exit 2: refused before anything was merged (1 is for a failure while running).
+[[ $status -eq 2 ]] || { cat "$work/mixed.log"; fail "merge of two commits' shards exited $status, not 2"; }
 for word in "$commit" "$other" "$work/s1" "$work/s2" --allow-mixed-commits; do
   grep -qF -- "$word" "$work/mixed.log" || { cat "$work/mixed.log"; fail "the error does not name $word"; }
 done

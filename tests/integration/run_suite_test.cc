@@ -459,7 +459,17 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
             std::string::npos);
   EXPECT_NE(merge_error({shards[0], shards[1], shards[1]}).find("shard 2/3 is given twice"),
             std::string::npos);
-  EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "whole"}).find("is in both"),
+  // A whole run's folder among shards; an episode in two shards (a shard's folder edited).
+  EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "whole"})
+                .find("is shard 1/3 and '" + (dir_.path() / "whole").string() + "' a whole run"),
+            std::string::npos);
+  fs::copy(shards[2], dir_.path() / "edited");
+  const std::string first_of_shard1 =
+      ReadText(shards[0] / "episodes.csv")
+          .substr(ReadText(shards[0] / "episodes.csv").find('\n') + 1);
+  std::ofstream(dir_.path() / "edited" / "episodes.csv", std::ios::app)
+      << first_of_shard1.substr(0, first_of_shard1.find('\n') + 1);
+  EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "edited"}).find("is in both"),
             std::string::npos);
   std::string other = kSuite;
   other.replace(other.find("seed: 11"), 8, "seed: 12");
@@ -472,6 +482,28 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   RunSuite(t, registry_, o);
   EXPECT_NE(merge_error({shards[0], shards[1], o.out_dir}).find("holds another configuration"),
             std::string::npos);
+  // The same suite file run with another --set: the message names the overrides.
+  SuiteLoadResult with_set = LoadSuite(suite_file, registry_, {"humans.count=4"});
+  ASSERT_TRUE(with_set.suite);
+  o.out_dir = dir_.path() / "with_set";
+  RunSuite(*with_set.suite, registry_, o);
+  EXPECT_NE(merge_error({shards[0], shards[1], o.out_dir})
+                .find("shards of one run only; run with no --set and with --set humans.count=4"),
+            std::string::npos)
+      << merge_error({shards[0], shards[1], o.out_dir});
+  // Shards of different counts.
+  o.out_dir = dir_.path() / "two";
+  o.shard_count = 2;
+  o.shard_index = 2;
+  RunSuite(s, registry_, o);
+  EXPECT_NE(merge_error({shards[0], o.out_dir})
+                .find("is shard 1/3 and '" + o.out_dir.string() +
+                      "' shard 2/2: the shards of one run are K/N with one N"),
+            std::string::npos)
+      << merge_error({shards[0], o.out_dir});
+  // Refusals are RunRefused (the CLI exits 2: nothing was merged).
+  EXPECT_THROW(MergeShards({shards[0], o.out_dir}, dir_.path() / "bad", suite_file, registry_),
+               RunRefused);
 }
 
 TEST_F(RunSuiteTest, PolicyErrorIsRecordedAndTheSuiteGoesOn) {

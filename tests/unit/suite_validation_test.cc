@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "crowdsim/bench/suite.h"
@@ -333,6 +334,17 @@ TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
   ASSERT_FALSE(folder.suite);
   EXPECT_NE(Find(folder, "is a folder; give the suite file (a .yaml file) in it"), "")
       << All(folder);
+  // The output folder of a run: the suite it ran, as its manifest names it.
+  const auto run_dir = dir_.path() / "a_run";
+  std::filesystem::create_directories(run_dir);
+  std::ofstream(run_dir / "manifest.json") << R"({"suite_file": "suites/quick.yaml"})";
+  const SuiteLoadResult run_folder = LoadSuite(run_dir, registry_);
+  ASSERT_FALSE(run_folder.suite);
+  EXPECT_NE(Find(run_folder,
+                 "is the output folder of a run; give the suite file it ran, which "
+                 "its manifest.json names: suites/quick.yaml"),
+            "")
+      << All(run_folder);
 }
 
 }  // namespace

@@ -12,6 +12,18 @@ void CheckResultsFolder(const fs::path& dir) {
     throw ReportError("results folder '" + dir.string() +
                       "' does not exist (give the --out folder of `crowdsim-bench run`)");
   }
+  // A folder of `run` without its tables: a shard (merge first) or a run that did not finish.
+  if (fs::exists(dir / "manifest.json") && !fs::exists(dir / "table.csv")) {
+    const std::string shard = ReadManifestField(dir / "manifest.json", "shard");
+    if (!shard.empty()) {
+      throw ReportError("'" + dir.string() + "' is shard " + shard +
+                        " of a run, which has no tables: join the shards with `crowdsim-bench "
+                        "merge SHARD_DIR... --out DIR` and report DIR");
+    }
+    throw ReportError("'" + dir.string() +
+                      "' holds a run that has not finished (no table.csv yet): rerun the same "
+                      "`crowdsim-bench run` command to finish it (it resumes), then report");
+  }
   for (const char* f : {"manifest.json", "table.csv", "episodes.csv"}) {
     if (!fs::exists(dir / f)) {
       throw ReportError("'" + dir.string() + "' has no " + f +

@@ -124,6 +124,28 @@ TEST(ReportErrors, FolderWithoutResultsSaysWhatIsExpected) {
   }
 }
 
+TEST(ReportErrors, AShardOrAnUnfinishedRunSaysWhatToDo) {
+  TempDir tmp;
+  PluginRegistry registry;
+  auto error = [&]() {
+    try {
+      BuildReport(tmp.path(), registry);
+    } catch (const ReportError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  std::ofstream(tmp.path() / "episodes.csv") << "row,episode\n";
+  std::ofstream(tmp.path() / "manifest.json") << R"({"suite": "quick"})";
+  EXPECT_NE(error().find("holds a run that has not finished (no table.csv yet): rerun the same"),
+            std::string::npos)
+      << error();
+  std::ofstream(tmp.path() / "manifest.json") << R"({"suite": "quick", "shard": "2/3"})";
+  EXPECT_NE(error().find("is shard 2/3 of a run, which has no tables: join the shards with"),
+            std::string::npos)
+      << error();
+}
+
 TEST_F(ReportTest, MissingSuiteFileSaysHowToFix) {
   PluginRegistry registry;
   ReportOptions opt;

@@ -20,6 +20,14 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A run or merge refused before it did anything: its inputs do not fit together (a folder of
+/// another configuration or shard, shards that are not one run). The CLI exits 2 for it, as for
+/// a usage or validation error; 1 stays for what failed while running.
+class RunRefused : public RunError {
+ public:
+  using RunError::RunError;
+};
+
 /// The ranges a run takes for its worker count and its episode count (the CLI's --jobs and
 /// --episodes, the Python package's jobs= and episodes=).
 inline constexpr int kMaxJobs = 1024;
