@@ -50,6 +50,7 @@ int RenderCommand(const std::vector<std::string>& args) {
   if (animate && a.Has("--sensors-at"))
     throw UsageError("--sensors-at draws still figures only (drop --animate)");
   if (!animate && a.Has("--speed")) throw UsageError("--speed needs --animate");
+  CreateFolderOf("--out", *out);
   double speed = 1.0;
   if (auto s = a.Get("--speed")) {
     try {

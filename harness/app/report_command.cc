@@ -28,6 +28,7 @@ int ReportCommand(const std::vector<std::string>& args) {
     // A training folder's learning curve alone, as a figure.
     const std::string name =
         dir.filename().empty() ? dir.parent_path().filename().string() : dir.filename().string();
+    CreateFolderOf("--out", *out);
     render::WriteFigure(
         render::LearningCurveDrawing(render::ReadTextFileIfExists(dir / "training_episodes.csv"),
                                      render::ReadTextFileIfExists(dir / "training_log.csv"), name),
@@ -41,6 +42,7 @@ int ReportCommand(const std::vector<std::string>& args) {
         "or .pdf): --out must end in .html, got '" +
         *out + "'");
   }
+  CreateFolderOf("--out", *out);
   render::ReportOptions options;
   if (auto s = a.Get("--suite")) options.suite_file = *s;
   PluginRegistry registry;

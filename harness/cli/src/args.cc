@@ -1,6 +1,7 @@
 #include "crowdsim/cli/args.h"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace crowdsim::cli {
 
@@ -77,6 +78,18 @@ double Args::GetNumber(const std::string& name, double fallback) const {
   } catch (const std::exception&) {
   }
   throw UsageError(name + " must be a number, got '" + *v + "'");
+}
+
+void CreateFolderOf(const std::string& option, const std::string& file) {
+  const std::filesystem::path folder = std::filesystem::path(file).parent_path();
+  if (folder.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec || !std::filesystem::is_directory(folder)) {
+    throw UsageError("cannot create the folder of " + option + " '" + file + "' (" +
+                     folder.string() + ": " + (ec ? ec.message() : "not a folder") +
+                     "); choose another " + option);
+  }
 }
 
 }  // namespace crowdsim::cli

@@ -41,6 +41,12 @@ TEST(RenderCli, WritesEveryStillFormatAndAGif) {
   Shell(Exe() + " render " + Quick() + " --row orca --episode 0 --compare 1 --out " +
         again.string());
   EXPECT_EQ(testing::ReadText(tmp.path() / "e.svg"), testing::ReadText(again));
+  // Into folders that do not exist yet (created, as `run --out` creates its folder).
+  const fs::path nested = tmp.path() / "new" / "sub" / "e.svg";
+  auto [nrc, ntext] =
+      Shell(Exe() + " render " + Quick() + " --row 1 --episode 0 --out " + nested.string());
+  EXPECT_EQ(nrc, 0) << ntext;
+  EXPECT_TRUE(fs::exists(nested));
 }
 
 TEST(RenderCli, BadArgumentsNameTheValueAndTheChoices) {
@@ -60,6 +66,8 @@ TEST(RenderCli, BadArgumentsNameTheValueAndTheChoices) {
       {" --row 1 --episode 0 --animate --speed fast --out " + (tmp.path() / "x.gif").string(),
        "--speed must be a number in (0, 100]"},
       {" --row 1 --episode 0", "render needs --out"},
+      {" --row 1 --episode 0 --out " + Quick() + "/under_a_file.svg",  // a file, not a folder
+       "cannot create the folder of --out"},
   };
   for (const auto& [args, expected] : cases) {
     auto [rc, text] = Shell(base + args);

@@ -39,4 +39,8 @@ struct Args {
   double GetNumber(const std::string& name, double fallback) const;
 };
 
+/// Creates the folder an output file goes in (as `run --out` creates its folder); throws
+/// UsageError naming the option, the folder and the reason when it cannot.
+void CreateFolderOf(const std::string& option, const std::string& file);
+
 }  // namespace crowdsim::cli
