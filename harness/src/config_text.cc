@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
+#include <sstream>
 #include <variant>
 
 #include "crowdsim/data_root.h"
@@ -110,6 +112,93 @@ void Canonical(const PluginUse& u, std::ostream& os) {
     if (f.param.empty()) os << "data:" << f.name << "#content:" << f.content << ";";
   }
   os << "}";
+}
+
+namespace {
+
+// A canonical line's key: what comes before its first ':' or '=' ("humans", "seed").
+std::string LineKey(const std::string& line) { return line.substr(0, line.find_first_of(":=")); }
+
+// The "k=v;" pairs inside a line's braces (a plugin's parameters), in order.
+std::vector<std::pair<std::string, std::string>> BracedParams(const std::string& line) {
+  std::vector<std::pair<std::string, std::string>> params;
+  const std::size_t open = line.find('{'), close = line.rfind('}');
+  if (open == std::string::npos || close == std::string::npos || close < open) return params;
+  std::istringstream in(line.substr(open + 1, close - open - 1));
+  for (std::string item; std::getline(in, item, ';');) {
+    const std::size_t eq = item.find('=');
+    if (eq != std::string::npos) params.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+  }
+  return params;
+}
+
+std::string Shortened(const std::string& text) {
+  return text.size() <= 60 ? text : text.substr(0, 57) + "...";
+}
+
+// How one line changed: the parameters that differ when both have braces, else both values.
+std::string LineChange(const std::string& key, const std::string& before, const std::string& now) {
+  const auto a = BracedParams(before), b = BracedParams(now);
+  const std::string head_a = before.substr(0, before.find('{'));
+  const std::string head_b = now.substr(0, now.find('{'));
+  if (a.empty() && b.empty()) {
+    return key + ": " + Shortened(before.substr(key.size() + 1)) + " -> " +
+           Shortened(now.substr(key.size() + 1));
+  }
+  std::string text;
+  auto add = [&](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
+  if (head_a != head_b) {
+    add(Shortened(head_a.substr(key.size() + 1)) + " -> " +
+        Shortened(head_b.substr(key.size() + 1)));
+  }
+  const std::map<std::string, std::string> old_values(a.begin(), a.end());
+  const std::map<std::string, std::string> new_values(b.begin(), b.end());
+  for (const auto& [k, v] : new_values) {
+    const auto it = old_values.find(k);
+    if (it == old_values.end()) {
+      add(k + "=" + Shortened(v) + " (new)");
+    } else if (it->second != v) {
+      add(k + " " + Shortened(it->second) + " -> " + Shortened(v));
+    }
+  }
+  for (const auto& [k, v] : old_values) {
+    if (!new_values.count(k)) add(k + "=" + Shortened(v) + " (gone)");
+  }
+  return key + ": " + text;
+}
+
+std::vector<std::string> ConfigLines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line[0] != '#') lines.push_back(line);
+  }
+  return lines;
+}
+
+}  // namespace
+
+std::string DescribeConfigDifference(const std::string& before, const std::string& now) {
+  const std::vector<std::string> a = ConfigLines(before), b = ConfigLines(now);
+  std::map<std::string, std::string> old_lines;
+  for (const std::string& line : a) old_lines[LineKey(line)] = line;
+  std::string text;
+  auto add = [&](const std::string& part) { text += (text.empty() ? "" : "; ") + part; };
+  std::set<std::string> seen;
+  for (const std::string& line : b) {
+    const std::string key = LineKey(line);
+    seen.insert(key);
+    const auto it = old_lines.find(key);
+    if (it == old_lines.end()) {
+      add(key + ": new");
+    } else if (it->second != line) {
+      add(LineChange(key, it->second, line));
+    }
+  }
+  for (const auto& [key, line] : old_lines) {
+    if (!seen.count(key)) add(key + ": gone");
+  }
+  return text;
 }
 
 }  // namespace crowdsim::suite_internal

@@ -34,4 +34,9 @@ void Canonical(const PluginUse& u, std::ostream& os);
 /// Appends the canonical text of the simulation settings (one line).
 void CanonicalSim(const SimConfig& sim, std::ostream& os);
 
+/// What two canonical texts set differently, for an error message: per differing line its key
+/// and, for a plugin's parameters, each value that changed ("humans: count 5 -> 3; orca
+/// safety_space=0 -> 0.1"), else both lines. Empty when they are equal; comment lines ignored.
+std::string DescribeConfigDifference(const std::string& before, const std::string& now);
+
 }  // namespace crowdsim::suite_internal

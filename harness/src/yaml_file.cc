@@ -1,5 +1,6 @@
 #include "yaml_file.h"
 
+#include <fstream>
 #include <map>
 #include <system_error>
 
@@ -72,6 +73,23 @@ struct Walk {
   }
 };
 
+// yaml-cpp names a tab in an indentation "illegal tab" only at a top-level key; elsewhere it
+// reports what the tab broke ("illegal map value", "illegal block entry"). A tab in the
+// indentation of the error's line or the one before it is said outright.
+std::string TabHint(const fs::path& file, int zero_based_line) {
+  std::ifstream in(file);
+  std::string line;
+  for (int n = 0; std::getline(in, line) && n <= zero_based_line; ++n) {
+    if (n < zero_based_line - 1) continue;
+    const std::size_t indent_end = line.find_first_not_of(" \t");
+    if (line.substr(0, indent_end).find('\t') != std::string::npos) {
+      return " (line " + std::to_string(n + 1) +
+             " is indented with a tab: YAML indents with spaces only)";
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
@@ -100,7 +118,9 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
     return YAML::Node(YAML::NodeType::Null);
   } catch (const YAML::Exception& e) {
     errors->push_back(
-        {file.string(), e.mark.line + 1, e.mark.column + 1, "", "not valid YAML: " + e.msg});
+        {file.string(), e.mark.line + 1, e.mark.column + 1, "",
+         "not valid YAML: " + e.msg +
+             (e.msg.find("tab") == std::string::npos ? TabHint(file, e.mark.line) : "")});
     return YAML::Node(YAML::NodeType::Null);
   }
   const std::size_t before = errors->size();

@@ -334,6 +334,14 @@ TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
   ASSERT_FALSE(folder.suite);
   EXPECT_NE(Find(folder, "is a folder; give the suite file (a .yaml file) in it"), "")
       << All(folder);
+  // A tab in an indentation, where yaml-cpp reports only what it broke.
+  const auto tabbed = dir_.path() / "tabbed.yaml";
+  std::ofstream(tabbed) << "name: t\nepisodes: 2\nworld: {source: crowdnav}\nrows:\n"
+                           "\t- {label: a, policy: linear}\n";
+  const SuiteLoadResult tab = LoadSuite(tabbed, registry_);
+  ASSERT_FALSE(tab.suite);
+  EXPECT_NE(Find(tab, "line 5 is indented with a tab: YAML indents with spaces only"), "")
+      << All(tab);
   // The output folder of a run: the suite it ran, as its manifest names it.
   const auto run_dir = dir_.path() / "a_run";
   std::filesystem::create_directories(run_dir);

@@ -45,8 +45,15 @@ int ResolveEpisode(const Suite& suite, const std::string& text) {
                             std::to_string(suite.episodes) + " episodes";
   if (!ParseInt(text, &n))
     throw std::invalid_argument("--episode '" + text + "' is not a whole number (" + range + ")");
-  if (n < 0 || n >= suite.episodes)
-    throw std::invalid_argument("episode " + text + " is out of range (" + range + ")");
+  if (n < 0 || n >= suite.episodes) {
+    // A run with --episodes N played episodes past the suite's count: they replay the same with
+    // the count raised.
+    throw std::invalid_argument("episode " + text + " is out of range (" + range +
+                                (n >= suite.episodes ? "; for an episode of a run made with "
+                                                       "--episodes N, add --set episodes=N"
+                                                     : "") +
+                                ")");
+  }
   return static_cast<int>(n);
 }
 

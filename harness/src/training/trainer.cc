@@ -5,12 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <fstream>
 #include <iterator>
 #include <memory>
 #include <numeric>
 #include <optional>
 #include <sstream>
 
+#include "../config_text.h"
 #include "blas_kernel.h"
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/results.h"
@@ -471,12 +473,18 @@ void Trainer::AcceptNewRlLength(const fs::path& dir) {
   if (before < 0)
     before = static_cast<int>(ReadManifestInteger(Out("summary.json"), "/procedure/rl_episodes"));
   if (before < 0 || spec_.ConfigHashWithRlEpisodes(before) != state_.config_hash) {
+    // training.yaml in the folder holds the canonical text the checkpoint was made with.
+    std::ostringstream started;
+    started << std::ifstream(Out("training.yaml")).rdbuf();
+    const std::string differs =
+        suite_internal::DescribeConfigDifference(started.str(), spec_.canonical);
     throw TrainError("--resume: the checkpoint in '" + dir.string() +
                      "' belongs to another "
                      "configuration (config hash " +
-                     state_.config_hash + ", the training file now " + spec_.ConfigHash() +
-                     "); restore the file or train into another --out (only "
-                     "training.rl_episodes may change between runs)");
+                     state_.config_hash + ", the training file with its --set options now " +
+                     spec_.ConfigHash() + (differs.empty() ? "" : "; what differs: " + differs) +
+                     "); resume with the file and --set options it was started with, or train "
+                     "into another --out (only training.rl_episodes may change between runs)");
   }
   if (state_.phase == TrainPhase::kReinforcement && t_.rl_episodes < state_.counter) {
     throw TrainError("--resume: training.rl_episodes is now " + std::to_string(t_.rl_episodes) +

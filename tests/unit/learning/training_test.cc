@@ -128,6 +128,10 @@ TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
     ADD_FAILURE() << "resumed a checkpoint of another configuration";
   } catch (const training::TrainError& e) {
     EXPECT_NE(std::string(e.what()).find("another configuration"), std::string::npos) << e.what();
+    // What differs, from the folder's copy of the configuration it started with.
+    EXPECT_NE(std::string(e.what()).find("what differs: humans: 1-1,"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find(" -> 2-2,"), std::string::npos) << e.what();
   }
   EXPECT_THROW(Train(WriteTrainFile(dir, f, "fresh.yaml"), dir.path() / "none", true),
                training::TrainError);
