@@ -239,4 +239,19 @@ std::optional<bool> ReadManifestBool(const fs::path& path, const std::string& ke
   return v.is_boolean() ? std::optional<bool>(v.get<bool>()) : std::nullopt;
 }
 
+std::string DescribeRunInputsDifference(const std::string& suite_a,
+                                        const std::vector<std::string>& set_a,
+                                        const std::string& suite_b,
+                                        const std::vector<std::string>& set_b) {
+  std::string text;
+  if (suite_a != suite_b) text += "; suite files " + suite_a + " and " + suite_b;
+  auto joined = [](const std::vector<std::string>& sets) {
+    std::string all;
+    for (const std::string& s : sets) all += (all.empty() ? "--set " : " --set ") + s;
+    return all.empty() ? std::string("no --set") : all;
+  };
+  if (set_a != set_b) text += "; run with " + joined(set_a) + " and with " + joined(set_b);
+  return text;
+}
+
 }  // namespace crowdsim

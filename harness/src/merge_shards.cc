@@ -50,23 +50,12 @@ std::string ShardName(const std::string& shard) {
   return shard.empty() ? "a whole run" : "shard " + shard;
 }
 
-// What the manifests of two folders of one suite record differently: the suite file, the
-// --set overrides. Empty when neither differs (then the suite file's content did).
+// What the manifests of two folders of one suite record differently.
 std::string HowTheyDiffer(const fs::path& a, const fs::path& b) {
   const fs::path ma = a / "manifest.json", mb = b / "manifest.json";
-  std::string text;
-  const std::string suite_a = ReadManifestField(ma, "suite_file");
-  const std::string suite_b = ReadManifestField(mb, "suite_file");
-  if (suite_a != suite_b) text += "; suite files " + suite_a + " and " + suite_b;
-  auto joined = [](const std::vector<std::string>& sets) {
-    std::string all;
-    for (const std::string& s : sets) all += (all.empty() ? "--set " : " --set ") + s;
-    return all.empty() ? std::string("no --set") : all;
-  };
-  const std::vector<std::string> set_a = ReadManifestStrings(ma, "overrides");
-  const std::vector<std::string> set_b = ReadManifestStrings(mb, "overrides");
-  if (set_a != set_b) text += "; run with " + joined(set_a) + " and with " + joined(set_b);
-  return text;
+  return DescribeRunInputsDifference(
+      ReadManifestField(ma, "suite_file"), ReadManifestStrings(ma, "overrides"),
+      ReadManifestField(mb, "suite_file"), ReadManifestStrings(mb, "overrides"));
 }
 
 }  // namespace

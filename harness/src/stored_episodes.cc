@@ -34,8 +34,11 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
                      "' holds results of a different configuration "
                      "of this suite (config hash " +
                      (stored.empty() ? "unknown" : stored) + ", now " + suite.ConfigHash() +
-                     ", and no row is unchanged). Pass --fresh to "
-                     "replace them, or --out to write elsewhere.");
+                     ", and no row is unchanged" +
+                     DescribeRunInputsDifference(ReadManifestField(manifest, "suite_file"),
+                                                 ReadManifestStrings(manifest, "overrides"),
+                                                 suite.file.string(), suite.overrides) +
+                     "). Pass --fresh to replace them, or --out to write elsewhere.");
   }
   return kept;
 }

@@ -315,7 +315,18 @@ TEST_F(RunSuiteTest, RefusesToMixConfigurations) {
   std::string changed = kSuite;
   changed.replace(changed.find("seed: 11"), 8, "seed: 12");
   const Suite t = LoadOrDie(changed);
-  EXPECT_THROW(Run(t, "out", 1, 2), RunError);
+  EXPECT_THROW(Run(t, "out", 1, 2), RunRefused);
+  // Run with a --set as well: the refusal names the overrides of both runs.
+  SuiteLoadResult with_set = LoadSuite(dir_.path() / "suite.yaml", registry_, {"humans.count=4"});
+  ASSERT_TRUE(with_set.suite);
+  try {
+    Run(*with_set.suite, "out", 1, 2);
+    ADD_FAILURE() << "mixed two configurations";
+  } catch (const RunRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("run with no --set and with --set humans.count=4"),
+              std::string::npos)
+        << e.what();
+  }
   RunOptions o;
   o.out_dir = dir_.path() / "out";
   o.fresh = true;

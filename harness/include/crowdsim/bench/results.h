@@ -80,6 +80,14 @@ long ReadManifestInteger(const std::filesystem::path& path, const std::string& k
 /// A true/false field, e.g. a summary's "finished" (nullopt if absent).
 std::optional<bool> ReadManifestBool(const std::filesystem::path& path, const std::string& key);
 
+/// What two runs were given differently: their suite files, their --set overrides (as the
+/// manifest records them), as "; suite files A and B; run with no --set and with --set x=1"
+/// for the end of an error message; empty when both are the same.
+std::string DescribeRunInputsDifference(const std::string& suite_a,
+                                        const std::vector<std::string>& set_a,
+                                        const std::string& suite_b,
+                                        const std::vector<std::string>& set_b);
+
 /// Writes text to `path` atomically (temporary file, then rename).
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
 
