@@ -98,7 +98,8 @@ constexpr const char* kFooter = R"(  crowdsim-bench help [COMMAND]   (or COMMAND
 
 exit codes: 0 done; 1 failed while running (a plugin, a file, the disk); 2 usage or
 validation error, or results that do not fit (another configuration or shard in --out, shards
-that are not one run): nothing was run; 130 interrupted (train: checkpoint written, --resume).
+that are not one run, no training or another one to --resume): nothing was run; 130
+interrupted (train: checkpoint written, --resume).
 environment: CROWDSIM_PLUGIN_PATH (extra plugin folders, searched first, ':'-separated),
 CROWDSIM_DATA_DIR (where worlds/ is found; default: the source folder of the build).
 )";

@@ -85,6 +85,9 @@ int Train(const TrainJob& job) {
   } catch (const training::TrainingInterrupted& e) {
     std::cerr << "\n" << e.what() << "\n";
     return 130;
+  } catch (const training::TrainRefused& e) {
+    std::cerr << "error: " << job.file << ": " << e.what() << "\n";
+    return 2;  // nothing was trained
   } catch (const training::TrainError& e) {
     std::cerr << "error: " << job.file << ": " << e.what() << "\n";
     return 1;

@@ -593,6 +593,18 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   auto [mrc, mtext] = Shell(exe + " run /nonexistent/suite.yaml");
   EXPECT_EQ(mrc, 2) << mtext;
   EXPECT_NE(mtext.find("suite file does not exist"), std::string::npos) << mtext;
+
+  // Refused before anything ran: exit 2, as a usage error (1 is for failures while running).
+  auto [src, stext] =
+      Shell(exe + " run " + suite.string() + " --episodes 2 --quiet --set seed=99 --out " + out);
+  EXPECT_EQ(src, 2) << stext;
+  EXPECT_NE(stext.find("run with no --set and with --set seed=99"), std::string::npos) << stext;
+  const std::string train_file =
+      (testing::SourceDir() / "suites" / "train" / "cadrl_crowdnav.yaml").string();
+  auto [trc, ttext] = Shell(exe + " train " + train_file + " --resume --quiet --out " +
+                            (dir_.path() / "no-training").string());
+  EXPECT_EQ(trc, 2) << ttext;
+  EXPECT_NE(ttext.find("--resume: no checkpoint in"), std::string::npos) << ttext;
 }
 
 // `validate` runs `run`'s preflight: every row's plugins built (weights read, world files read,

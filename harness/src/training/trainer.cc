@@ -478,18 +478,18 @@ void Trainer::AcceptNewRlLength(const fs::path& dir) {
     started << std::ifstream(Out("training.yaml")).rdbuf();
     const std::string differs =
         suite_internal::DescribeConfigDifference(started.str(), spec_.canonical);
-    throw TrainError("--resume: the checkpoint in '" + dir.string() +
-                     "' belongs to another "
-                     "configuration (config hash " +
-                     state_.config_hash + ", the training file with its --set options now " +
-                     spec_.ConfigHash() + (differs.empty() ? "" : "; what differs: " + differs) +
-                     "); resume with the file and --set options it was started with, or train "
-                     "into another --out (only training.rl_episodes may change between runs)");
+    throw TrainRefused("--resume: the checkpoint in '" + dir.string() +
+                       "' belongs to another "
+                       "configuration (config hash " +
+                       state_.config_hash + ", the training file with its --set options now " +
+                       spec_.ConfigHash() + (differs.empty() ? "" : "; what differs: " + differs) +
+                       "); resume with the file and --set options it was started with, or train "
+                       "into another --out (only training.rl_episodes may change between runs)");
   }
   if (state_.phase == TrainPhase::kReinforcement && t_.rl_episodes < state_.counter) {
-    throw TrainError("--resume: training.rl_episodes is now " + std::to_string(t_.rl_episodes) +
-                     ", fewer than the " + std::to_string(state_.counter) +
-                     " RL episodes this checkpoint has done; give at least that many");
+    throw TrainRefused("--resume: training.rl_episodes is now " + std::to_string(t_.rl_episodes) +
+                       ", fewer than the " + std::to_string(state_.counter) +
+                       " RL episodes this checkpoint has done; give at least that many");
   }
   progress_.Note("the RL phase is now " + std::to_string(t_.rl_episodes) + " episodes (was " +
                  std::to_string(before) + "): continuing from the checkpoint at RL episode " +
@@ -503,8 +503,8 @@ void Trainer::LoadCheckpoint() {
     dir = Out("checkpoint.tmp");
   }
   if (!fs::exists(dir / "state.txt")) {
-    throw TrainError("--resume: no checkpoint in '" + summary_.out_dir.string() +
-                     "' (start without --resume, or give the --out of the interrupted training)");
+    throw TrainRefused("--resume: no checkpoint in '" + summary_.out_dir.string() +
+                       "' (start without --resume, or give the --out of the interrupted training)");
   }
   state_ = ReadCheckpointState(dir / "state.txt");
   if (state_.config_hash != spec_.ConfigHash()) AcceptNewRlLength(dir);
@@ -592,9 +592,9 @@ TrainSummary Trainer::Run() {
     progress_.Note("resumed from " + (summary_.out_dir / "checkpoint").string());
   } else {
     if (fs::exists(Out("checkpoint")) || fs::exists(Out("weights.pt"))) {
-      throw TrainError("'" + summary_.out_dir.string() +
-                       "' already holds a training; pass --resume to "
-                       "continue it, or --out to train into another folder");
+      throw TrainRefused("'" + summary_.out_dir.string() +
+                         "' already holds a training; pass --resume to "
+                         "continue it, or --out to train into another folder");
     }
     state_.config_hash = spec_.ConfigHash();
     learner_->InitWeights(spec_.seed);

@@ -22,6 +22,13 @@ class TrainError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A training refused before it did anything: --resume without a checkpoint or with another
+/// configuration, a folder that already holds a training. The CLI exits 2 for it.
+class TrainRefused : public TrainError {
+ public:
+  using TrainError::TrainError;
+};
+
 /// Thrown after SIGINT / SIGTERM once the checkpoint is written.
 class TrainingInterrupted : public std::runtime_error {
  public:
