@@ -6,6 +6,7 @@
 #include <cstring>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "blas_kernel.h"
 
@@ -89,10 +90,13 @@ std::shared_ptr<T> Make(const LoadedPlugin& p, PluginKind kind, Factory factory,
   std::unique_ptr<T> obj;
   try {
     obj = factory(params);
-  } catch (const std::exception& e) {
+  } catch (const std::invalid_argument& e) {  // a parameter the plugin cannot take
     throw PluginError("plugin '" + std::string(name) + "' (" + p.path.string() +
                       ") failed to create its " + PluginKindName(kind) + ": " + e.what() +
                       ". Check its parameters against `crowdsim-bench list-plugins`.");
+  } catch (const std::exception& e) {  // a file, a model, ...: the message says what
+    throw PluginError("plugin '" + std::string(name) + "' (" + p.path.string() +
+                      ") failed to create its " + PluginKindName(kind) + ": " + e.what());
   } catch (...) {
     throw PluginError("plugin '" + std::string(name) + "' (" + p.path.string() +
                       ") threw a non-standard exception from its factory. Fix the plugin.");

@@ -50,7 +50,7 @@ struct TorchScriptPolicy::Impl {
     if (what.find("KeyError") != std::string::npos) {
       message += "\nThe observation has the keys " + keys + " (params.sensors: " + config.sensors +
                  "); a module that reads lidar needs sensors: lidar or lidar+person, and the "
-                 "row the lidar2d sensor";
+                 "row the lidar2d sensor.";
     }
     return message;
   }
