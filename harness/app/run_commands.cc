@@ -106,19 +106,30 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
   opt.shard_count = group.size();
   opt.progress = opt.progress && group.rank() == 0;
   if (group.rank() == 0) ExplainInterruption(out);
-  bool ok = true;
+  bool ok = true, refused = false;
   try {
     RunSuite(suite, registry, opt);
+  } catch (const RunRefused& e) {
+    std::cerr << "error: rank " << group.rank() << ": " << e.what() << "\n";
+    ok = false;
+    refused = true;
   } catch (const RunError& e) {
     std::cerr << "error: rank " << group.rank() << ": " << e.what() << "\n";
     ok = false;
   }
-  if (!group.AllOk(ok)) {
+  // Two collective calls, made by every rank in this order.
+  const bool all_ok = group.AllOk(ok);
+  const bool none_refused = group.AllOk(!refused);
+  if (!all_ok) {
     if (group.rank() == 0) {
-      std::cerr << "error: not every rank finished; their episodes are kept in "
-                << (out / "ranks").string() << "; run the same command again to resume\n";
+      if (!none_refused) {
+        std::cerr << "error: the run was refused (see above); nothing was run\n";
+      } else {
+        std::cerr << "error: not every rank finished; their episodes are kept in "
+                  << (out / "ranks").string() << "; run the same command again to resume\n";
+      }
     }
-    return 1;
+    return none_refused ? 1 : 2;
   }
   if (group.rank() != 0) return 0;
   std::vector<std::filesystem::path> dirs;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "crowdsim/bench/results.h"
+#include "crowdsim/bench/row_instance.h"
 #include "crowdsim/bench/runner.h"
 #include "json_file.h"
 
@@ -136,11 +137,23 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     throw RunError("'" + (shard_dirs.front() / "manifest.json").string() +
                    "' names no episode count");
   }
-  // Every (row, episode) exactly once, nothing else.
+  // Every (row, episode) exactly once, with the seed the suite gives it, nothing else.
   std::set<std::string> labels;
   for (const RowSpec& row : suite.rows) {
     labels.insert(row.label);
+    const auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
     for (int k = 0; k < episodes; ++k) {
+      if (const auto it = lines.find({row.label, k}); it != lines.end()) {
+        const std::uint64_t seed = MakeEpisodeRequest(suite, row, *world, k).seed;
+        if (it->second.first.seed != seed) {
+          throw RunRefused("'" + it->second.second.string() + "' holds episode " +
+                           std::to_string(k) + " of row '" + row.label + "' with seed " +
+                           std::to_string(it->second.first.seed) + ", not the suite's " +
+                           std::to_string(seed) +
+                           ": a line edited or copied from another run; rerun that shard "
+                           "(delete the line first, and it runs again)");
+        }
+      }
       if (!lines.count({row.label, k})) {
         throw RunRefused("episode " + std::to_string(k) + " of row '" + row.label +
                          "' is in none of the " + std::to_string(shard_dirs.size()) +

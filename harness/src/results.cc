@@ -355,8 +355,11 @@ EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
     const std::string why = ParseEpisodeFields(SplitCsvLine(line), &e);
     if (why.empty()) {
       read.lines.push_back(std::move(e));
-    } else if (read.damaged++ == 0) {
-      read.first_damage = path.string() + ":" + std::to_string(number) + ": " + why;
+    } else {
+      if (read.damaged++ == 0) {
+        read.first_damage = path.string() + ":" + std::to_string(number) + ": " + why;
+      }
+      read.damaged_lines.push_back(line);
     }
   }
   if (f.bad())

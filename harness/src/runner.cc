@@ -426,9 +426,15 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   RunSummary summary;
   summary.out_dir = PrepareOutDir(suite, options);
   const auto worlds = PreflightRows(suite, registry, &facts);
-  EpisodeLines done = options.fresh ? EpisodeLines{}
-                                    : StoredEpisodes(suite, worlds, {summary.out_dir, facts.shard},
-                                                     options.progress);
+  if (options.fresh) {
+    // --fresh discards the stored results, those set aside by earlier reruns with them.
+    std::error_code ec;
+    fs::remove(summary.out_dir / "episodes.dropped.csv", ec);
+  }
+  EpisodeLines done =
+      options.fresh ? EpisodeLines{}
+                    : StoredEpisodes(suite, worlds, {summary.out_dir, facts.shard, scope.episodes},
+                                     options.progress);
   // Rewrite the stored lines cleanly (drops a line cut short by a crash), then append.
   std::vector<const EpisodeLine*> stored;
   for (const auto& [key, line] : done) stored.push_back(&line);

@@ -48,7 +48,19 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
 /// all and runs the rest.)
 void CheckShard(const ResumeTarget& target) {
   if (target.shard.empty()) return;
-  const std::string stored = ReadManifestField(target.out_dir / "manifest.json", "shard");
+  const fs::path manifest = target.out_dir / "manifest.json";
+  const std::string stored = ReadManifestField(manifest, "shard");
+  const long episodes = ReadManifestInteger(manifest, "episodes");
+  if (stored == target.shard && episodes != target.episodes && episodes > 0) {
+    // Which episodes a shard holds depends on the count: another count is another slice.
+    throw RunRefused("'" + target.out_dir.string() + "' holds shard " + stored + " of " +
+                     std::to_string(episodes) + " episodes per row; this run asks for " +
+                     std::to_string(target.episodes) +
+                     ", another slice of the suite. Rerun it "
+                     "with --episodes " +
+                     std::to_string(episodes) +
+                     ", or give it another --out folder (or pass --fresh to replace it).");
+  }
   if (stored == target.shard) return;
   throw RunRefused("'" + target.out_dir.string() + "' holds " +
                    (stored.empty() ? std::string("a whole run") : "shard " + stored) +
@@ -58,13 +70,16 @@ void CheckShard(const ResumeTarget& target) {
                    "the folder's results.");
 }
 
-/// Appends `lines` to episodes.dropped.csv beside episodes.csv (the header when it is new).
-fs::path SetAside(const fs::path& out_dir, const std::vector<const EpisodeLine*>& lines) {
+/// Appends `lines` and the `damaged` lines (as read) to episodes.dropped.csv beside
+/// episodes.csv (the header when it is new).
+fs::path SetAside(const fs::path& out_dir, const std::vector<const EpisodeLine*>& lines,
+                  const std::vector<std::string>& damaged) {
   const fs::path path = out_dir / "episodes.dropped.csv";
   const bool fresh = !fs::exists(path);
   std::ofstream out(path, std::ios::app);
   if (fresh) out << EpisodeCsvHeader() << "\n";
   for (const EpisodeLine* line : lines) out << FormatEpisodeLine(*line) << "\n";
+  for (const std::string& line : damaged) out << line << "\n";
   out.flush();
   if (!out) {
     throw RunError("cannot write " + path.string() +
@@ -98,12 +113,6 @@ EpisodeLines StoredEpisodes(const Suite& suite,
   if (stored_lines.lines.empty()) return done;
   const std::set<std::string> kept = ResumableRows(suite, out_dir);
   CheckShard(target);
-  if (stored_lines.damaged > 0 && note) {
-    std::fprintf(
-        stderr,
-        "note: %d damaged line(s) of %s skipped, their episodes run again (the first: %s)\n",
-        stored_lines.damaged, episodes_csv.string().c_str(), stored_lines.first_damage.c_str());
-  }
 
   std::map<std::string, std::size_t> row_of;  // label -> index in the suite
   for (std::size_t r = 0; r < suite.rows.size(); ++r) row_of[suite.rows[r].label] = r;
@@ -143,9 +152,17 @@ EpisodeLines StoredEpisodes(const Suite& suite,
                  "new or changed rows run from scratch: %s\n",
                  out_dir.string().c_str(), kept.size(), rerun.empty() ? "none" : rerun.c_str());
   }
-  if (!aside.empty()) {
-    const fs::path path = SetAside(out_dir, aside);
-    if (note) {
+  if (!aside.empty() || !stored_lines.damaged_lines.empty()) {
+    // Said even by a quiet run: stored results leave episodes.csv.
+    const fs::path path = SetAside(out_dir, aside, stored_lines.damaged_lines);
+    if (!stored_lines.damaged_lines.empty()) {
+      std::fprintf(stderr,
+                   "note: %d damaged line(s) of %s moved to %s, their episodes run again (the "
+                   "first: %s)\n",
+                   stored_lines.damaged, episodes_csv.string().c_str(), path.string().c_str(),
+                   stored_lines.first_damage.c_str());
+    }
+    if (!aside.empty()) {
       std::string why;
       if (!removed.empty()) why += "of row(s) " + Quoted(removed) + ", no longer in the suite";
       if (!changed.empty()) {

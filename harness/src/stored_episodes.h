@@ -1,8 +1,8 @@
 // What a run resumes from its output folder: the finished episodes stored in episodes.csv that
 // belong to this configuration and this run's scope, with every other stored line either
-// refused (a folder of another shard), set aside (rows removed from or changed in the suite:
-// moved to episodes.dropped.csv, never silently lost) or skipped as foreign (a line whose seed
-// is not the one this suite gives its episode).
+// refused (a folder of another shard), or set aside: moved to episodes.dropped.csv, never
+// silently lost (rows removed from or changed in the suite, foreign lines whose seed is not the
+// one this suite gives the episode, damaged lines as read).
 #pragma once
 
 #include <filesystem>
@@ -21,17 +21,20 @@ namespace crowdsim {
 using EpisodeKey = std::pair<std::string, int>;  // (row label, episode index)
 using EpisodeLines = std::map<EpisodeKey, EpisodeLine>;
 
-/// Where a run writes and which shard it is ("" for a whole run, else "K/N").
+/// Where a run writes, which shard it is ("" for a whole run, else "K/N") and of how many
+/// episodes per row (which episodes a shard holds depends on it).
 struct ResumeTarget {
   std::filesystem::path out_dir;
   std::string shard;
+  int episodes = 0;
 };
 
 /// The stored episodes of `target.out_dir` this run keeps. `worlds` are the rows' world
-/// sources (their identities give the episodes' seeds). With `note`, what is resumed, set
-/// aside or skipped is said on stderr. Throws RunError when the folder holds another
-/// configuration with no row unchanged, or another shard (or a whole run) while this run is a
-/// shard: resuming there would drop the episodes outside this shard.
+/// sources (their identities give the episodes' seeds). Lines set aside (damaged ones too, as
+/// read) are always said on stderr; with `note`, what is resumed as well. Throws RunRefused when
+/// the folder holds another configuration with no row unchanged, or another shard (or a whole
+/// run, or the same shard of another episode count) while this run is a shard: resuming there
+/// would drop the episodes outside this shard.
 EpisodeLines StoredEpisodes(const Suite& suite,
                             const std::vector<std::shared_ptr<WorldSource>>& worlds,
                             const ResumeTarget& target, bool note);

@@ -129,6 +129,9 @@ TEST_F(RunSuiteTest, ResumeRerunsDamagedLinesAndRefusesAnUnreadableEpisodesCsv) 
   EXPECT_EQ(r.episodes_run, 15);
   EXPECT_EQ(WithoutTimingColumns(ReadText(dir_.path() / "full" / "episodes.csv")),
             WithoutTimingColumns(ReadText(csv)));
+  // The damaged line is kept, as read, beside them.
+  EXPECT_NE(ReadText(dir_.path() / "damaged" / "episodes.dropped.csv").find("\nlinear,x"),
+            std::string::npos);
 
   // No episodes.csv header (not a file the run wrote): an error naming the file and the fix.
   std::ofstream(csv) << "garbage\n";
@@ -303,6 +306,24 @@ TEST_F(RunSuiteTest, AShardRefusesAFolderOfAWholeRunOrAnotherShard) {
   shard("one", 1);
   EXPECT_NE(error("one", 2).find("holds shard 1/3"), std::string::npos);
   EXPECT_EQ(shard("one", 1).episodes_resumed, 3);  // its own folder: a resume
+  // The same shard of another episode count is another slice: refused, nothing dropped.
+  const std::string one = ReadText(dir_.path() / "one" / "episodes.csv");
+  try {
+    RunOptions o;
+    o.out_dir = dir_.path() / "one";
+    o.shard_index = 1;
+    o.shard_count = 3;
+    o.episodes = 3;
+    o.progress = false;
+    RunSuite(s, registry_, o);
+    ADD_FAILURE() << "resumed shard 1/3 of 4 episodes as one of 3";
+  } catch (const RunRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("holds shard 1/3 of 4 episodes per row; this run asks "
+                                         "for 3"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(ReadText(dir_.path() / "one" / "episodes.csv"), one);
   // A whole run may take a shard's folder: it keeps the shard's episodes and runs the rest.
   const RunSummary r = Run(s, "one", 1, 4);
   EXPECT_EQ(r.episodes_resumed, 3);
@@ -482,6 +503,18 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
       << first_of_shard1.substr(0, first_of_shard1.find('\n') + 1);
   EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "edited"}).find("is in both"),
             std::string::npos);
+  // A line with another seed (edited by hand, or from another run): refused before any merge.
+  fs::copy(shards[2], dir_.path() / "reseeded");
+  std::string text = ReadText(shards[2] / "episodes.csv");
+  const size_t line = text.find('\n') + 1;  // the first episode line
+  const size_t seed = text.find(',', text.find(',', line) + 1) + 1;
+  text.replace(seed, text.find(',', seed) - seed, "999");
+  std::ofstream(dir_.path() / "reseeded" / "episodes.csv") << text;
+  EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "reseeded"})
+                .find("with seed 999, not the suite's"),
+            std::string::npos)
+      << merge_error({shards[0], shards[1], dir_.path() / "reseeded"});
+  EXPECT_FALSE(fs::exists(dir_.path() / "bad" / "table.md"));
   std::string other = kSuite;
   other.replace(other.find("seed: 11"), 8, "seed: 12");
   const Suite t = LoadOrDie(other);
@@ -604,7 +637,10 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   auto [trc, ttext] = Shell(exe + " train " + train_file + " --resume --quiet --out " +
                             (dir_.path() / "no-training").string());
   EXPECT_EQ(trc, 2) << ttext;
-  EXPECT_NE(ttext.find("--resume: no checkpoint in"), std::string::npos) << ttext;
+  EXPECT_NE(ttext.find("--resume: '" + (dir_.path() / "no-training").string() + "' does not exist"),
+            std::string::npos)
+      << ttext;
+  EXPECT_FALSE(fs::exists(dir_.path() / "no-training"));  // nothing made by a refusal
 }
 
 // `validate` runs `run`'s preflight: every row's plugins built (weights read, world files read,

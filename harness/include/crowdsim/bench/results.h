@@ -19,7 +19,8 @@ namespace crowdsim {
 /// What reading an episodes.csv found.
 struct EpisodesCsvRead {
   std::vector<EpisodeLine> lines;
-  int damaged = 0;             ///< complete lines that are no episode line (skipped)
+  int damaged = 0;                         ///< complete lines that are no episode line (skipped)
+  std::vector<std::string> damaged_lines;  ///< their text, as read
   std::string first_damage;    ///< "FILE:LINE: why" of the first of them; empty when none
   bool cut_last_line = false;  ///< the last line lacks its newline (a crash mid-write): skipped
 };
