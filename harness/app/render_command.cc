@@ -50,7 +50,6 @@ int RenderCommand(const std::vector<std::string>& args) {
   if (animate && a.Has("--sensors-at"))
     throw UsageError("--sensors-at draws still figures only (drop --animate)");
   if (!animate && a.Has("--speed")) throw UsageError("--speed needs --animate");
-  CreateFolderOf("--out", *out);
   double speed = 1.0;
   if (auto s = a.Get("--speed")) {
     try {
@@ -97,6 +96,7 @@ int RenderCommand(const std::vector<std::string>& args) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
+  CreateFolderOf("--out", *out);  // every argument checked: only now anything is made
 
   render::ReplayedEpisode replay;
   try {

@@ -42,13 +42,14 @@ int ReportCommand(const std::vector<std::string>& args) {
         "or .pdf): --out must end in .html, got '" +
         *out + "'");
   }
-  CreateFolderOf("--out", *out);
   render::ReportOptions options;
   if (auto s = a.Get("--suite")) options.suite_file = *s;
   PluginRegistry registry;
   try {
-    WriteFileAtomically(*out, training ? render::BuildTrainingReport(dir)
-                                       : render::BuildReport(dir, registry, options));
+    const std::string html =
+        training ? render::BuildTrainingReport(dir) : render::BuildReport(dir, registry, options);
+    CreateFolderOf("--out", *out);  // once the report is built: a refused folder leaves nothing
+    WriteFileAtomically(*out, html);
   } catch (const render::ReportError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

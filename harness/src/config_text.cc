@@ -119,52 +119,77 @@ namespace {
 // A canonical line's key: what comes before its first ':' or '=' ("humans", "seed").
 std::string LineKey(const std::string& line) { return line.substr(0, line.find_first_of(":=")); }
 
-// The "k=v;" pairs inside a line's braces (a plugin's parameters), in order.
-std::vector<std::pair<std::string, std::string>> BracedParams(const std::string& line) {
-  std::vector<std::pair<std::string, std::string>> params;
-  const std::size_t open = line.find('{'), close = line.rfind('}');
-  if (open == std::string::npos || close == std::string::npos || close < open) return params;
-  std::istringstream in(line.substr(open + 1, close - open - 1));
-  for (std::string item; std::getline(in, item, ';');) {
-    const std::size_t eq = item.find('=');
-    if (eq != std::string::npos) params.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+// One plugin use of a line: the text before its braces ("lidar2d", "5-5,orca") and its items
+// by name: "k=v" parameters, and "data:FILE#content:HASH" files under "data:FILE".
+struct Segment {
+  std::string head;
+  std::map<std::string, std::string> items;
+};
+
+std::vector<Segment> Segments(const std::string& rest) {
+  std::vector<Segment> segments;
+  std::size_t at = 0;
+  while (at < rest.size()) {
+    const std::size_t open = rest.find('{', at);
+    const std::size_t close = open == std::string::npos ? open : rest.find('}', open);
+    if (close == std::string::npos) {
+      segments.push_back({rest.substr(at), {}});
+      break;
+    }
+    Segment seg{rest.substr(at, open - at), {}};
+    std::istringstream in(rest.substr(open + 1, close - open - 1));
+    for (std::string item; std::getline(in, item, ';');) {
+      const std::size_t eq = item.find('=');
+      if (eq != std::string::npos) {
+        seg.items[item.substr(0, eq)] = item.substr(eq + 1);
+      } else if (!item.empty()) {
+        seg.items[item.substr(0, item.find("#content:"))] = item;
+      }
+    }
+    segments.push_back(std::move(seg));
+    at = close + 1;
   }
-  return params;
+  return segments;
 }
 
-std::string Shortened(const std::string& text) {
-  return text.size() <= 60 ? text : text.substr(0, 57) + "...";
+// Both texts from a little before their first difference, so the change shows even in a long
+// value ("...,0.5,0.1,4000,..." -> "...,0.5,0.2,4000,...").
+std::string AroundDifference(const std::string& a, const std::string& b) {
+  std::size_t i = 0;
+  while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+  const std::size_t from = i > 20 ? i - 20 : 0;
+  auto cut = [&](const std::string& t) {
+    std::string part = t.substr(std::min(from, t.size()), 60);
+    return (from > 0 ? "..." : "") + part + (from + 60 < t.size() ? "..." : "");
+  };
+  return cut(a) + " -> " + cut(b);
 }
 
-// How one line changed: the parameters that differ when both have braces, else both values.
+// How one line changed: per plugin use, the items that differ; else both texts.
 std::string LineChange(const std::string& key, const std::string& before, const std::string& now) {
-  const auto a = BracedParams(before), b = BracedParams(now);
-  const std::string head_a = before.substr(0, before.find('{'));
-  const std::string head_b = now.substr(0, now.find('{'));
-  if (a.empty() && b.empty()) {
-    return key + ": " + Shortened(before.substr(key.size() + 1)) + " -> " +
-           Shortened(now.substr(key.size() + 1));
+  const std::vector<Segment> a = Segments(before.substr(key.size() + 1));
+  const std::vector<Segment> b = Segments(now.substr(key.size() + 1));
+  if (a.size() != b.size()) {  // a plugin use added or removed (a sensor, say)
+    return key + ": " + AroundDifference(before.substr(key.size() + 1), now.substr(key.size() + 1));
   }
   std::string text;
   auto add = [&](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
-  if (head_a != head_b) {
-    add(Shortened(head_a.substr(key.size() + 1)) + " -> " +
-        Shortened(head_b.substr(key.size() + 1)));
-  }
-  const std::map<std::string, std::string> old_values(a.begin(), a.end());
-  const std::map<std::string, std::string> new_values(b.begin(), b.end());
-  for (const auto& [k, v] : new_values) {
-    const auto it = old_values.find(k);
-    if (it == old_values.end()) {
-      add(k + "=" + Shortened(v) + " (new)");
-    } else if (it->second != v) {
-      add(k + " " + Shortened(it->second) + " -> " + Shortened(v));
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].head != b[i].head) add(AroundDifference(a[i].head, b[i].head));
+    const std::string who = a.size() > 1 ? b[i].head + " " : "";
+    for (const auto& [k, v] : b[i].items) {
+      const auto it = a[i].items.find(k);
+      if (it == a[i].items.end()) {
+        add(who + k + " (new)");
+      } else if (it->second != v) {
+        add(who + k + " " + AroundDifference(it->second, v));
+      }
+    }
+    for (const auto& [k, v] : a[i].items) {
+      if (!b[i].items.count(k)) add(who + k + " (gone)");
     }
   }
-  for (const auto& [k, v] : old_values) {
-    if (!new_values.count(k)) add(k + "=" + Shortened(v) + " (gone)");
-  }
-  return key + ": " + text;
+  return key + ": " + (text.empty() ? AroundDifference(before, now) : text);
 }
 
 std::vector<std::string> ConfigLines(const std::string& text) {

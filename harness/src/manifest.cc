@@ -244,7 +244,11 @@ std::string DescribeRunInputsDifference(const std::string& suite_a,
                                         const std::string& suite_b,
                                         const std::vector<std::string>& set_b) {
   std::string text;
-  if (suite_a != suite_b) text += "; suite files " + suite_a + " and " + suite_b;
+  // The same file may be recorded under two spellings (runs from different folders): only
+  // another file name is worth naming.
+  if (std::filesystem::path(suite_a).filename() != std::filesystem::path(suite_b).filename()) {
+    text += "; suite files " + suite_a + " and " + suite_b;
+  }
   auto joined = [](const std::vector<std::string>& sets) {
     std::string all;
     for (const std::string& s : sets) all += (all.empty() ? "--set " : " --set ") + s;

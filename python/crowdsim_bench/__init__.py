@@ -123,6 +123,8 @@ def _action_indices(actions, count: int, shape: tuple) -> np.ndarray:
     """Discrete actions: whole numbers in [0, count) of the given shape (no float truncation,
     no negative indexing from the end)."""
     a = np.asarray(actions)
+    if a.shape == (1,) and shape == ():  # one index in a 1-element array, as some agents give
+        a = a.reshape(())
     if a.dtype == np.bool_ or not np.issubdtype(a.dtype, np.integer):
         raise ValueError(f"discrete actions must be whole numbers in [0, {count - 1}] (indices "
                          f"into .actions), got {actions!r}")

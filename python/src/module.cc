@@ -213,7 +213,8 @@ void WarnOfPolicyErrors(const RunSummary& summary) {
         std::to_string(failed) + " of " + std::to_string(m.episodes) + " episodes of row '" +
         r.Label() + "' ended as policy_error (the policy raised or returned a bad velocity); " +
         "the messages are in the error column of " + (summary.out_dir / "episodes.csv").string();
-    if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+    // Level 2: the warning points at the user's call of crowdsim_bench.evaluate, not at it.
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 2) != 0) throw py::error_already_set();
   }
 }
 

@@ -286,6 +286,7 @@ class UserMistakes(unittest.TestCase):
                 env.step(bad)
         env.step(np.int32(80))
         env.step(np.array(0))
+        env.step(np.array([3]))  # one index in a 1-element array
         venv = cb.VectorEnv(QUICK, row="orca", num_envs=3, discrete=True)
         venv.reset()
         for bad in (np.full(3, -1), np.array([0, 81, 1]), np.zeros(3), np.zeros(2, int),

@@ -52,12 +52,10 @@ FloorplanWorld::FloorplanWorld(const Params& params)
   const std::string value = params.GetString("file");
   const std::filesystem::path path = ResolveWorldPath(params, value);
   if (!std::filesystem::exists(path)) {
-    throw std::invalid_argument("floorplan: world '" + value +
-                                "' not found (looked in the suite "
-                                "folder and " +
-                                DataRoot().string() +
-                                "); import one with "
-                                "`crowdsim-bench floorplan import`");
+    throw std::runtime_error("floorplan: world '" + value +
+                             "' not found (looked in the suite's folder, the working folder and " +
+                             DataRoot().string() +
+                             "); import one with `crowdsim-bench floorplan import`");
   }
   WorldFile world = ReadWorldFile(path);
   pairs_ = split_ == "train" ? world.train_pairs : world.test_pairs;

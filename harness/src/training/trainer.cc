@@ -581,6 +581,11 @@ TrainSummary Trainer::Run() {
   const auto start = Clock::now();
   SignalGuard signals;
   std::error_code ec;
+  if (options_.resume && !fs::is_directory(summary_.out_dir, ec)) {
+    throw TrainRefused("--resume: '" + summary_.out_dir.string() +
+                       "' does not exist (give the --out of the interrupted training, or start "
+                       "without --resume)");
+  }
   fs::create_directories(summary_.out_dir, ec);
   if (ec || !fs::is_directory(summary_.out_dir)) {
     throw TrainError("cannot create the output folder '" + summary_.out_dir.string() +
