@@ -11,9 +11,10 @@ namespace {
 
 TEST(ConfigDifference, NamesTheParameterOfThePluginUseThatChanged) {
   // Two plugin uses on one line: the lidar's max_range, not the person sensor's.
-  EXPECT_EQ(DescribeConfigDifference("sensors:person{max_range=0;}lidar2d{beams=45;max_range=5;}\n",
-                                     "sensors:person{max_range=0;}lidar2d{beams=45;max_range=6;}\n"),
-            "sensors: lidar2d max_range 5 -> 6");
+  EXPECT_EQ(
+      DescribeConfigDifference("sensors:person{max_range=0;}lidar2d{beams=45;max_range=5;}\n",
+                               "sensors:person{max_range=0;}lidar2d{beams=45;max_range=6;}\n"),
+      "sensors: lidar2d max_range 5 -> 6");
   EXPECT_EQ(DescribeConfigDifference("humans:5-5,orca{a=1;}\nseed=7\n",
                                      "humans:3-3,orca{a=1;}\nseed=8\n"),
             "humans: 5-5,orca -> 3-3,orca; seed: 7 -> 8");
@@ -28,14 +29,14 @@ TEST(ConfigDifference, ShowsALongValueFromJustBeforeItsFirstDifference) {
   b.replace(b.find("0.5,0.1"), 7, "0.5,0.2");
   const std::string d = DescribeConfigDifference(a, b);
   EXPECT_NE(d.find("0.5,0.1,4000"), std::string::npos) << d;
-  EXPECT_NE(d.find("-> ...") , std::string::npos) << d;
+  EXPECT_NE(d.find("-> ..."), std::string::npos) << d;
   EXPECT_NE(d.find("0.5,0.2,4000"), std::string::npos) << d;
 }
 
 TEST(ConfigDifference, DataFilesAndRemovedUsesAndCommentsAndEqualTexts) {
-  const std::string d = DescribeConfigDifference(
-      "world:floorplan{data:worlds/x.yaml#content:aaaa;}\n",
-      "world:floorplan{data:worlds/x.yaml#content:bbbb;}\n");
+  const std::string d =
+      DescribeConfigDifference("world:floorplan{data:worlds/x.yaml#content:aaaa;}\n",
+                               "world:floorplan{data:worlds/x.yaml#content:bbbb;}\n");
   EXPECT_NE(d.find("world: data:worlds/x.yaml"), std::string::npos) << d;
   EXPECT_NE(d.find("#content:aaaa -> "), std::string::npos) << d;
   EXPECT_NE(DescribeConfigDifference("sensors:person{}lidar2d{beams=45;}\n", "sensors:person{}\n")
