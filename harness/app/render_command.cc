@@ -96,7 +96,6 @@ int RenderCommand(const std::vector<std::string>& args) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  CreateFolderOf("--out", *out);  // every argument checked: only now anything is made
 
   render::ReplayedEpisode replay;
   try {
@@ -106,6 +105,7 @@ int RenderCommand(const std::vector<std::string>& args) {
   }
   std::optional<render::ReplayedEpisode> compare;
   if (a.Get("--compare")) compare = render::ReplayForFigure(suite, compare_row, episode, registry);
+  CreateFolderOf("--out", *out);  // every argument checked, the episodes replayed
   const render::EpisodeFigure figure =
       render::MakeFigure(suite, replay, compare ? &*compare : nullptr);
   if (animate) {

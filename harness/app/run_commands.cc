@@ -113,23 +113,29 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
     std::cerr << "error: rank " << group.rank() << ": " << e.what() << "\n";
     ok = false;
     refused = true;
-  } catch (const RunError& e) {
+  } catch (const std::exception& e) {  // RunError, or a write that failed: never leave early,
     std::cerr << "error: rank " << group.rank() << ": " << e.what() << "\n";
+    ok = false;  // the other ranks wait in the collective calls below
+  } catch (...) {
+    std::cerr << "error: rank " << group.rank() << ": a non-standard exception\n";
     ok = false;
   }
-  // Two collective calls, made by every rank in this order.
+  // Three collective calls, made by every rank in this order.
   const bool all_ok = group.AllOk(ok);
   const bool none_refused = group.AllOk(!refused);
+  const bool all_refused = group.AllOk(refused);
   if (!all_ok) {
     if (group.rank() == 0) {
-      if (!none_refused) {
+      if (all_refused) {
         std::cerr << "error: the run was refused (see above); nothing was run\n";
       } else {
-        std::cerr << "error: not every rank finished; their episodes are kept in "
-                  << (out / "ranks").string() << "; run the same command again to resume\n";
+        std::cerr << "error: not every rank finished"
+                  << (none_refused ? "" : " (some were refused)")
+                  << "; the episodes that ran are kept in " << (out / "ranks").string()
+                  << "; fix what is said above and run the same command again to resume\n";
       }
     }
-    return none_refused ? 1 : 2;
+    return all_refused ? 2 : 1;
   }
   if (group.rank() != 0) return 0;
   std::vector<std::filesystem::path> dirs;

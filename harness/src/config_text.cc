@@ -165,12 +165,18 @@ std::string AroundDifference(const std::string& a, const std::string& b) {
   return cut(a) + " -> " + cut(b);
 }
 
+// What follows a line's key and its separator ("" for a line that is its key alone).
+std::string AfterKey(const std::string& line, const std::string& key) {
+  return line.size() > key.size() ? line.substr(key.size() + 1) : "";
+}
+
 // How one line changed: per plugin use, the items that differ; else both texts.
 std::string LineChange(const std::string& key, const std::string& before, const std::string& now) {
-  const std::vector<Segment> a = Segments(before.substr(key.size() + 1));
-  const std::vector<Segment> b = Segments(now.substr(key.size() + 1));
+  const std::string rest_a = AfterKey(before, key), rest_b = AfterKey(now, key);
+  const std::vector<Segment> a = Segments(rest_a);
+  const std::vector<Segment> b = Segments(rest_b);
   if (a.size() != b.size()) {  // a plugin use added or removed (a sensor, say)
-    return key + ": " + AroundDifference(before.substr(key.size() + 1), now.substr(key.size() + 1));
+    return key + ": " + AroundDifference(rest_a, rest_b);
   }
   std::string text;
   auto add = [&](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
@@ -180,7 +186,7 @@ std::string LineChange(const std::string& key, const std::string& before, const 
     for (const auto& [k, v] : b[i].items) {
       const auto it = a[i].items.find(k);
       if (it == a[i].items.end()) {
-        add(who + k + " (new)");
+        add(who + k + "=" + (v.size() <= 60 ? v : v.substr(0, 57) + "...") + " (new)");
       } else if (it->second != v) {
         add(who + k + " " + AroundDifference(it->second, v));
       }
@@ -189,7 +195,7 @@ std::string LineChange(const std::string& key, const std::string& before, const 
       if (!b[i].items.count(k)) add(who + k + " (gone)");
     }
   }
-  return key + ": " + (text.empty() ? AroundDifference(before, now) : text);
+  return key + ": " + (text.empty() ? AroundDifference(rest_a, rest_b) : text);
 }
 
 std::vector<std::string> ConfigLines(const std::string& text) {

@@ -244,9 +244,13 @@ std::string DescribeRunInputsDifference(const std::string& suite_a,
                                         const std::string& suite_b,
                                         const std::vector<std::string>& set_b) {
   std::string text;
-  // The same file may be recorded under two spellings (runs from different folders): only
-  // another file name is worth naming.
-  if (std::filesystem::path(suite_a).filename() != std::filesystem::path(suite_b).filename()) {
+  // The same file may be recorded under two spellings (runs from different folders): named
+  // when the file names differ, or when both paths lead to files that are not the same one.
+  std::error_code ec;
+  const fs::path pa(suite_a), pb(suite_b);
+  const bool both_found = fs::exists(pa, ec) && fs::exists(pb, ec);
+  if (suite_a != suite_b &&
+      (pa.filename() != pb.filename() || (both_found && !fs::equivalent(pa, pb, ec)))) {
     text += "; suite files " + suite_a + " and " + suite_b;
   }
   auto joined = [](const std::vector<std::string>& sets) {

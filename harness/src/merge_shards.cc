@@ -141,7 +141,12 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   std::set<std::string> labels;
   for (const RowSpec& row : suite.rows) {
     labels.insert(row.label);
-    const auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
+    std::shared_ptr<WorldSource> world;
+    try {
+      world = registry.MakeWorld(*row.world.loaded, row.world.params);
+    } catch (const std::exception& e) {
+      throw RunRefused("row '" + row.label + "' of the suite: " + e.what());
+    }
     for (int k = 0; k < episodes; ++k) {
       if (const auto it = lines.find({row.label, k}); it != lines.end()) {
         const std::uint64_t seed = MakeEpisodeRequest(suite, row, *world, k).seed;

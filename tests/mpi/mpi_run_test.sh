@@ -16,4 +16,18 @@ diff <(cut -d, -f1-15,17- "$work/single/table.csv") <(cut -d, -f1-15,17- "$work/
 "$mpiexec" "${mpi_flags[@]}" -n 2 "$bin" run suites/baselines.yaml --episodes 25 --jobs 1 --out "$work/mpi" \
   > "$work/again.log" 2>&1 || { cat "$work/again.log"; fail "second mpirun"; }
 diff <(strip "$work/single/episodes.csv") <(strip "$work/mpi/episodes.csv") || fail "episodes differ after resuming"
+# A rank whose run fails (here its episodes.csv cannot be written) must not leave the others
+# waiting in a collective call: the launch ends with exit 1 and says so.
+mkdir -p "$work/broken/ranks/2of2/episodes.csv.tmp"
+status=0
+timeout 120 "$mpiexec" "${mpi_flags[@]}" -n 2 "$bin" run suites/quick.yaml --episodes 4 --quiet \
+  --out "$work/broken" > "$work/broken.log" 2>&1 || status=$?
+[[ $status -eq 1 ]] || { cat "$work/broken.log"; fail "a failing rank: exit $status, not 1 (124: hung)"; }
+grep -q "error: rank 1:" "$work/broken.log" || { cat "$work/broken.log"; fail "the failing rank is not named"; }
+# Refused everywhere (another configuration in every rank's folder): exit 2, nothing run.
+status=0
+"$mpiexec" "${mpi_flags[@]}" -n 2 "$bin" run suites/baselines.yaml --episodes 25 --jobs 1 --set seed=5 \
+  --out "$work/mpi" > "$work/refused.log" 2>&1 || status=$?
+[[ $status -eq 2 ]] || { cat "$work/refused.log"; fail "a refused launch: exit $status, not 2"; }
+grep -q "the run was refused" "$work/refused.log" || { cat "$work/refused.log"; fail "not said refused"; }
 echo "mpirun -n 2 run equals the single process: ok"

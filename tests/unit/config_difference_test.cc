@@ -45,6 +45,19 @@ TEST(ConfigDifference, DataFilesAndRemovedUsesAndCommentsAndEqualTexts) {
   EXPECT_EQ(DescribeConfigDifference("# copy of a.yaml\nseed=1\n", "# copy of b.yaml\nseed=1\n"),
             "");
   EXPECT_EQ(DescribeConfigDifference("seed=1\n", "seed=1\nextra:x\n"), "extra: new");
+  EXPECT_EQ(DescribeConfigDifference("policy:cadrl{a=1;}\n", "policy:cadrl{a=1;b=2;}\n"),
+            "policy: b=2 (new)");
+}
+
+TEST(ConfigDifference, OddLinesOfAHandEditedFileDoNotThrow) {
+  // A line that is its key alone against one with a separator; braces left open or reversed.
+  const char* texts[] = {"ab", "ab:x", "ab={", "a;x", "a;x={", "k:{", "k:}{", "k:a{b=1", "", "\n"};
+  for (const char* a : texts) {
+    for (const char* b : texts) {
+      EXPECT_NO_THROW(DescribeConfigDifference(a, b)) << "'" << a << "' vs '" << b << "'";
+    }
+  }
+  EXPECT_EQ(DescribeConfigDifference("ab\n", "ab:x\n"), "ab:  -> x");
 }
 
 }  // namespace
