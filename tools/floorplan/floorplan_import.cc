@@ -17,6 +17,13 @@
 namespace crowdsim::floorplan {
 namespace {
 
+// A length or resolution for a message: as short as it is exact ("0.3", not "0.300000").
+std::string Num(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
 constexpr const char* kGibsonAttribution =
     "Derived from the GibsonEnv floor map %s (github.com/micheleantonazzi/gibson-env-utilities "
     "@ c2e3811, Apache-2.0); buildings from the Gibson dataset (Matterport3D / Stanford 2D-3D-S "
@@ -82,8 +89,8 @@ double ResolveResolution(const std::filesystem::path& image, const ImportOptions
                     ".yaml (with 'scale: M_PER_PX') next to the maps folder");
   }
   if (!(res >= 0.005 && res <= 2.0 * o.cell_size)) {
-    Fail(image, "resolution " + std::to_string(res) + " m/px is out of range [0.005, " +
-                    std::to_string(2.0 * o.cell_size) + "] (check --resolution: metres per pixel)");
+    Fail(image, "resolution " + Num(res) + " m/px is out of range [0.005, " +
+                    Num(2.0 * o.cell_size) + "] (check --resolution: metres per pixel)");
   }
   return res;
 }
@@ -120,7 +127,7 @@ Grid PrepareNavigable(const std::filesystem::path& image, const Grid& raw, const
   }
   const double ratio = res / o.cell_size;
   if (double(raw.width) * ratio * double(raw.height) * ratio > 16e6) {
-    Fail(image, "the plan is larger than 16 million cells at " + std::to_string(o.cell_size) +
+    Fail(image, "the plan is larger than 16 million cells at " + Num(o.cell_size) +
                     " m (check --resolution: metres per pixel, not pixels per metre)");
   }
   Grid g = Resample(raw, res, o.cell_size,
@@ -138,7 +145,7 @@ Grid PrepareNavigable(const std::filesystem::path& image, const Grid& raw, const
     }
     if (g.Count() == 0) {
       Fail(image, "no interior found: the building outline is open wider than the door gap (" +
-                      std::to_string(o.door_gap) +
+                      Num(o.door_gap) +
                       " m) or the image is not an outline map "
                       "(try --kind navmesh)");
     }
@@ -207,7 +214,7 @@ ImportResult ImportFloorplan(const std::filesystem::path& image, const ImportOpt
   const double radius_cells = o.agent_radius / cell;
   const DiscComponent comp = LargestDiscComponent(interior, radius_cells);
   if (comp.centres.Count() == 0) {
-    Fail(image, "no place where a disc of radius " + std::to_string(o.agent_radius) +
+    Fail(image, "no place where a disc of radius " + Num(o.agent_radius) +
                     " m fits: the navigable area is too narrow (check the resolution, or the "
                     "colours: navigable must be white)");
   }

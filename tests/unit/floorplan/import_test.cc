@@ -180,13 +180,13 @@ TEST(ImportTest, BadInputsSayWhatToFix) {
   ExpectImportError(black, o, "every pixel is blocked");
   const auto tiny = dir.path() / "tiny.pgm";
   WritePgm(OutlineRoom(40, 10, 10, 6, 0), tiny);  // 0.4 m inside: no 0.3 m disc fits
-  ExpectImportError(tiny, o, "no place where a disc");
+  ExpectImportError(tiny, o, "no place where a disc of radius 0.3 m fits");  // not 0.300000
   ImportOptions unknown = o;
   unknown.source_resolution = 0.0;
   ExpectImportError(WriteRoomPlan(dir.path()), unknown, "--resolution");
   ImportOptions coarse = o;
   coarse.source_resolution = 5.0;
-  ExpectImportError(WriteRoomPlan(dir.path()), coarse, "out of range");
+  ExpectImportError(WriteRoomPlan(dir.path()), coarse, "resolution 5 m/px is out of range [0.005,");
   const auto named = dir.path() / "scene_0.1m.png";
   std::filesystem::copy_file(WriteRoomPlan(dir.path()), named);
   ImportOptions wrong = o;
