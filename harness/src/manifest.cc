@@ -262,4 +262,8 @@ std::string DescribeRunInputsDifference(const std::string& suite_a,
   return text;
 }
 
+std::string ShardName(const std::string& shard) {
+  return shard.empty() ? "a whole run" : "shard " + shard;
+}
+
 }  // namespace crowdsim

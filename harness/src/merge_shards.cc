@@ -47,10 +47,6 @@ std::string ShardCount(const std::string& shard) {
   return slash == std::string::npos ? std::string() : shard.substr(slash + 1);
 }
 
-std::string ShardName(const std::string& shard) {
-  return shard.empty() ? "a whole run" : "shard " + shard;
-}
-
 // What the manifests of two folders of one suite record differently.
 std::string HowTheyDiffer(const fs::path& a, const fs::path& b) {
   const fs::path ma = a / "manifest.json", mb = b / "manifest.json";

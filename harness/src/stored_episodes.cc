@@ -62,8 +62,7 @@ void CheckShard(const ResumeTarget& target) {
                      ", or give it another --out folder (or pass --fresh to replace it).");
   }
   if (stored == target.shard) return;
-  throw RunRefused("'" + target.out_dir.string() + "' holds " +
-                   (stored.empty() ? std::string("a whole run") : "shard " + stored) +
+  throw RunRefused("'" + target.out_dir.string() + "' holds " + ShardName(stored) +
                    " of this suite, and shard " + target.shard +
                    " would keep only its own episodes there. Give each shard its own --out "
                    "folder (and join them with `crowdsim-bench merge`), or pass --fresh to replace "

@@ -110,9 +110,14 @@ def _settings(set) -> list[str]:
 _MAX_EPISODE = 2**31 - 1
 
 
+def _is_whole(value) -> bool:
+    """An int or numpy integer, not a bool (True would pass for 1)."""
+    return isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
+
+
 def _episode_index(value, what: str) -> int:
     """A suite episode index (reset's seed or options['episode']): a whole number >= 0."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+    if not _is_whole(value):
         raise TypeError(f"{what} must be a whole number (the suite's episode index), got {value!r}")
     if not 0 <= int(value) <= _MAX_EPISODE:
         raise ValueError(f"{what} must be an episode index in [0, {_MAX_EPISODE}], got {value}")
@@ -274,10 +279,9 @@ class _DiscreteSpace:
 
 def _episode_count(episodes) -> int:
     """evaluate's and run_suite's `episodes`: None (or -1) for the suite's own count."""
-    if episodes is None or (isinstance(episodes, (int, np.integer)) and episodes == -1):
+    if episodes is None or (_is_whole(episodes) and episodes == -1):
         return -1
-    if isinstance(episodes, (bool, np.bool_)) or not isinstance(episodes, (int, np.integer)) \
-            or not 1 <= episodes <= _core.MAX_EPISODES:
+    if not _is_whole(episodes) or not 1 <= episodes <= _core.MAX_EPISODES:
         raise ValueError(f"episodes must be a whole number in [1, {_core.MAX_EPISODES}], or None "
                          f"for the suite's own count; got {episodes!r}")
     return int(episodes)
@@ -302,8 +306,7 @@ def run_suite(suite: str, *, out: str = "", jobs: int = 1, episodes: int | None 
               dataframe: bool = False):
     """Runs a suite file as `crowdsim-bench run` does (results in `out`, default runs/<name>/);
     returns its table as a list of dicts (a pandas DataFrame with dataframe=True)."""
-    if isinstance(jobs, (bool, np.bool_)) or not isinstance(jobs, (int, np.integer)) \
-            or not 1 <= jobs <= _core.MAX_JOBS:
+    if not _is_whole(jobs) or not 1 <= jobs <= _core.MAX_JOBS:
         raise ValueError(f"jobs must be a whole number in [1, {_core.MAX_JOBS}], got {jobs!r}")
     rows = _core.run_suite(str(suite), out, int(jobs), _episode_count(episodes), fresh,
                            _settings(set), progress)

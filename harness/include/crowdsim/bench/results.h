@@ -81,6 +81,9 @@ long ReadManifestInteger(const std::filesystem::path& path, const std::string& k
 /// A true/false field, e.g. a summary's "finished" (nullopt if absent).
 std::optional<bool> ReadManifestBool(const std::filesystem::path& path, const std::string& key);
 
+/// A manifest's "shard" field in words: "shard 2/3", or "a whole run" when empty.
+std::string ShardName(const std::string& shard);
+
 /// What two runs were given differently: their suite files, their --set overrides (as the
 /// manifest records them), as "; suite files A and B; run with no --set and with --set x=1"
 /// for the end of an error message; empty when both are the same.
