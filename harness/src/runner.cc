@@ -307,7 +307,7 @@ void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
       return "E" + Where(row, task.episode) + ": " + e.what();
     }
   };
-  callbacks.done = [&](size_t, std::string bytes) {
+  callbacks.done = [&](size_t, const std::string& bytes) {
     if (bytes.starts_with("E")) {
       failure = bytes.substr(1);
       return false;
