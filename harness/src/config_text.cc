@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <set>
 #include <sstream>
 #include <variant>
 
+#include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/data_root.h"
 #include "crowdsim/rng.h"
 
@@ -92,6 +94,31 @@ std::vector<InputFile> InputFiles(const PluginUse& u) {
   return files;
 }
 
+std::string PluginFileContent(const PluginUse& u) {
+  if (!u.loaded || u.loaded->path.empty() || PluginRegistry::IsHarnessPlugin(*u.loaded)) return "";
+  // A suite names the same plugin in many rows: each file is read once per process, again
+  // only when its size or time changes.
+  struct Seen {
+    std::uintmax_t size;
+    fs::file_time_type time;
+    std::string content;
+  };
+  static std::mutex mutex;
+  static std::map<fs::path, Seen> seen;
+  std::error_code ec;
+  const fs::path& path = u.loaded->path;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  const fs::file_time_type time = fs::last_write_time(path, ec);
+  std::lock_guard<std::mutex> lock(mutex);
+  const auto it = seen.find(path);
+  if (it != seen.end() && it->second.size == size && it->second.time == time) {
+    return it->second.content;
+  }
+  std::string content = FileContentHash(path);
+  seen[path] = {size, time, content};
+  return content;
+}
+
 void Canonical(const PluginUse& u, std::ostream& os) {
   os << (u.loaded ? u.loaded->descriptor->name : u.plugin) << "{";
   const std::vector<InputFile> files = InputFiles(u);
@@ -110,6 +137,9 @@ void Canonical(const PluginUse& u, std::ostream& os) {
   }
   for (const InputFile& f : files) {
     if (f.param.empty()) os << "data:" << f.name << "#content:" << f.content << ";";
+  }
+  if (const std::string plugin = PluginFileContent(u); !plugin.empty()) {
+    os << "plugin:" << u.loaded->path.filename().string() << "#content:" << plugin << ";";
   }
   os << "}";
 }

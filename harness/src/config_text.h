@@ -27,6 +27,12 @@ struct InputFile {
 /// among them. What the config hash and the manifest's "files" cover.
 std::vector<InputFile> InputFiles(const PluginUse& u);
 
+/// The content hash of the plugin file itself when it is not one of the harness's own (a
+/// user's plugin, loaded by path or from CROWDSIM_PLUGIN_PATH), else "": rebuilding such a
+/// plugin is another configuration, never resumed as the old one. The harness's own plugins
+/// are covered by the commit that built them (manifest.json's git_commit).
+std::string PluginFileContent(const PluginUse& u);
+
 /// Writes a plugin use (name and every parameter value, with the content hash of every file it
 /// reads, InputFiles) into a canonical config text.
 void Canonical(const PluginUse& u, std::ostream& os);

@@ -45,6 +45,10 @@ Json PluginJson(const PluginUse& u) {
   Json j;
   j["plugin"] = u.loaded ? u.loaded->descriptor->name : u.plugin;
   if (u.loaded) j["file"] = u.loaded->path.string();
+  // A user's plugin file is part of the configuration (the config hash covers its bytes).
+  if (const std::string content = suite_internal::PluginFileContent(u); !content.empty()) {
+    j["file_content_fnv1a"] = content;
+  }
   Json params = Json::object();
   for (const auto& [k, v] : u.params.values()) params[k] = ParamJson(v);
   j["params"] = std::move(params);

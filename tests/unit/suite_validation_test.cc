@@ -173,6 +173,38 @@ std::string GoodWithOpenLastRow() {
   return yaml;
 }
 
+TEST_F(SuiteValidation, ConfigHashCoversTheBytesOfAUsersPluginFile) {
+  // A plugin given by path is the user's: rebuilding it is another configuration (its stored
+  // episodes are not resumed as the new one's). The harness's own are covered by the commit.
+  namespace fs = std::filesystem;
+  const fs::path own = testing::PluginDir() / "crowdsim_linear.so";
+  fs::create_directories(dir_.path() / "v1");
+  fs::create_directories(dir_.path() / "v2");
+  fs::create_directories(dir_.path() / "same");
+  fs::copy_file(own, dir_.path() / "v1" / "crowdsim_linear.so");
+  fs::copy_file(own, dir_.path() / "v2" / "crowdsim_linear.so");
+  fs::copy_file(own, dir_.path() / "same" / "crowdsim_linear.so");
+  std::ofstream(dir_.path() / "v2" / "crowdsim_linear.so", std::ios::app) << "rebuilt";
+  auto by_path = [&](const std::string& folder) {
+    std::string yaml = kGood;
+    const std::string row = "{label: b, policy: linear,";
+    yaml.replace(yaml.find(row), row.size(),
+                 "{label: b, policy: " + (dir_.path() / folder / "crowdsim_linear.so").string() +
+                     ",");
+    PluginRegistry registry({testing::PluginDir()});
+    SuiteLoadResult r = LoadSuite(dir_.Write("suite_" + folder + ".yaml", yaml), registry);
+    EXPECT_TRUE(r.suite) << All(r);
+    return r.suite ? r.suite->rows[1].ConfigHash() : std::string();
+  };
+  const std::string v1 = by_path("v1"), v2 = by_path("v2"), same = by_path("same");
+  EXPECT_NE(v1, v2);
+  EXPECT_EQ(v1, same);  // the bytes count, not the folder
+  auto own_row = Load(kGood);
+  ASSERT_TRUE(own_row.suite) << All(own_row);
+  EXPECT_EQ(own_row.suite->rows[1].canonical.find("plugin:"), std::string::npos);
+  EXPECT_NE(own_row.suite->rows[1].ConfigHash(), v1);
+}
+
 TEST_F(SuiteValidation, ReferencesAndSummariesLoadWithoutChangingTheConfigHash) {
   auto plain = Load(kGood);
   ASSERT_TRUE(plain.suite) << All(plain);
