@@ -186,6 +186,11 @@ int RunCommand(const std::vector<std::string>& args) {
   try {
     RunSummary s = RunSuite(*suite, registry, opt);
     PrintTable(*suite, s);
+    for (const std::string& note : s.policy_errors) std::cerr << "note: " << note << "\n";
+    if (!s.policy_errors.empty()) {
+      std::cerr << "note: every episode's message is in the error column of "
+                << (s.out_dir / "episodes.csv").string() << "\n";
+    }
     std::cerr << "wrote " << (s.out_dir / (shard_count > 1 ? "episodes.csv" : "table.md")).string()
               << (shard_count > 1 ? ", manifest.json ("
                                   : ", table.csv, episodes.csv, manifest.json (")

@@ -13,7 +13,7 @@ namespace {
 // A plugin that throws something not derived from std::exception (`throw 42;`) gets the same
 // policy_error as any other throw, instead of std::terminate ending the whole run.
 constexpr const char* kNonStandardException =
-    "a policy threw an exception not derived from std::exception (e.g. `throw 42;`); throw a "
+    "threw an exception not derived from std::exception (e.g. `throw 42;`); throw a "
     "std::runtime_error with a message instead";
 }  // namespace
 
@@ -194,7 +194,7 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
     result_.error = std::string("Reset failed: ") + e.what();
     Finish(EpisodeStatus::kPolicyError);
   } catch (...) {
-    result_.error = std::string("Reset failed: ") + kNonStandardException;
+    result_.error = std::string("Reset failed: a policy ") + kNonStandardException;
     Finish(EpisodeStatus::kPolicyError);
   }
   Record();
@@ -209,7 +209,13 @@ void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const
   for (size_t s = 0; s < agents_.sensors.size(); ++s) {
     SensorReading& r = (*out)[s];
     r.sensor = agents_.sensors[s].name;
-    agents_.sensors[s].sensor->Sense(input, &r);
+    try {
+      agents_.sensors[s].sensor->Sense(input, &r);
+    } catch (const std::exception& e) {
+      throw std::runtime_error("sensor '" + r.sensor + "' failed: " + e.what());
+    } catch (...) {
+      throw std::runtime_error("sensor '" + r.sensor + "' failed: " + kNonStandardException);
+    }
   }
 }
 
@@ -235,7 +241,13 @@ void Episode::DecideHuman(int i) {
   human_obs_.frame = human_needs_[i].heading_frame ? Frame::Make(h.position, HeadingToGoal(h))
                                                    : Frame{.origin = h.position};
   human_obs_.self_index = i;
-  human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
+  try {
+    human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(PolicyName(i) + " failed: " + e.what());
+  } catch (...) {
+    throw std::runtime_error(PolicyName(i) + " failed: " + kNonStandardException);
+  }
   if (!human_actions_[i].velocity.allFinite()) {
     throw std::runtime_error(PolicyName(i) + " returned a non-finite velocity");
   }
@@ -287,7 +299,7 @@ StepInfo Episode::Step() {
     Finish(EpisodeStatus::kPolicyError);
     return info;
   } catch (...) {
-    result_.error = kNonStandardException;
+    result_.error = PolicyName(-1) + " " + kNonStandardException;
     Finish(EpisodeStatus::kPolicyError);
     return info;
   }

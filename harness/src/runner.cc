@@ -148,6 +148,27 @@ std::vector<Task> PendingTasks(const Suite& suite, const RunScope& scope, const 
   return tasks;
 }
 
+/// Per row with policy_error episodes among `done`: their count and the first one's message.
+std::vector<std::string> PolicyErrorNotes(const Suite& suite, const EpisodeLines& done) {
+  std::vector<std::string> notes;
+  for (const RowSpec& row : suite.rows) {
+    int total = 0, errors = 0;
+    const EpisodeLine* first = nullptr;
+    for (auto it = done.lower_bound({row.label, 0}); it != done.end() && it->first.first == row.label;
+         ++it) {
+      ++total;
+      if (it->second.outcome.status != EpisodeStatus::kPolicyError) continue;
+      ++errors;
+      if (first == nullptr) first = &it->second;
+    }
+    if (first == nullptr) continue;
+    notes.push_back("row '" + row.label + "': " + std::to_string(errors) + " of " +
+                    std::to_string(total) + " episodes ended in policy_error; episode " +
+                    std::to_string(first->episode) + ": " + first->outcome.error);
+  }
+  return notes;
+}
+
 /// One episode as the CLI runs it, with its line for episodes.csv.
 EpisodeLine RunEpisode(const Suite& suite, const RowSpec& row, const WorldSource& world,
                        RowInstance& instance, int episode_index) {
@@ -457,6 +478,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
     RunTasksInThreads(suite, registry, worlds, tasks, facts.jobs, sink);
   }
   summary.episodes_run = static_cast<int>(tasks.size());
+  summary.policy_errors = PolicyErrorNotes(suite, done);
 
   facts.finished_utc = NowUtc();
   facts.wall_seconds =

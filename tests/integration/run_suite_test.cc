@@ -558,14 +558,26 @@ humans: {count: 2, policy: linear}
 rows:
   - {label: bad, policy: throwing_policy, params: {fail_after_steps: 2}}
   - {label: good, policy: linear}
+  - label: bad_humans
+    policy: linear
+    humans: {count: 2, policy: throwing_policy, params: {fail_after_steps: 0}}
 )");
   const RunSummary r = Run(s, "out", 2);
-  ASSERT_EQ(r.rows.size(), 2u);
+  ASSERT_EQ(r.rows.size(), 3u);
   EXPECT_DOUBLE_EQ(r.rows[0].metrics.policy_error_rate, 1.0);
   EXPECT_DOUBLE_EQ(r.rows[1].metrics.policy_error_rate, 0.0);
+  EXPECT_DOUBLE_EQ(r.rows[2].metrics.policy_error_rate, 1.0);
   const std::string csv = ReadText(dir_.path() / "out" / "episodes.csv");
   EXPECT_NE(csv.find("policy_error"), std::string::npos);
   EXPECT_NE(csv.find("deliberate failure (fixture)"), std::string::npos);
+  EXPECT_NE(csv.find("human 0's policy failed: deliberate failure (fixture)"), std::string::npos);
+  // The run says so (the CLI prints these): an error is not only a column of the table.
+  EXPECT_EQ(r.policy_errors,
+            (std::vector<std::string>{
+                "row 'bad': 3 of 3 episodes ended in policy_error; episode 0: deliberate failure "
+                "(fixture)",
+                "row 'bad_humans': 3 of 3 episodes ended in policy_error; episode 0: human 0's "
+                "policy failed: deliberate failure (fixture)"}));
 }
 
 TEST_F(RunSuiteTest, WritesTablesAndStrictManifest) {

@@ -233,6 +233,33 @@ TEST(Episode, PolicyExceptionEndsEpisodeWithPolicyError) {
   EXPECT_EQ(r.error, "boom");
 }
 
+// A failing human policy or sensor ends the episode as policy_error too, but its message says
+// who failed (it read as if the robot's policy had).
+TEST(Episode, AFailingHumanPolicyOrSensorIsNamedInTheError) {
+  const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4),
+                                   {{Vec2(-3, 0), Vec2(3, 0)}, {Vec2(3, 2), Vec2(-3, 2)}});
+  ConstantVelocityPolicy robot(Vec2(0, 0.5));
+  ConstantVelocityPolicy walking(Vec2(1.0, 0));
+  CountingThrowPolicy failing;
+  EpisodeAgents humans_fail{&robot, {&walking, &failing}, {}};
+  Episode ep(sc, SimConfig{}, humans_fail);
+  EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
+  EXPECT_EQ(ep.result().steps, 2);
+  EXPECT_EQ(ep.result().error, "human 1's policy failed: boom");
+
+  class FailingSensor final : public Sensor {
+   public:
+    void Sense(const SenseInput&, SensorReading*) const override { throw 42; }
+  };
+  FailingSensor sensor;
+  EpisodeAgents sensor_fails{&robot, {&walking, &walking}, {{"eyes", &sensor}}};
+  Episode blind(sc, SimConfig{}, sensor_fails);
+  EXPECT_EQ(blind.Run().status, EpisodeStatus::kPolicyError);
+  EXPECT_EQ(blind.result().error.rfind("sensor 'eyes' failed: threw an exception not derived", 0),
+            0u)
+      << blind.result().error;
+}
+
 TEST(Episode, NonFiniteActionIsAPolicyError) {
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(std::nan(""), 0));

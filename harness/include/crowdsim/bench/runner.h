@@ -55,6 +55,10 @@ struct RunSummary {
   int episodes_run = 0;      ///< this invocation
   int episodes_resumed = 0;  ///< found on disk
   std::filesystem::path out_dir;
+  /// Per row whose episodes (run or resumed) ended in policy_error: how many and the first
+  /// one's message ("row 'a': 20 of 20 episodes ended in policy_error; episode 0: ..."), for
+  /// the CLI to say; an error is otherwise only a column of the table.
+  std::vector<std::string> policy_errors;
 };
 
 /// Joins the output folders of the shards of one suite run into `out_dir` and writes the tables
