@@ -96,18 +96,24 @@ constexpr const char* kFooter = R"(  crowdsim-bench help [COMMAND]   (or COMMAND
   crowdsim-bench completion bash
       a bash completion script: source <(crowdsim-bench completion bash)
 
-exit codes: 0 done; 1 failed while running (a plugin, a file, the disk); 2 usage or
+)";
+
+// Printed after the usage of every command and of one (help COMMAND, COMMAND --help).
+constexpr const char* kNotes =
+    R"(exit codes: 0 done; 1 failed while running (a plugin, a file, the disk); 2 usage or
 validation error, or results that do not fit (another configuration or shard in --out, shards
-that are not one run, no training or another one to --resume): nothing was run; 130
+that are not one run, no training or another one to --resume, a training's folder for a run or
+a run's for a training, a folder another crowdsim-bench is writing into): nothing was run; 130
 interrupted (train: checkpoint written, --resume).
 environment: CROWDSIM_PLUGIN_PATH (extra plugin folders, searched first, ':'-separated),
-CROWDSIM_DATA_DIR (where worlds/ is found; default: the source folder of the build).
+CROWDSIM_DATA_DIR (where worlds/ is found; default: PREFIX/share/crowdsim-bench for an
+installed copy, the source folder for a build).
 )";
 
 void PrintUsage(std::ostream& os) {
   os << kHeader;
   for (const Command& c : Commands()) os << c.usage;
-  os << kFooter;
+  os << kFooter << kNotes;
 }
 
 const Command* Find(const std::string& name) {
@@ -169,7 +175,7 @@ int main(int argc, char** argv) {
         std::cerr << "error: no command '" << args[1] << "' (valid: " << Names() << ")\n";
         return 2;
       }
-      std::cout << "usage:\n" << c->usage;
+      std::cout << "usage:\n" << c->usage << "\n" << kNotes;
       return 0;
     }
     PrintUsage(std::cout);
@@ -191,7 +197,7 @@ int main(int argc, char** argv) {
   }
   args.erase(args.begin());
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
-    std::cout << "usage:\n" << command->usage;
+    std::cout << "usage:\n" << command->usage << "\n" << kNotes;
     return 0;
   }
   try {

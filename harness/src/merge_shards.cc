@@ -10,6 +10,7 @@
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/bench/runner.h"
 #include "json_file.h"
+#include "output_folder.h"
 
 namespace crowdsim {
 namespace fs = std::filesystem;
@@ -174,6 +175,11 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   // The joined episodes under the shards' configuration: the runner resumes all of them and
   // writes the tables and manifest exactly as after a single run.
   std::error_code ec;
+  if (OutputFolderKind(out_dir) == "a training") {
+    throw RunRefused("'" + out_dir.string() +
+                     "' holds a training (training.yaml); merge into a folder of its own: "
+                     "choose another --out");
+  }
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir)) {
     throw RunError("cannot create the output folder '" + out_dir.string() + "': " + ec.message());

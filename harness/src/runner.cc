@@ -17,6 +17,7 @@
 #include "crowdsim/version.h"
 #include "episode_appender.h"
 #include "episode_wire.h"
+#include "output_folder.h"
 #include "run_progress.h"
 #include "stored_episodes.h"
 #include "worker_process.h"
@@ -111,11 +112,19 @@ fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
 /// the plugin's own message; returns the rows' worlds and records their identities.
 std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
                                                         PluginRegistry& registry, RunFacts* facts) {
+  // Every row is checked before any episode, and every row at fault is named (a suite of
+  // three rows with missing weights said only the first); nothing is run then.
   std::vector<std::shared_ptr<WorldSource>> worlds;
+  std::string errors;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
-    worlds.push_back(PreflightRow(suite, r, registry));
-    facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
+    try {
+      worlds.push_back(PreflightRow(suite, r, registry));
+      facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
+    } catch (const RunError& e) {
+      errors += (errors.empty() ? "" : "\n") + std::string(e.what());
+    }
   }
+  if (!errors.empty()) throw RunRefused(errors);
   return worlds;
 }
 
@@ -154,8 +163,8 @@ std::vector<std::string> PolicyErrorNotes(const Suite& suite, const EpisodeLines
   for (const RowSpec& row : suite.rows) {
     int total = 0, errors = 0;
     const EpisodeLine* first = nullptr;
-    for (auto it = done.lower_bound({row.label, 0}); it != done.end() && it->first.first == row.label;
-         ++it) {
+    for (auto it = done.lower_bound({row.label, 0});
+         it != done.end() && it->first.first == row.label; ++it) {
       ++total;
       if (it->second.outcome.status != EpisodeStatus::kPolicyError) continue;
       ++errors;
@@ -445,8 +454,16 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
     facts.shard = std::to_string(scope.shard_index) + "/" + std::to_string(scope.shards);
 
   RunSummary summary;
+  const auto worlds = PreflightRows(suite, registry, &facts);  // before the folder is made
   summary.out_dir = PrepareOutDir(suite, options);
-  const auto worlds = PreflightRows(suite, registry, &facts);
+  std::string busy;
+  const auto lock = OutputFolderLock::Acquire(summary.out_dir, &busy);
+  if (!lock) throw RunRefused(busy);
+  if (OutputFolderKind(summary.out_dir) == "a training") {
+    throw RunRefused("'" + summary.out_dir.string() +
+                     "' holds a training (training.yaml); a suite run writes into a folder of "
+                     "its own: choose another --out");
+  }
   if (options.fresh) {
     // --fresh discards the stored results, those set aside by earlier reruns with them.
     std::error_code ec;

@@ -1,6 +1,9 @@
 // Running suites: identical results for any job count, resume after an interruption, policy
 // errors recorded without stopping, and the CLI's contract.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -632,6 +635,19 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_EQ(ptext.find("row 'fine'"), std::string::npos) << ptext;
   EXPECT_NE(ptext.find("1 row of"), std::string::npos) << ptext;
 
+  // run checks every row before any episode and names each one at fault; nothing is made.
+  const auto two_bad =
+      dir_.Write("two_bad.yaml",
+                 "name: u2\nworld: {source: random_rect, obstacles: 2, split: test}\nrows:\n"
+                 "  - {label: two, policy: linear}\n  - {label: three, policy: linear}\n");
+  const fs::path two_bad_out = dir_.path() / "two-bad-out";
+  auto [trc2, ttext2] =
+      Shell(exe + " run " + two_bad.string() + " --quiet --out " + two_bad_out.string());
+  EXPECT_EQ(trc2, 2) << ttext2;
+  EXPECT_NE(ttext2.find("row 'two' (rows[0])"), std::string::npos) << ttext2;
+  EXPECT_NE(ttext2.find("row 'three' (rows[1])"), std::string::npos) << ttext2;
+  EXPECT_FALSE(fs::exists(two_bad_out));
+
   auto [urc, utext] = Shell(exe + " run " + suite.string() + " --jobz 2");
   EXPECT_EQ(urc, 2) << utext;
   EXPECT_NE(utext.find("unknown option '--jobz'"), std::string::npos) << utext;
@@ -653,6 +669,34 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
             std::string::npos)
       << ttext;
   EXPECT_FALSE(fs::exists(dir_.path() / "no-training"));  // nothing made by a refusal
+
+  // One kind of output per folder: a training does not write into a run's folder (`out`
+  // holds the run above), nor a run into a training's (timeout: a failure must not train).
+  auto [krc, ktext] =
+      Shell("timeout 120 " + exe + " train " + train_file + " --quiet --out " + out);
+  EXPECT_EQ(krc, 2) << ktext;
+  EXPECT_NE(ktext.find("holds a suite run"), std::string::npos) << ktext;
+  const fs::path training = dir_.path() / "a-training";
+  fs::create_directories(training);
+  std::ofstream(training / "training.yaml") << "# copy of t.yaml\n";
+  auto [rrc, rtext] =
+      Shell(exe + " run " + suite.string() + " --episodes 2 --quiet --out " + training.string());
+  EXPECT_EQ(rrc, 2) << rtext;
+  EXPECT_NE(rtext.find("holds a training (training.yaml)"), std::string::npos) << rtext;
+  EXPECT_FALSE(fs::exists(training / "episodes.csv"));
+
+  // One process at a time per folder: while another holds its lock, a run is refused (two
+  // runs appending to one episodes.csv interleaved their lines).
+  const int held = ::open((fs::path(out) / ".crowdsim-bench.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(held, 0);
+  ASSERT_EQ(::flock(held, LOCK_EX | LOCK_NB), 0);
+  auto [lrc, ltext] = Shell(exe + " run " + suite.string() + " --episodes 3 --quiet --out " + out);
+  EXPECT_EQ(lrc, 2) << ltext;
+  EXPECT_NE(ltext.find("another crowdsim-bench process"), std::string::npos) << ltext;
+  EXPECT_NE(ltext.find("is writing into '" + out + "'"), std::string::npos) << ltext;
+  ::close(held);
+  auto [frc, ftext] = Shell(exe + " run " + suite.string() + " --episodes 3 --quiet --out " + out);
+  EXPECT_EQ(frc, 0) << ftext;  // the lock went with its holder
 }
 
 // `validate` runs `run`'s preflight: every row's plugins built (weights read, world files read,
@@ -721,11 +765,13 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
     EXPECT_NE(text.find(c.expected), std::string::npos) << c.name << ": " << text;
     EXPECT_EQ(text.find("row 'fine'"), std::string::npos) << c.name << ": " << text;
   }
-  // The last suite (impossible human count): `run` stops at the same preflight, before any episode.
+  // The last suite (impossible human count): `run` stops at the same preflight, before any
+  // episode, and exits 2 as for any refusal (nothing was run; no folder is made).
   const fs::path out = dir_.path() / "preflight-out";
   auto [rc, text] = Shell(exe + " run " + (dir_.path() / "preflight.yaml").string() +
                           " --quiet --out " + out.string());
-  EXPECT_EQ(rc, 1) << text;
+  EXPECT_EQ(rc, 2) << text;
+  EXPECT_FALSE(fs::exists(out));
   EXPECT_NE(text.find("row 'bad' (rows[1]): the scenario of episode 0 cannot be made"),
             std::string::npos)
       << text;

@@ -188,9 +188,9 @@ TEST_F(SuiteValidation, ConfigHashCoversTheBytesOfAUsersPluginFile) {
   auto by_path = [&](const std::string& folder) {
     std::string yaml = kGood;
     const std::string row = "{label: b, policy: linear,";
-    yaml.replace(yaml.find(row), row.size(),
-                 "{label: b, policy: " + (dir_.path() / folder / "crowdsim_linear.so").string() +
-                     ",");
+    yaml.replace(
+        yaml.find(row), row.size(),
+        "{label: b, policy: " + (dir_.path() / folder / "crowdsim_linear.so").string() + ",");
     PluginRegistry registry({testing::PluginDir()});
     SuiteLoadResult r = LoadSuite(dir_.Write("suite_" + folder + ".yaml", yaml), registry);
     EXPECT_TRUE(r.suite) << All(r);

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "../config_text.h"
+#include "../output_folder.h"
 #include "blas_kernel.h"
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/results.h"
@@ -590,6 +591,14 @@ TrainSummary Trainer::Run() {
   if (ec || !fs::is_directory(summary_.out_dir)) {
     throw TrainError("cannot create the output folder '" + summary_.out_dir.string() +
                      "': " + ec.message());
+  }
+  std::string busy;
+  const auto lock = OutputFolderLock::Acquire(summary_.out_dir, &busy);
+  if (!lock) throw TrainRefused(busy);
+  if (OutputFolderKind(summary_.out_dir) == "a suite run") {
+    throw TrainRefused("'" + summary_.out_dir.string() +
+                       "' holds a suite run (manifest.json, episodes.csv); a training writes "
+                       "into a folder of its own: choose another --out");
   }
   if (options_.resume) {
     LoadCheckpoint();
