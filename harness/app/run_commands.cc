@@ -14,6 +14,7 @@
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/bench/training/train_spec.h"
+#include "crowdsim/bench/training/trainer.h"
 #include "crowdsim/cli/args.h"
 #include "process_group.h"
 
@@ -230,9 +231,19 @@ int ValidateCommand(const std::vector<std::string>& args) {
         std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
                   << " in " << file << "\n";
         status = 2;
-      } else {
-        std::cout << file << ": ok (training file: " << loaded.spec->row.policy.plugin << ")\n";
+        continue;
       }
+      try {
+        training::PreflightTraining(*loaded.spec, registry);
+      } catch (const training::TrainError& e) {
+        std::cerr << "error: " << file << ": " << e.what() << "\n";
+        status = 2;
+        continue;
+      }
+      for (const auto& w : training::TrainSpecWarnings(*loaded.spec)) {
+        std::cerr << "warning: " << file << ": " << w << "\n";
+      }
+      std::cout << file << ": ok (training file: " << loaded.spec->row.policy.plugin << ")\n";
       continue;
     }
     auto suite = LoadOrReport(file, registry, a.All("--set"));

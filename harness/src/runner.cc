@@ -58,9 +58,24 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
   std::vector<std::string> errors;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     try {
-      PreflightRow(suite, r, registry);
+      const auto world = PreflightRow(suite, r, registry);
+      // The first step of episode 0, played as a run plays it: what fails on every step (a
+      // lidar whose beams do not fit a learned policy, a sensor that throws) fails here, not
+      // as a table of policy errors.
+      const RowSpec& row = suite.rows[r];
+      RowInstance instance(row, registry);
+      const Scenario scenario = world->Make(MakeEpisodeRequest(suite, row, *world, 0));
+      Episode episode(scenario, suite.sim, instance.Agents(scenario.humans.size()));
+      if (!episode.done()) episode.Step();
+      if (episode.result().status == EpisodeStatus::kPolicyError) {
+        errors.push_back("row '" + row.label + "' (rows[" + std::to_string(r) +
+                         "]): the first step of episode 0 fails: " + episode.result().error);
+      }
     } catch (const RunError& e) {
       errors.push_back(e.what());
+    } catch (const std::exception& e) {
+      errors.push_back("row '" + suite.rows[r].label + "' (rows[" + std::to_string(r) +
+                       "]): episode 0 cannot start: " + e.what());
     }
   }
   return errors;

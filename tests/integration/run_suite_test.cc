@@ -670,6 +670,16 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
       << ttext;
   EXPECT_FALSE(fs::exists(dir_.path() / "no-training"));  // nothing made by a refusal
 
+  // validate builds a training as train would: a policy that cannot learn is found there.
+  const auto untrainable =
+      dir_.Write("untrainable.yaml",
+                 "name: u\npolicy: orca\nsensors: [person]\nworld: {source: crowdnav, scenario: "
+                 "circle_crossing}\nhumans: {count: 5, policy: orca}\ntraining: {il_episodes: 20, "
+                 "rl_episodes: 40}\n");
+  auto [nrc, ntext] = Shell(exe + " validate " + untrainable.string());
+  EXPECT_EQ(nrc, 2) << ntext;
+  EXPECT_NE(ntext.find("policy 'orca' cannot be trained"), std::string::npos) << ntext;
+
   // One kind of output per folder: a training does not write into a run's folder (`out`
   // holds the run above), nor a run into a training's (timeout: a failure must not train).
   auto [krc, ktext] =
@@ -746,6 +756,11 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
        "bad_world.yaml:"},
       {"cadrl without lidar2d", "policy: cadrl, params: {sensors: lidar+person}",
        "policy 'cadrl' needs the sensor 'lidar2d'"},
+      {"lidar beams the model was not built for",
+       "policy: cadrl, sensors: [person, {type: lidar2d, beams: 90}], weights: " +
+           (testing::SourceDir() / "results/models/cadrl_pp_lidar_person_rect1/best.pt").string() +
+           ", params: {sensors: lidar+person}",
+       "the first step of episode 0 fails: the lidar2d reading has 90 beams"},
       {"impossible human count",
        "policy: linear, world: {source: random_rect, obstacles: 1, split: test}, humans: {count: "
        "500}",

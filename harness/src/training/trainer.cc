@@ -109,6 +109,8 @@ class Trainer {
   }
 
   TrainSummary Run();
+  /// PreflightTraining's checks beyond Build.
+  void Preflight();
 
  private:
   void Build();
@@ -168,23 +170,48 @@ void Trainer::Build() {
     teacher_ = registry_.MakePolicy(*spec_.teacher.loaded, spec_.teacher.params);
     agents_ = row_->Agents(static_cast<size_t>(row.humans.count_max));
   } catch (const PluginError& e) {
-    throw TrainError(e.what());
+    throw TrainRefused(e.what());
   }
   learner_policy_ = &row_->robot();
   learner_ = dynamic_cast<Trainable*>(learner_policy_);
   if (learner_ == nullptr) {
-    throw TrainError("policy '" + row.policy.plugin +
-                     "' cannot be trained: its object does not implement crowdsim::Trainable "
-                     "(train cadrl or sarl)");
+    throw TrainRefused("policy '" + row.policy.plugin +
+                       "' cannot be trained: its object does not implement crowdsim::Trainable "
+                       "(train cadrl or sarl)");
   }
   if (const std::string unmet = row_->UnmetSensorNeed(); !unmet.empty()) {
-    throw TrainError(spec_.file.string() + ": " + unmet + "; add it to `sensors`");
+    throw TrainRefused(unmet + "; add it to `sensors`");
   }
   // The run's constants before imitation, whose targets the learner fits before it drives an
   // episode (a value with a discounted route prior needs the run's gamma); no map: no episode.
   EpisodeContext constants;
   constants.sim = spec_.sim;
   learner_policy_->Reset(constants);
+}
+
+void Trainer::Preflight() {
+  for (const char* stream : {"il", "val", "rl"}) {
+    try {
+      CheckScenario(MakeScenario(stream, 0), spec_.sim);
+    } catch (const std::exception& e) {
+      throw TrainRefused(std::string("the first scenario of the training's '") + stream +
+                         "' episodes cannot be made: " + e.what());
+    }
+  }
+  learner_->InitWeights(spec_.seed);
+  const Scenario scenario = MakeScenario("il", 0);
+  for (Policy* robot : {teacher_.get(), learner_policy_}) {
+    agents_.robot = robot;
+    Episode episode(scenario, spec_.sim, agents_);
+    if (!episode.done()) episode.Step();
+    if (episode.result().status == EpisodeStatus::kPolicyError) {
+      const std::string who = robot == learner_policy_
+                                  ? "the learner ('" + spec_.row.policy.plugin + "')"
+                                  : "the teacher (il_policy '" + spec_.teacher.plugin + "')";
+      throw TrainRefused(
+          who + " fails in the first step of the first episode: " + episode.result().error);
+    }
+  }
 }
 
 Scenario Trainer::MakeScenario(const char* stream, int index) const {
@@ -644,6 +671,12 @@ TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry,
                          const TrainOptions& options) {
   Trainer trainer(spec, registry, options);
   return trainer.Run();
+}
+
+void PreflightTraining(const TrainSpec& spec, PluginRegistry& registry) {
+  const TrainOptions options;
+  Trainer trainer(spec, registry, options);
+  trainer.Preflight();
 }
 
 bool IsFinishedTraining(const fs::path& out_dir, const TrainSpec& spec) {

@@ -7,6 +7,7 @@
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/bench/training/train_spec.h"
+#include "crowdsim/bench/training/trainer.h"
 #include "learning_test_util.h"
 #include "test_paths.h"
 
@@ -278,6 +279,11 @@ TEST(TrainSpecTest, ShippedTrainingFilesAreValid) {
     ++files;
     const auto r = Load(entry.path());
     EXPECT_TRUE(r.spec) << (r.errors.empty() ? "" : r.errors[0].Format());
+    // validate's checks (learner, teacher, world, first scenarios, first steps) pass too.
+    PluginRegistry registry;
+    const auto loaded = training::LoadTrainSpec(entry.path(), registry);
+    ASSERT_TRUE(loaded.spec);
+    EXPECT_NO_THROW(training::PreflightTraining(*loaded.spec, registry)) << entry.path();
   }
   EXPECT_GE(files, 17);  // every line of Table 1
 }

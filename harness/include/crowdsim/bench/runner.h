@@ -77,10 +77,12 @@ RunSummary MergeShards(const std::vector<std::filesystem::path>& shard_dirs,
 /// through an explicit --out, so trying a suite in the checkout never changes them.
 std::filesystem::path DefaultRunDir(const Suite& suite);
 
-/// What `run` does before any episode, and `validate` too: builds every row's plugins once
-/// (world and its files, sensors, robot and human policies, their weights) and checks that each
-/// robot has the sensors it needs. Returns one message per failing row (naming the row and
-/// with the plugin's own message); empty when every row can run.
+/// What `validate` checks: what `run` does before any episode (builds every row's plugins once:
+/// world and its files, sensors, robot and human policies, their weights; checks that each
+/// robot has the sensors it needs; makes episode 0's scenario), then plays the first step of
+/// each row's episode 0 (in this process, even for a row `run` would isolate). Returns one
+/// message per failing row (naming the row and with the plugin's own message); empty when
+/// every row can run.
 std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& registry);
 
 /// Runs the suite and writes DIR/{episodes.csv, table.md, table.csv, manifest.json}.

@@ -84,6 +84,13 @@ struct TrainSummary {
 TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry,
                          const TrainOptions& options);
 
+/// What `validate` checks of a training file, without training: the learner, its sensors, the
+/// teacher and the world made as `train` makes them (a policy that cannot be trained, a missing
+/// weights file), the first scenario of each episode stream (a floor plan without training
+/// pairs), and the first step of the first episode with the teacher and with the learner at
+/// its initial weights (a sensor that does not fit the learner's input). Throws TrainRefused.
+void PreflightTraining(const TrainSpec& spec, PluginRegistry& registry);
+
 /// The folder holds a finished training of exactly this configuration (its summary.json says
 /// finished, with spec's config hash): a campaign skips it. A finished training whose file now
 /// asks for more RL episodes is not (it resumes and goes on).
