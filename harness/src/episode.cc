@@ -1,5 +1,6 @@
 #include "crowdsim/bench/episode.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -126,6 +127,22 @@ void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
   }
   if (!scenario.map) return;
   const StaticMap& map = *scenario.map;
+  // A disc that starts in an obstacle collides at its first step, whatever its policy does.
+  auto overlap = [&](const Vec2& p, double radius, const std::string& who) {
+    for (std::size_t k = 0; k < map.rectangles.size(); ++k) {
+      const Rect& r = map.rectangles[k];
+      const Vec2 gap(std::max({r.min.x() - p.x(), 0.0, p.x() - r.max.x()}),
+                     std::max({r.min.y() - p.y(), 0.0, p.y() - r.max.y()}));
+      const double distance = gap.norm();
+      if (distance < radius - kStartOverlapTolerance) {
+        char buf[96];
+        std::snprintf(buf, sizeof(buf), " is %.3f m from obstacle %zu, less than its radius %.3f m",
+                      distance, k, radius);
+        throw std::invalid_argument(where + who + " " + text(p) + buf +
+                                    ": the world must start agents in free space");
+      }
+    }
+  };
   for (const auto& [name, p] :
        {std::pair{"start", scenario.robot_start}, std::pair{"goal", scenario.robot_goal}}) {
     if (map.bounds.Area() > 0.0 && !map.bounds.Contains(p)) {
@@ -140,6 +157,21 @@ void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
       }
     }
   }
+  overlap(scenario.robot_start, sim.robot_radius, "the robot's start");
+  for (std::size_t i = 0; i < scenario.humans.size(); ++i) {
+    overlap(scenario.humans[i].start, scenario.humans[i].radius,
+            "human " + std::to_string(i) + "'s start");
+  }
+}
+
+void CheckHumanCount(const ScenarioRequest& request, const Scenario& scenario) {
+  if (static_cast<int>(scenario.humans.size()) == request.num_humans) return;
+  throw std::invalid_argument(
+      "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) +
+      ": the world made " + std::to_string(scenario.humans.size()) + " human(s) where " +
+      std::to_string(request.num_humans) +
+      " were asked for (the row's humans.count): a world must place every human it is asked "
+      "for, or fail saying why");
 }
 
 Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAgents& agents,

@@ -57,7 +57,9 @@ Replay ReplayEpisode(const Suite& suite, size_t row_index, int episode, PluginRe
   auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
   RowInstance instance(row, registry);
   Replay replay;
-  replay.scenario = world->Make(MakeEpisodeRequest(suite, row, *world, episode));
+  const ScenarioRequest request = MakeEpisodeRequest(suite, row, *world, episode);
+  replay.scenario = world->Make(request);
+  CheckHumanCount(request, replay.scenario);
   Episode ep(replay.scenario, suite.sim, instance.Agents(replay.scenario.humans.size()),
              record_trajectory);
   replay.result = ep.Run();

@@ -42,9 +42,13 @@ std::shared_ptr<WorldSource> PreflightRow(const Suite& suite, size_t r, PluginRe
       throw RunError(where + ": " + unmet + "; add it to the row's sensors list");
     }
     try {
-      CheckScenario(world->Make(MakeEpisodeRequest(suite, row, *world, 0)), suite.sim);
+      const ScenarioRequest request = MakeEpisodeRequest(suite, row, *world, 0);
+      const Scenario scenario = world->Make(request);
+      CheckHumanCount(request, scenario);
+      CheckScenario(scenario, suite.sim);
     } catch (const std::exception& e) {
-      throw RunError(where + ": the scenario of episode 0 cannot be made: " + e.what());
+      throw RunError(where + ": the scenario of episode 0 (world '" +
+                     row.world.loaded->descriptor->name + "') cannot be made: " + e.what());
     }
     return world;
   } catch (const PluginError& e) {
@@ -201,6 +205,7 @@ EpisodeLine RunEpisode(const Suite& suite, const RowSpec& row, const WorldSource
   line.episode = episode_index;
   const ScenarioRequest req = MakeEpisodeRequest(suite, row, world, episode_index);
   const Scenario scenario = world.Make(req);
+  CheckHumanCount(req, scenario);
   Episode episode(scenario, suite.sim, instance.Agents(scenario.humans.size()));
   const EpisodeResult& result = episode.Run();
   line.seed = req.seed;

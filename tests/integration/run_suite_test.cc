@@ -764,7 +764,7 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
       {"impossible human count",
        "policy: linear, world: {source: random_rect, obstacles: 1, split: test}, humans: {count: "
        "500}",
-       "the scenario of episode 0 cannot be made: random_rect"},
+       "the scenario of episode 0 (world 'random_rect') cannot be made: random_rect"},
   };
   for (const Case& c : cases) {
     const fs::path suite =
@@ -787,7 +787,8 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
                           " --quiet --out " + out.string());
   EXPECT_EQ(rc, 2) << text;
   EXPECT_FALSE(fs::exists(out));
-  EXPECT_NE(text.find("row 'bad' (rows[1]): the scenario of episode 0 cannot be made"),
+  EXPECT_NE(text.find("row 'bad' (rows[1]): the scenario of episode 0 (world 'random_rect') "
+                      "cannot be made"),
             std::string::npos)
       << text;
   EXPECT_FALSE(fs::exists(out / "episodes.csv"));

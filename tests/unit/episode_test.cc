@@ -364,6 +364,44 @@ TEST(Episode, MeaninglessScenariosAreRefusedWithTheReason) {
   EXPECT_NE(refused(MakeScenario(room, Vec2(0, -40), Vec2(0, 4))).find("outside the map"),
             std::string::npos);
   EXPECT_EQ(refused(MakeScenario(room, Vec2(3, -4), Vec2(3, 4))), "");
+  // A disc that starts overlapping an obstacle (its centre outside) collides at once: refused,
+  // the robot's and a human's alike; within a millimetre (the floor plans' rounding) it is not.
+  EXPECT_NE(refused(MakeScenario(room, Vec2(1.2, 0), Vec2(3, 4)))
+                .find("the robot's start (1.200, 0.000) is 0.200 m from obstacle 4, less than its "
+                      "radius 0.300 m"),
+            std::string::npos)
+      << refused(MakeScenario(room, Vec2(1.2, 0), Vec2(3, 4)));
+  EXPECT_EQ(refused(MakeScenario(room, Vec2(1.2995, 0), Vec2(3, 4))), "");
+  const Scenario human_inside =
+      MakeScenario(room, Vec2(3, -4), Vec2(3, 4), {{Vec2(0.2, 0.2), Vec2(3, 0)}});
+  ConstantVelocityPolicy still(Vec2::Zero());
+  EpisodeAgents with_human{&robot, {&still}, {}};
+  try {
+    Episode ep(human_inside, SimConfig{}, with_human);
+    ADD_FAILURE() << "a human starting inside an obstacle was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("human 0's start (0.200, 0.200) is 0.000 m from obstacle 4"),
+        std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Episode, AWorldThatPlacesFewerHumansThanAskedIsRefused) {
+  ScenarioRequest request;
+  request.num_humans = 3;
+  const Scenario one =
+      MakeScenario(MakeRoom(), Vec2(3, -4), Vec2(3, 4), {{Vec2(-3, 0), Vec2(3, 0)}});
+  try {
+    CheckHumanCount(request, one);
+    ADD_FAILURE() << "1 human for 3 was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the world made 1 human(s) where 3 were asked for"),
+              std::string::npos)
+        << e.what();
+  }
+  request.num_humans = 1;
+  EXPECT_NO_THROW(CheckHumanCount(request, one));
 }
 
 /// Records what the lookahead predicts for its own action and the others.

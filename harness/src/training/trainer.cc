@@ -227,7 +227,9 @@ Scenario Trainer::MakeScenario(const char* stream, int index) const {
   }
   req.goal_mode = humans.goal_mode;
   req.sim = spec_.sim;
-  return world_->Make(req);
+  Scenario scenario = world_->Make(req);
+  CheckHumanCount(req, scenario);
+  return scenario;
 }
 
 Trajectory Trainer::RunEpisode(Policy* robot, const Scenario& scenario, bool encode,

@@ -267,7 +267,8 @@ TEST(TrainingTest, EveryModelAndSensorSetTrains) {
 }
 
 // The learner's sensor needs are checked as a suite row's (RowInstance::UnmetSensorNeed), before
-// the first episode, with the file, the need and the fix named.
+// the first episode, with the need and the fix named (the CLI names the file), as a refusal:
+// nothing was trained.
 TEST(TrainingTest, PolicyWithoutItsSensorIsRefused) {
   TempDir dir;
   TrainFile f;
@@ -277,9 +278,9 @@ TEST(TrainingTest, PolicyWithoutItsSensorIsRefused) {
   try {
     Train(file, dir.path() / "out");
     ADD_FAILURE() << "trained without the lidar";
-  } catch (const training::TrainError& e) {
+  } catch (const training::TrainRefused& e) {
     EXPECT_EQ(std::string(e.what()),
-              file.string() + ": policy 'cadrl' needs the sensor 'lidar2d'; add it to `sensors`");
+              "policy 'cadrl' needs the sensor 'lidar2d'; add it to `sensors`");
   }
 }
 

@@ -13,6 +13,7 @@
 #include "crowdsim/scenario.h"
 #include "crowdsim/sensor.h"
 #include "crowdsim/sim_config.h"
+#include "crowdsim/world_source.h"
 
 namespace crowdsim {
 
@@ -38,9 +39,19 @@ const char* EpisodeStatusName(EpisodeStatus s);
 inline constexpr double kMaxSpeedFactor = 10.0;
 
 /// Throws std::invalid_argument when a scenario cannot make a meaningful episode: the robot's
-/// start or goal outside the map or inside an obstacle, or the start within goal_radius of
-/// the goal (the world plugin or its file is at fault; the run stops and names the episode).
+/// start or goal outside the map or inside an obstacle, the robot or a human starting where
+/// its disc overlaps an obstacle (by more than kStartOverlapTolerance), or the start within
+/// goal_radius of the goal (the world plugin or its file is at fault; the run stops and names
+/// the episode).
 void CheckScenario(const Scenario& scenario, const SimConfig& sim);
+
+/// How far a start disc may reach into an obstacle before CheckScenario refuses it (m): the
+/// floor plans' free points keep their clearance to within a few tenths of a millimetre.
+inline constexpr double kStartOverlapTolerance = 1e-3;
+
+/// Throws std::invalid_argument when a world made another number of humans than requested
+/// (a row's humans.count would be recorded for episodes that had fewer).
+void CheckHumanCount(const ScenarioRequest& request, const Scenario& scenario);
 
 /// A sensor configured on the robot.
 struct MountedSensor {
