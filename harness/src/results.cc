@@ -61,7 +61,9 @@ std::string SensorsLabel(const TableRow& row) {
   if (!row.spec) return "";
   std::string s;
   for (size_t i = 0; i < row.spec->sensors.size(); ++i)
-    s += (i ? "+" : "") + row.spec->sensors[i].plugin;
+    s += (i ? "+" : "") + (row.spec->sensors[i].loaded
+                               ? row.spec->sensors[i].loaded->descriptor->name
+                               : row.spec->sensors[i].plugin);
   return s.empty() ? "-" : s;
 }
 

@@ -137,13 +137,33 @@ std::string Reader::Name(const YAML::Node& root, const std::string& folder) {
 const LoadedPlugin* Reader::Plugin(const YAML::Node& n, const std::string& path, PluginKind kind) {
   auto name = String(n, path);
   if (!name) return nullptr;
+  std::string name_or_path = *name;
+  // A relative .so path that is not there from the working folder is the suite folder's, as
+  // for the files parameters name (Params::ResolvePath).
+  const std::filesystem::path given(*name);
+  std::error_code ec;
+  if ((name->find('/') != std::string::npos || name->ends_with(".so")) && given.is_relative() &&
+      !std::filesystem::exists(given, ec)) {
+    const std::filesystem::path beside = std::filesystem::path(file_).parent_path() / given;
+    if (std::filesystem::exists(beside, ec)) name_or_path = beside.string();
+  }
   try {
-    return &registry_.Load(*name, kind);
+    return &registry_.Load(name_or_path, kind);
   } catch (const PluginError& e) {
     std::string msg = e.what();
     if (msg.starts_with("no plugin named")) {
       msg = "unknown " + std::string(PluginKindName(kind)) + " plugin '" + *name +
             "' (valid: " + Join(Available(kind)) + "; or the path of a plugin .so file)";
+      // A file that calls itself by this name but is named otherwise is not found by it.
+      for (const std::string& problem : found_.problems) {
+        if (problem.find("its descriptor calls it '" + *name + "'") != std::string::npos) {
+          msg += "; " + problem;
+        }
+      }
+    } else if (msg.find("' does not exist. Give the path") != std::string::npos &&
+               given.is_relative()) {
+      msg += " (looked from the working folder and from the suite's folder, " +
+             std::filesystem::path(file_).parent_path().string() + ")";
     }
     Error(n, path, msg);
     return nullptr;

@@ -156,7 +156,14 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
   *resolved += "[" + std::to_string(*found) + "]";
   const bool last_selector = k == s.selectors.size();
   if (last_selector && i + 1 == segments.size()) return WithItem(node, *found, value);
-  const YAML::Node item = node[*found];
+  YAML::Node item = node[*found];
+  if (last_selector && item.IsScalar()) {
+    // A list item given by its name alone (a sensor `person`) takes keys in its map form,
+    // {type: person, KEY: VALUE}, as the suite may write it.
+    YAML::Node as_map(YAML::NodeType::Map);
+    as_map.force_insert("type", item);
+    item.reset(as_map);  // rebinds this handle; `=` would overwrite the shared node itself
+  }
   const YAML::Node changed = last_selector
                                  ? SetFrom(item, segments, i + 1, 0, value, resolved, problem)
                                  : SetFrom(item, segments, i, k + 1, value, resolved, problem);

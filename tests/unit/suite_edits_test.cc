@@ -110,6 +110,28 @@ TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
   EXPECT_EQ(same.suite->ConfigHash(), s.ConfigHash());
 }
 
+// A sensor listed by its name alone takes --set keys as its map form {type: NAME, KEY: VALUE}
+// ("'robot.sensors[0]' is not a map" before), the same configuration as writing that form.
+TEST_F(SuiteEdits, SetReachesASensorListedByName) {
+  const std::string suite = R"(name: t
+episodes: 3
+world: {source: random_rect, obstacles: 1, split: test}
+humans: {count: 2, policy: linear}
+robot:
+  sensors: [lidar2d, person]
+rows:
+  - {label: a, policy: linear}
+)";
+  const auto r = Load(suite, {"robot.sensors[lidar2d].beams=9"});
+  ASSERT_TRUE(r.suite) << All(r);
+  EXPECT_EQ(r.suite->rows[0].sensors[0].params.GetInt("beams"), 9);
+  std::string written = suite;
+  written.replace(written.find("[lidar2d, person]"), 17, "[{type: lidar2d, beams: 9}, person]");
+  const auto same = Load(written);
+  ASSERT_TRUE(same.suite) << All(same);
+  EXPECT_EQ(same.suite->ConfigHash(), r.suite->ConfigHash());
+}
+
 // A parameter marked hashed_at_default = false (value_rl's route_prior, added after the tables
 // were committed) leaves the configuration as it was at its default, and changes it otherwise.
 TEST_F(SuiteEdits, AParameterAddedLaterLeavesTheHashAtItsDefault) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "crowdsim/bench/results.h"
 #include "crowdsim/bench/suite.h"
 #include "temp_dir.h"
 #include "test_paths.h"
@@ -203,6 +204,43 @@ TEST_F(SuiteValidation, ConfigHashCoversTheBytesOfAUsersPluginFile) {
   ASSERT_TRUE(own_row.suite) << All(own_row);
   EXPECT_EQ(own_row.suite->rows[1].canonical.find("plugin:"), std::string::npos);
   EXPECT_NE(own_row.suite->rows[1].ConfigHash(), v1);
+}
+
+TEST_F(SuiteValidation, ARelativePluginPathIsTheSuitesFolderWhenNotTheWorkingFolders) {
+  // As for the files parameters name: a suite and its plugins move together.
+  namespace fs = std::filesystem;
+  fs::create_directories(dir_.path() / "mine");
+  fs::copy_file(testing::PluginDir() / "crowdsim_person.so",
+                dir_.path() / "mine" / "crowdsim_person.so");
+  std::string yaml = kGood;
+  yaml.replace(yaml.find("sensors: [person,"), 17, "sensors: [mine/crowdsim_person.so,");
+  ASSERT_FALSE(fs::exists("mine/crowdsim_person.so"));  // not from the working folder
+  auto r = Load(yaml);
+  ASSERT_TRUE(r.suite) << All(r);
+  EXPECT_EQ(fs::weakly_canonical(r.suite->rows[0].sensors[0].loaded->path),
+            fs::weakly_canonical(dir_.path() / "mine" / "crowdsim_person.so"));
+  // The table names the sensor by its plugin name, not by the path it was given as.
+  std::vector<TableRow> rows(1);
+  rows[0].spec = &r.suite->rows[0];
+  EXPECT_NE(FormatTableMarkdown(*r.suite, rows).find("| person+lidar2d |"), std::string::npos)
+      << FormatTableMarkdown(*r.suite, rows);
+  yaml.replace(yaml.find("mine/crowdsim_person.so"), 23, "gone/crowdsim_person.so");
+  auto missing = Load(yaml);
+  EXPECT_NE(Find(missing, "looked from the working folder and from the suite's folder"), "")
+      << All(missing);
+}
+
+TEST_F(SuiteValidation, AnUnknownPluginNamesTheFileThatCallsItselfSo) {
+  // crowdsim_walker.so whose descriptor says 'linear': `policy: linear` finds no
+  // crowdsim_linear.so, and the message points at the misnamed file.
+  namespace fs = std::filesystem;
+  fs::create_directories(dir_.path() / "plugins");
+  fs::copy_file(testing::PluginDir() / "crowdsim_linear.so",
+                dir_.path() / "plugins" / "crowdsim_walker.so");
+  PluginRegistry only_walker({dir_.path() / "plugins"});
+  const auto r = LoadSuite(dir_.Write("walker.yaml", kGood), only_walker);
+  EXPECT_NE(Find(r, "unknown policy plugin 'linear'"), "") << All(r);
+  EXPECT_NE(Find(r, "is named 'walker' but its descriptor calls it 'linear'"), "") << All(r);
 }
 
 TEST_F(SuiteValidation, ReferencesAndSummariesLoadWithoutChangingTheConfigHash) {

@@ -1,5 +1,6 @@
 #include "floorplan_command.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -35,6 +36,7 @@ const char kFloorplanUsage[] =
 namespace {
 
 using cli::Args;
+using cli::CreateFolderOf;
 using cli::UsageError;
 
 constexpr std::int64_t kMaxSeed = 9'000'000'000'000'000;
@@ -80,16 +82,37 @@ int Import(const std::vector<std::string>& args) {
   }
   if (auto kind = a.Get("--kind")) o.kind = ParseKind(*kind);
   // Counts are bounded: each one sizes work and memory (a typo of 10^8 pairs ran for hours).
-  o.max_rectangles = static_cast<int>(a.GetInt("--max-rectangles", o.max_rectangles, 0, 10'000));
+  o.max_rectangles = static_cast<int>(a.GetInt("--max-rectangles", o.max_rectangles, 1, 10'000));
   o.seed = Seed(a, o.seed);
-  o.test_pairs = static_cast<int>(a.GetInt("--test-pairs", o.test_pairs, 0, 100'000));
+  o.test_pairs = static_cast<int>(a.GetInt("--test-pairs", o.test_pairs, 1, 100'000));
+  // 0 training pairs: a world for tests only (a training on it is refused, naming this option).
   o.train_pairs = static_cast<int>(a.GetInt("--train-pairs", o.train_pairs, 0, 100'000));
-  o.free_points = static_cast<int>(a.GetInt("--free-points", o.free_points, 0, 1'000'000));
+  o.free_points = static_cast<int>(a.GetInt("--free-points", o.free_points, 1, 1'000'000));
   o.min_pair_distance = a.GetNumber("--min-distance", o.min_pair_distance);
+  if (!(o.min_pair_distance > 0.0)) {
+    throw UsageError(
+        "--min-distance must be a positive distance in metres (the least start-goal "
+        "distance of a robot trip)");
+  }
   o.agent_radius = a.GetNumber("--agent-radius", o.agent_radius);
+  if (!(o.agent_radius > 0.0)) {
+    throw UsageError("--agent-radius must be a positive radius in metres");
+  }
+  // Both outputs are checked before either is written: an error leaves nothing behind.
+  const auto mask_png = a.Get("--mask-png");
+  for (const std::string* path : {&*out, mask_png ? &*mask_png : nullptr}) {
+    if (path == nullptr) continue;
+    std::error_code ec;
+    if (std::filesystem::is_directory(*path, ec)) {
+      throw UsageError("'" + *path + "' is a folder; give the file to write (e.g. " +
+                       (std::filesystem::path(*path) / "plan.yaml").string() + ")");
+    }
+  }
   const ImportResult r = ImportFloorplan(a.positional[0], o);
+  if (mask_png) CreateFolderOf("--mask-png", *mask_png);
+  CreateFolderOf("--out", *out);
+  if (mask_png) WritePng(r.mask, *mask_png);
   WriteWorldFile(r.world, *out);
-  if (auto mask_png = a.Get("--mask-png")) WritePng(r.mask, *mask_png);
   PrintReport(r, *out);
   return 0;
 }
@@ -107,6 +130,13 @@ int Preview(const std::vector<std::string>& args) {
                      "`crowdsim-bench render`)");
   }
   const int pairs = static_cast<int>(a.GetInt("--pairs", 40, 0, kMaxInt));
+  std::string given_ext = std::filesystem::path(a.positional[0]).extension().string();
+  for (char& c : given_ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (given_ext == ".png" || given_ext == ".jpg" || given_ext == ".jpeg" || given_ext == ".pgm") {
+    throw UsageError("'" + a.positional[0] +
+                     "' is an image: preview draws the world file that `floorplan import` "
+                     "wrote (WORLD.yaml), over its source image when given --image");
+  }
   const WorldFile world = ReadWorldFile(a.positional[0]);
   ImportResult source;
   PreviewMask mask;
@@ -137,6 +167,7 @@ int Preview(const std::vector<std::string>& args) {
     }
     mask = PreviewMask{&source.mask, source.frame};
   }
+  CreateFolderOf("--out", out.string());
   std::ofstream f(out, std::ios::binary);
   f << RenderPreviewSvg(world, mask, pairs);
   if (!f) throw FloorplanError(out.string() + ": cannot write the preview");

@@ -77,7 +77,7 @@ double ResolveResolution(const std::filesystem::path& image, const ImportOptions
   double res = o.source_resolution;
   if (res > 0.0) {
     if (named_decimetre && std::abs(res - 0.1) > 1e-9) {
-      Fail(image, "the file name says 0.1 m per pixel but --resolution is " + std::to_string(res) +
+      Fail(image, "the file name says 0.1 m per pixel but --resolution is " + Num(res) +
                       " (drop --resolution, or rename the file)");
     }
   } else if ((res = MetadataResolution(image)) > 0.0) {

@@ -32,7 +32,7 @@ void CheckSize(const std::filesystem::path& path, std::uint64_t width, std::uint
 std::vector<unsigned char> ReadBytes(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    Fail(path, "no such image file (check the path; images are read from ../shared/floorplans)");
+    Fail(path, "no such image file (check the path)");
   }
   std::ifstream f(path, std::ios::binary);
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(f)),

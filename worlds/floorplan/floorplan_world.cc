@@ -61,7 +61,11 @@ FloorplanWorld::FloorplanWorld(const Params& params)
   pairs_ = split_ == "train" ? world.train_pairs : world.test_pairs;
   if (pairs_.empty()) {
     throw std::invalid_argument(path.string() + ": no robot_pairs." + split_ +
-                                " (re-import the plan, or use the other split)");
+                                (split_ == "train"
+                                     ? " (the plan was imported for tests only: re-import it "
+                                       "with `crowdsim-bench floorplan import ... --train-pairs "
+                                       "500`)"
+                                     : " (re-import the plan with --test-pairs 500)"));
   }
   if (world.free_points.empty()) {
     throw std::invalid_argument(path.string() +

@@ -44,5 +44,34 @@ TEST(FloorplanCliTest, WritesNothingOnError) {
   EXPECT_FALSE(std::filesystem::exists(png));
 }
 
+TEST(FloorplanCliTest, OptionsOutOfRangeAndOutputsAreUsageErrorsThatWriteNothing) {
+  TempDir dir;
+  const std::string plan = testing::WriteRoomPlan(dir.path()).string() + " --resolution 0.1";
+  const auto out = dir.path() / "w.yaml";
+  for (const char* option : {"--max-rectangles 0", "--test-pairs 0", "--free-points 0",
+                             "--min-distance -1", "--agent-radius 0"}) {
+    EXPECT_EQ(Floorplan("import " + plan + " " + option + " --out " + out.string()), 2) << option;
+  }
+  // --out naming a folder: a usage error, no stray temporary file beside it.
+  std::filesystem::create_directories(dir.path() / "folder");
+  EXPECT_EQ(Floorplan("import " + plan + " --out " + (dir.path() / "folder").string()), 2);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "folder.tmp"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+  // Both outputs' folders are made (the mask's was not, and its failure came after the world
+  // had been written).
+  const auto nested = dir.path() / "a" / "w.yaml";
+  const auto mask = dir.path() / "b" / "m.png";
+  EXPECT_EQ(Floorplan("import " + plan + " --test-pairs 5 --train-pairs 5 --out " +
+                      nested.string() + " --mask-png " + mask.string()),
+            0);
+  EXPECT_TRUE(std::filesystem::exists(nested));
+  EXPECT_TRUE(std::filesystem::exists(mask));
+  // preview: an image where the world file belongs is a usage error; its --out folder is made.
+  EXPECT_EQ(Floorplan("preview " + mask.string() + " --out " + (dir.path() / "p.svg").string()), 2);
+  const auto svg = dir.path() / "c" / "p.svg";
+  EXPECT_EQ(Floorplan("preview " + nested.string() + " --out " + svg.string()), 0);
+  EXPECT_TRUE(std::filesystem::exists(svg));
+}
+
 }  // namespace
 }  // namespace crowdsim::floorplan
