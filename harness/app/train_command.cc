@@ -1,5 +1,7 @@
 // train: imitation + reinforcement learning of a learned policy from a training file;
 // train-all: a campaign of them, one training per MPI rank (or one after another).
+#include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +17,18 @@
 
 namespace crowdsim::cli {
 namespace {
+
+// A training's seed: the range of the training file's `seed:` key.
+constexpr const char* kSeedRange = "a whole number from 0 to 9223372036854775807";
+std::optional<std::uint64_t> ParseSeed(const std::string& text) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) {
+    return std::nullopt;
+  }
+  errno = 0;
+  const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
+  if (errno == ERANGE || v > static_cast<unsigned long long>(INT64_MAX)) return std::nullopt;
+  return static_cast<std::uint64_t>(v);
+}
 
 /// One training as `train` runs it.
 struct TrainJob {
@@ -41,13 +55,12 @@ int Train(const TrainJob& job) {
   training::TrainOptions options;
   if (job.seed) {
     const std::string& seed = *job.seed;
-    char* end = nullptr;
-    const unsigned long long v = std::strtoull(seed.c_str(), &end, 10);
-    if (seed.empty() || *end != '\0' || seed[0] == '-') {
-      throw UsageError("the seed of '" + job.file + "' must be a non-negative integer, got '" +
-                       seed + "'");
+    const auto v = ParseSeed(seed);
+    if (!v) {
+      throw UsageError("the seed of '" + job.file + "' must be " + kSeedRange + ", got '" + seed +
+                       "'");
     }
-    training::OverrideSeed(*loaded.spec, v);
+    training::OverrideSeed(*loaded.spec, *v);
     options.out_dir =
         std::filesystem::path("results") / "train" / (loaded.spec->name + "_seed" + seed);
   }
@@ -122,8 +135,8 @@ int TrainAllCommand(const std::vector<std::string>& args) {
     if (at != std::string::npos) {
       job.seed = entry.substr(at + 1);
       // Checked before any rank starts, so a typo stops the whole campaign at once.
-      if (job.seed->empty() || job.seed->find_first_not_of("0123456789") != std::string::npos) {
-        throw UsageError("'" + entry + "': the seed after '@' must be a non-negative integer");
+      if (!ParseSeed(*job.seed)) {
+        throw UsageError("'" + entry + "': the seed after '@' must be " + kSeedRange);
       }
     }
     job.sets = a.All("--set");

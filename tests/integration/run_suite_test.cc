@@ -670,6 +670,14 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
       << ttext;
   EXPECT_FALSE(fs::exists(dir_.path() / "no-training"));  // nothing made by a refusal
 
+  // A seed beyond the training file's own range is refused, not clamped.
+  auto [src2, stext2] =
+      Shell(exe + " train " + train_file + " --quiet --seed 99999999999999999999 --out " +
+            (dir_.path() / "no-seed").string());
+  EXPECT_EQ(src2, 2) << stext2;
+  EXPECT_NE(stext2.find("must be a whole number from 0 to 9223372036854775807"), std::string::npos)
+      << stext2;
+
   // validate builds a training as train would: a policy that cannot learn is found there.
   const auto untrainable =
       dir_.Write("untrainable.yaml",

@@ -144,6 +144,13 @@ void ReadTraining(Reader& r, const YAML::Node& n, const suite_internal::SchemaDe
                {{"uniform", ExplorationRule::kUniform},
                 {"collision_free", ExplorationRule::kCollisionFree}},
                &t.exploration);
+    if (t.validation_interval > 0 && t.validation_episodes == 0) {
+      // Validations of no episode: every one "success 0 (best so far)".
+      r.Error(Present(n["validation_episodes"]) ? n["validation_episodes"] : n,
+              "training.validation_episodes",
+              "0 episodes validate nothing every " + std::to_string(t.validation_interval) +
+                  " RL episodes: give at least 1, or validation_interval: 0 for no validation");
+    }
   }
   const bool named = map && Present(n["il_policy"]);
   const YAML::Node teacher = named ? n["il_policy"] : YAML::Node(schema.il_policy);

@@ -319,6 +319,15 @@ void Trainer::Imitation() {
   if (memory_.size() > 0 && state_.counter < t_.il_epochs) {
     progress_.Note("IL: " + std::to_string(t_.il_epochs - state_.counter) + " epochs over " +
                    std::to_string(memory_.size()) + " states");
+  } else if (memory_.size() == 0 && t_.il_epochs > 0 && state_.counter == 0) {
+    // Said, not silently skipped: the RL phase then starts from random weights.
+    progress_.Note("warning: no imitation: " +
+                   (t_.il_episodes == 0
+                        ? std::string("training.il_episodes is 0")
+                        : "none of the teacher's " + std::to_string(t_.il_episodes) +
+                              " demonstrations ended in a way that is stored (il_policy '" +
+                              spec_.teacher.plugin + "': see training_episodes.csv)") +
+                   "; RL starts from the initial weights");
   }
   std::vector<std::size_t> order(memory_.size());
   while (memory_.size() > 0 && state_.counter < t_.il_epochs && g_signal == 0) {
@@ -602,8 +611,10 @@ void Trainer::WriteSummaryJson() const {
                   {"checkpoints", t.checkpoints}};
   j["best_validation_success"] = std::max(0.0, state_.best_success);
   j["best_validation_episode"] = state_.best_episode;
-  j["best_weights"] = "best.pt: the weights after " + std::to_string(state_.best_episode) +
-                      " RL episodes (-1: no validation ran)";
+  j["best_weights"] =
+      state_.best_episode >= 0
+          ? "best.pt: the weights after " + std::to_string(state_.best_episode) + " RL episodes"
+          : std::string("none: no validation ran (no best.pt)");
   WriteFileAtomically(Out("summary.json"), FormatJson(j));
 }
 

@@ -77,7 +77,7 @@ void TrainingProgress::Print() {
 }
 
 void TrainingProgress::Note(const std::string& message) {
-  if (!enabled_) return;
+  if (!enabled_ && !message.starts_with("warning: ")) return;  // warnings even when quiet
   Finish();
   std::fprintf(stderr, "[%s] %s\n", name_.c_str(), message.c_str());
   std::fflush(stderr);

@@ -149,6 +149,21 @@ TEST(TrainSpecTest, ErrorsAreLocated) {
   EXPECT_EQ(r.errors.size(), 4u) << all;
 }
 
+TEST(TrainSpecTest, ValidationsOfNoEpisodeAreRefused) {
+  // Every validation of 0 episodes read "success 0 (best so far)"; interval 0 is "none".
+  TempDir dir;
+  TrainFile f;
+  f.training = "{il_episodes: 10, validation_interval: 5, validation_episodes: 0}";
+  const auto r = Load(WriteTrainFile(dir, f));
+  ASSERT_FALSE(r.spec);
+  EXPECT_NE(r.errors[0].Format().find("training.validation_episodes: 0 episodes validate nothing "
+                                      "every 5 RL episodes"),
+            std::string::npos)
+      << r.errors[0].Format();
+  f.training = "{il_episodes: 10, validation_interval: 0, validation_episodes: 0}";
+  EXPECT_TRUE(Load(WriteTrainFile(dir, f, "none.yaml")).spec);
+}
+
 TEST(TrainSpecTest, UnknownTopKeyAndPolicyParameter) {
   TempDir dir;
   const auto file =
