@@ -678,6 +678,15 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_NE(stext2.find("must be a whole number from 0 to 9223372036854775807"), std::string::npos)
       << stext2;
 
+  // train-all reads every file first: a bad second file stops it before the first trains.
+  const auto typo = dir_.Write("typo.yaml", "name: t\npolicy: cadrl\ntrainingg: {}\n");
+  auto [arc, atext] =
+      Shell("timeout 120 " + exe + " train-all " + train_file + " " + typo.string() + " --quiet");
+  EXPECT_EQ(arc, 2) << atext;
+  EXPECT_NE(atext.find("1 of 2 training file(s) have errors; nothing was trained"),
+            std::string::npos)
+      << atext;
+
   // validate builds a training as train would: a policy that cannot learn is found there.
   const auto untrainable =
       dir_.Write("untrainable.yaml",

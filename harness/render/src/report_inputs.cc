@@ -101,6 +101,15 @@ ReportInputs ReadReportInputs(const fs::path& dir, PluginRegistry& registry,
   in.manifest = dir / "manifest.json";
   in.suite_file = FindSuiteFile(dir, in.manifest, options);
   in.suite = LoadRecordedSuite(in.suite_file, in.manifest, registry);
+  // Another suite's file would title the page and label its figures with rows this run does
+  // not have (each "not in the suite file any more").
+  const std::string ran = ReadManifestField(in.manifest, "suite");
+  if (!ran.empty() && ran != in.suite.name) {
+    throw ReportError(in.suite_file.string() + " is the suite '" + in.suite.name + "', but " +
+                      dir.string() + " holds a run of the suite '" + ran +
+                      "' (manifest.json): give that suite's file with --suite, or leave --suite "
+                      "out (the manifest names it)");
+  }
   ReadTable(dir, &in.table, &in.columns);
   in.episodes = ReadEpisodes(dir);
   return in;

@@ -646,9 +646,18 @@ TrainSummary Trainer::Run() {
     progress_.Note("resumed from " + (summary_.out_dir / "checkpoint").string());
   } else {
     if (fs::exists(Out("checkpoint")) || fs::exists(Out("weights.pt"))) {
-      throw TrainRefused("'" + summary_.out_dir.string() +
-                         "' already holds a training; pass --resume to "
-                         "continue it, or --out to train into another folder");
+      // --resume continues only this configuration: say so when the folder holds another.
+      std::ostringstream started;
+      started << std::ifstream(Out("training.yaml")).rdbuf();
+      const std::string differs = started.str().empty() ? ""
+                                                        : suite_internal::DescribeConfigDifference(
+                                                              started.str(), spec_.canonical);
+      throw TrainRefused(
+          "'" + summary_.out_dir.string() + "' already holds " +
+          (differs.empty() ? "a training of this configuration; pass --resume to continue it, or "
+                             "--out to train into another folder"
+                           : "another training (what differs: " + differs +
+                                 "); train into another folder with --out"));
     }
     state_.config_hash = spec_.ConfigHash();
     learner_->InitWeights(spec_.seed);
@@ -672,8 +681,7 @@ TrainSummary Trainer::Run() {
   WriteSummaryJson();
   if (g_signal != 0) {
     throw TrainingInterrupted("interrupted by signal " + std::to_string(g_signal) +
-                              "; checkpoint written to " + Out("checkpoint").string() +
-                              "; rerun with --resume to continue");
+                              "; checkpoint written to " + Out("checkpoint").string());
   }
   return summary_;
 }

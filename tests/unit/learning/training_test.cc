@@ -123,6 +123,16 @@ TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
   f.training = kTiny;
   Train(WriteTrainFile(dir, f), dir.path() / "out", false, 4);
   f.humans = "{count: 2}";
+  // Without --resume the refusal says the folder holds another training (it said "pass
+  // --resume", which then failed).
+  try {
+    Train(WriteTrainFile(dir, f, "changed.yaml"), dir.path() / "out");
+    ADD_FAILURE() << "trained over another training's folder";
+  } catch (const training::TrainRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("already holds another training (what differs: humans:"),
+              std::string::npos)
+        << e.what();
+  }
   try {
     Train(WriteTrainFile(dir, f, "changed.yaml"), dir.path() / "out", true);
     ADD_FAILURE() << "resumed a checkpoint of another configuration";

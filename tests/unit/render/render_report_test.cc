@@ -158,6 +158,22 @@ TEST_F(ReportTest, MissingSuiteFileSaysHowToFix) {
   }
 }
 
+TEST_F(ReportTest, AnotherSuitesFileIsRefused) {
+  // It titled the page with the other suite and drew every row as "not in the suite file".
+  PluginRegistry registry;
+  ReportOptions opt;
+  opt.suite_file = crowdsim::testing::SourceDir() / "suites/baselines.yaml";
+  try {
+    BuildReport(Results(), registry, opt);
+    FAIL() << "expected ReportError";
+  } catch (const ReportError& e) {
+    EXPECT_NE(std::string(e.what()).find("is the suite 'baselines', but"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("holds a run of the suite 'quick'"), std::string::npos)
+        << e.what();
+  }
+}
+
 // Opens the report offline in headless Chromium and takes a screenshot.
 TEST_F(ReportTest, OpensInHeadlessChromium) {
   const fs::path chromium = "/usr/bin/chromium";
