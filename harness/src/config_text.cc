@@ -200,9 +200,52 @@ std::string AfterKey(const std::string& line, const std::string& key) {
   return line.size() > key.size() ? line.substr(key.size() + 1) : "";
 }
 
+// The values of a line written without names, by the names `fields` gives them in order;
+// "k=v" values by their own name.
+std::map<std::string, std::string> NamedValues(const std::string& rest,
+                                               const std::vector<std::string>& fields) {
+  std::map<std::string, std::string> values;
+  std::istringstream in(rest);
+  std::size_t i = 0;
+  for (std::string value; std::getline(in, value, ',');) {
+    const std::size_t eq = value.find('=');
+    if (eq != std::string::npos) {
+      values[value.substr(0, eq)] = value.substr(eq + 1);
+    } else {
+      values[i < fields.size() ? fields[i] : "value " + std::to_string(i + 1)] = value;
+      ++i;
+    }
+  }
+  return values;
+}
+
+// How a positional line changed: each named value that differs.
+std::string PositionalChange(const std::string& key, const std::string& rest_a,
+                             const std::string& rest_b, const std::vector<std::string>& fields) {
+  const auto a = NamedValues(rest_a, fields), b = NamedValues(rest_b, fields);
+  std::string text;
+  auto add = [&](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
+  for (const auto& [name, value] : b) {
+    const auto it = a.find(name);
+    if (it == a.end()) {
+      add(name + "=" + value + " (new)");
+    } else if (it->second != value) {
+      add(name + " " + it->second + " -> " + value);
+    }
+  }
+  for (const auto& [name, value] : a) {
+    if (!b.count(name)) add(name + " (gone)");
+  }
+  return key + ": " + (text.empty() ? AroundDifference(rest_a, rest_b) : text);
+}
+
 // How one line changed: per plugin use, the items that differ; else both texts.
-std::string LineChange(const std::string& key, const std::string& before, const std::string& now) {
+std::string LineChange(const std::string& key, const std::string& before, const std::string& now,
+                       const std::map<std::string, std::vector<std::string>>& positional) {
   const std::string rest_a = AfterKey(before, key), rest_b = AfterKey(now, key);
+  if (const auto fields = positional.find(key); fields != positional.end()) {
+    return PositionalChange(key, rest_a, rest_b, fields->second);
+  }
   const std::vector<Segment> a = Segments(rest_a);
   const std::vector<Segment> b = Segments(rest_b);
   if (a.size() != b.size()) {  // a plugin use added or removed (a sensor, say)
@@ -239,7 +282,9 @@ std::vector<std::string> ConfigLines(const std::string& text) {
 
 }  // namespace
 
-std::string DescribeConfigDifference(const std::string& before, const std::string& now) {
+std::string DescribeConfigDifference(
+    const std::string& before, const std::string& now,
+    const std::map<std::string, std::vector<std::string>>& positional) {
   const std::vector<std::string> a = ConfigLines(before), b = ConfigLines(now);
   std::map<std::string, std::string> old_lines;
   for (const std::string& line : a) old_lines[LineKey(line)] = line;
@@ -253,7 +298,7 @@ std::string DescribeConfigDifference(const std::string& before, const std::strin
     if (it == old_lines.end()) {
       add(key + ": new");
     } else if (it->second != line) {
-      add(LineChange(key, it->second, line));
+      add(LineChange(key, it->second, line, positional));
     }
   }
   for (const auto& [key, line] : old_lines) {

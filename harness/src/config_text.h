@@ -3,6 +3,7 @@
 // their canonical text with HashConfigText, so one stored hash means one configuration.
 #pragma once
 
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ void CanonicalSim(const SimConfig& sim, std::ostream& os);
 /// What two canonical texts set differently, for an error message: per differing line its key
 /// and, for a plugin's parameters, each value that changed ("humans: count 5 -> 3; orca
 /// safety_space=0 -> 0.1"), else both lines. Empty when they are equal; comment lines ignored.
-std::string DescribeConfigDifference(const std::string& before, const std::string& now);
+/// `positional` names the comma-separated values of lines written without names (a training's
+/// "training:3000,50,0.01,..." line: "il_epochs 50 -> 40" instead of both lines' digits).
+std::string DescribeConfigDifference(
+    const std::string& before, const std::string& now,
+    const std::map<std::string, std::vector<std::string>>& positional = {});
 
 }  // namespace crowdsim::suite_internal

@@ -49,6 +49,20 @@ TEST(ConfigDifference, DataFilesAndRemovedUsesAndCommentsAndEqualTexts) {
             "policy: b=2 (new)");
 }
 
+TEST(ConfigDifference, APositionalLineIsNamedValueByValue) {
+  // A training's "training:" line: the values that changed, by name, not both lines' digits.
+  const std::map<std::string, std::vector<std::string>> names = {
+      {"training", {"il_episodes", "il_epochs", "rl_episodes"}}};
+  EXPECT_EQ(DescribeConfigDifference("training:3000,50,10000,store_timeouts=off\n",
+                                     "training:3000,40,10000,store_timeouts=terminal\n", names),
+            "training: il_epochs 50 -> 40, store_timeouts off -> terminal");
+  EXPECT_EQ(DescribeConfigDifference("training:1,2,3\n", "training:1,2,3,exploration=x\n", names),
+            "training: exploration=x (new)");
+  EXPECT_EQ(DescribeConfigDifference("training:1,2\n", "training:1,2,3\n", names),
+            "training: rl_episodes=3 (new)");
+  EXPECT_NO_THROW(DescribeConfigDifference("training:1,2,3,4\n", "training:\n", names));
+}
+
 TEST(ConfigDifference, OddLinesOfAHandEditedFileDoNotThrow) {
   // A line that is its key alone against one with a separator; braces left open or reversed.
   const char* texts[] = {"ab", "ab:x", "ab={", "a;x", "a;x={", "k:{", "k:}{", "k:a{b=1", "", "\n"};

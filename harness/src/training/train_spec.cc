@@ -186,6 +186,7 @@ std::string Canonical(const TrainSpec& s) {
   os << "\nteacher:";
   suite_internal::Canonical(s.teacher, os);
   const TrainingSettings& t = s.training;
+  // In the order of kTrainingLineFields (train_spec.h), which names them in messages.
   os << "\ntraining:" << t.il_episodes << "," << t.il_epochs << "," << t.il_learning_rate << ","
      << t.rl_episodes << "," << t.rl_learning_rate << "," << t.momentum << "," << t.epsilon_start
      << "," << t.epsilon_end << "," << t.epsilon_decay_episodes << "," << t.target_update_interval

@@ -515,12 +515,13 @@ void Trainer::AcceptNewRlLength(const fs::path& dir) {
     // training.yaml in the folder holds the canonical text the checkpoint was made with.
     std::ostringstream started;
     started << std::ifstream(Out("training.yaml")).rdbuf();
-    const std::string differs =
-        suite_internal::DescribeConfigDifference(started.str(), spec_.canonical);
+    const std::string differs = suite_internal::DescribeConfigDifference(
+        started.str(), spec_.canonical, {{"training", kTrainingLineFields}});
     throw TrainRefused("--resume: the checkpoint in '" + dir.string() +
                        "' belongs to another "
                        "configuration (config hash " +
-                       state_.config_hash + ", the training file with its --set options now " +
+                       state_.config_hash +
+                       ", the training file with its --set and --seed options now " +
                        spec_.ConfigHash() + (differs.empty() ? "" : "; what differs: " + differs) +
                        "); resume with the file and --set options it was started with, or train "
                        "into another --out (only training.rl_episodes may change between runs)");
@@ -651,7 +652,8 @@ TrainSummary Trainer::Run() {
       started << std::ifstream(Out("training.yaml")).rdbuf();
       const std::string differs = started.str().empty() ? ""
                                                         : suite_internal::DescribeConfigDifference(
-                                                              started.str(), spec_.canonical);
+                                                              started.str(), spec_.canonical,
+                                                              {{"training", kTrainingLineFields}});
       throw TrainRefused(
           "'" + summary_.out_dir.string() + "' already holds " +
           (differs.empty() ? "a training of this configuration; pass --resume to continue it, or "

@@ -143,6 +143,21 @@ TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
         << e.what();
     EXPECT_NE(std::string(e.what()).find(" -> 2-2,"), std::string::npos) << e.what();
   }
+  // The training settings by name (the canonical line writes them without names), the first
+  // and the last of them.
+  f.humans = "{count: 1}";
+  f.training = std::string(kTiny).replace(std::string(kTiny).find("validation_episodes: 3"), 22,
+                                          "validation_episodes: 4");
+  f.training.replace(f.training.find("il_episodes: 10"), 15, "il_episodes: 11");
+  try {
+    Train(WriteTrainFile(dir, f, "settings.yaml"), dir.path() / "out", true);
+    ADD_FAILURE() << "resumed a checkpoint of other training settings";
+  } catch (const training::TrainRefused& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "what differs: training: il_episodes 10 -> 11, validation_episodes 3 -> 4"),
+              std::string::npos)
+        << e.what();
+  }
   EXPECT_THROW(Train(WriteTrainFile(dir, f, "fresh.yaml"), dir.path() / "none", true),
                training::TrainError);
 }

@@ -94,4 +94,23 @@ void OverrideSeed(TrainSpec& spec, std::uint64_t seed);
 /// than the RL phase), one sentence each.
 std::vector<std::string> TrainSpecWarnings(const TrainSpec& spec);
 
+/// The keys of the canonical text's "training:" line, whose values it writes without names
+/// in this order (kept so that the config hashes of committed models stay valid); messages
+/// about a changed configuration name them.
+inline const std::vector<std::string> kTrainingLineFields = {"il_episodes",
+                                                             "il_epochs",
+                                                             "il_learning_rate",
+                                                             "rl_episodes",
+                                                             "rl_learning_rate",
+                                                             "momentum",
+                                                             "epsilon_start",
+                                                             "epsilon_end",
+                                                             "epsilon_decay_episodes",
+                                                             "target_update_interval",
+                                                             "capacity",
+                                                             "batch_size",
+                                                             "train_batches",
+                                                             "validation_interval",
+                                                             "validation_episodes"};
+
 }  // namespace crowdsim::training
