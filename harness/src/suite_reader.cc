@@ -1,7 +1,9 @@
 #include "suite_reader.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -56,6 +58,23 @@ bool Reader::IsMap(const YAML::Node& n, const std::string& path, const char* wha
   return false;
 }
 
+namespace {
+
+// Whether a scalar is a number as written (all of it, in any notation strtod reads; an
+// overflow gives +-inf), with its value.
+bool WrittenAsNumber(const YAML::Node& n, double* value) {
+  if (!n.IsScalar() || n.Scalar().empty()) return false;
+  const std::string& text = n.Scalar();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || std::isnan(v)) return false;
+  *value = errno == ERANGE && std::abs(v) > 1.0 ? std::copysign(HUGE_VAL, v) : v;
+  return true;
+}
+
+}  // namespace
+
 std::optional<double> Reader::Number(const YAML::Node& n, const std::string& path, double lo,
                                      double hi, bool lo_open) {
   double v = 0;
@@ -63,8 +82,11 @@ std::optional<double> Reader::Number(const YAML::Node& n, const std::string& pat
     if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
     v = n.as<double>();
   } catch (const YAML::Exception&) {
-    Error(n, path, "must be a number, found " + Scalar(n));
-    return std::nullopt;
+    // A number too large for a double (1e400) is a number out of range, not "not a number".
+    if (!WrittenAsNumber(n, &v)) {
+      Error(n, path, "must be a number, found " + Scalar(n));
+      return std::nullopt;
+    }
   }
   if (!std::isfinite(v) || v < lo || v > hi || (lo_open && v == lo)) {
     std::ostringstream os;
@@ -83,8 +105,20 @@ std::optional<std::int64_t> Reader::Integer(const YAML::Node& n, const std::stri
     if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
     v = n.as<std::int64_t>();
   } catch (const YAML::Exception&) {
-    Error(n, path, "must be a whole number, found " + Scalar(n));
-    return std::nullopt;
+    // A whole number in another notation (1e3) is that number; one beyond the 64-bit range
+    // (1e30, 99999999999999999999) is out of range.
+    double d = 0;
+    if (!WrittenAsNumber(n, &d) || (std::isfinite(d) && d != std::floor(d))) {
+      Error(n, path, "must be a whole number, found " + Scalar(n));
+      return std::nullopt;
+    }
+    if (!std::isfinite(d) || std::abs(d) >= 9.2e18) {
+      Error(n, path,
+            "value " + n.Scalar() + " is out of range; valid: [" + std::to_string(lo) + ", " +
+                std::to_string(hi) + "]");
+      return std::nullopt;
+    }
+    v = static_cast<std::int64_t>(d);
   }
   if (v < lo || v > hi) {
     Error(n, path,

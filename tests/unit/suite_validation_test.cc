@@ -111,6 +111,29 @@ rows:
   EXPECT_NE(Find(r, "rows[2].sensors[0].beams: must be a whole number, found 'many'"), "") << all;
 }
 
+TEST_F(SuiteValidation, NumbersInAnyNotationAreTheirValue) {
+  // 1e3 is a whole number; 2.5 is not; 1e400 and 1e30 are numbers out of range ("must be a
+  // number" / "must be a whole number" before).
+  auto ok = Load(std::string(kGood).replace(std::string(kGood).find("beams: 9"), 8, "beams: 9e1"));
+  ASSERT_TRUE(ok.suite) << All(ok);
+  EXPECT_EQ(ok.suite->rows[0].sensors[1].params.GetInt("beams"), 90);
+  auto r = Load(R"(name: t
+episodes: 3
+world: {source: random_rect, obstacles: 1, split: test}
+rows:
+  - {policy: linear, sensors: [{type: lidar2d, beams: 2.5}]}
+  - {policy: linear, sensors: [{type: lidar2d, beams: 1e30}]}
+  - {policy: linear, params: {speed_factor: 1e400}}
+)");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "rows[0].sensors[0].beams: must be a whole number, found '2.5'"), "")
+      << All(r);
+  EXPECT_NE(Find(r, "rows[1].sensors[0].beams: value 1e30 is out of range; valid: ["), "")
+      << All(r);
+  EXPECT_NE(Find(r, "rows[2].params.speed_factor: value 1e400 is out of range; valid: [0, 2]"), "")
+      << All(r);
+}
+
 TEST_F(SuiteValidation, MissingPiecesAreNamed) {
   auto r = Load("episodes: 5\n");
   ASSERT_FALSE(r.suite);
