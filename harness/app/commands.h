@@ -1,10 +1,19 @@
 // The crowdsim-bench subcommands; each returns the process exit code.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
+
 namespace crowdsim::cli {
+
+/// Loads a suite with its --set overrides, or prints every error (and, for a training file,
+/// what to do with it) and returns nothing.
+std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,
+                                  const std::vector<std::string>& overrides);
 
 int RunCommand(const std::vector<std::string>& args);
 int MergeCommand(const std::vector<std::string>& args);

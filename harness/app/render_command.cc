@@ -81,12 +81,9 @@ int RenderCommand(const std::vector<std::string>& args) {
   if (a.Has("--sensors-at")) sensors_at = a.GetInt("--sensors-at", 0, 0, 1'000'000);
 
   PluginRegistry registry;
-  SuiteLoadResult loaded = LoadSuite(a.positional[0], registry, a.All("--set"));
-  if (!loaded.suite) {
-    for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
-    return 2;
-  }
-  const Suite& suite = *loaded.suite;
+  const std::optional<Suite> loaded = LoadOrReport(a.positional[0], registry, a.All("--set"));
+  if (!loaded) return 2;
+  const Suite& suite = *loaded;
   size_t row = 0, compare_row = 0;
   int episode = 0;
   try {
@@ -98,13 +95,24 @@ int RenderCommand(const std::vector<std::string>& args) {
   }
 
   render::ReplayedEpisode replay;
+  auto named = [&](size_t r, const PluginError& e) {
+    return PluginError("row '" + suite.rows[r].label + "' (rows[" + std::to_string(r) +
+                       "]): " + e.what());
+  };
   try {
     replay = render::ReplayForFigure(suite, row, episode, registry, sensors_at);
   } catch (const std::out_of_range& e) {
     throw UsageError(e.what());  // --sensors-at past the end: the message names the valid steps
+  } catch (const PluginError& e) {
+    throw named(row, e);  // a missing weights file: which row's
   }
   std::optional<render::ReplayedEpisode> compare;
-  if (a.Get("--compare")) compare = render::ReplayForFigure(suite, compare_row, episode, registry);
+  try {
+    if (a.Get("--compare"))
+      compare = render::ReplayForFigure(suite, compare_row, episode, registry);
+  } catch (const PluginError& e) {
+    throw named(compare_row, e);
+  }
   CreateFolderOf("--out", *out);  // every argument checked, the episodes replayed
   const render::EpisodeFigure figure =
       render::MakeFigure(suite, replay, compare ? &*compare : nullptr);

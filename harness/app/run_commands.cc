@@ -19,22 +19,9 @@
 #include "process_group.h"
 
 namespace crowdsim::cli {
-namespace {
-
-/// Loads a suite or prints every error; nullopt on errors.
-std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,
-                                  const std::vector<std::string>& overrides) {
-  SuiteLoadResult r = LoadSuite(file, registry, overrides);
-  if (!r.suite) {
-    for (const auto& e : r.errors) std::cerr << "error: " << e.Format() << "\n";
-    std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file
-              << "\n";
-  }
-  return std::move(r.suite);
-}
 
 /// A training file has a top-level `training` or `policy` key (a suite has `rows`).
-bool LooksLikeTrainingFile(const std::string& file) {
+static bool LooksLikeTrainingFile(const std::string& file) {
   std::ifstream f(file);
   std::string line;
   while (std::getline(f, line)) {
@@ -43,6 +30,23 @@ bool LooksLikeTrainingFile(const std::string& file) {
   }
   return false;
 }
+
+std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,
+                                  const std::vector<std::string>& overrides) {
+  SuiteLoadResult r = LoadSuite(file, registry, overrides);
+  if (!r.suite) {
+    for (const auto& e : r.errors) std::cerr << "error: " << e.Format() << "\n";
+    std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file
+              << "\n";
+    if (LooksLikeTrainingFile(file)) {
+      std::cerr << "(" << file << " is a training file: train it with `crowdsim-bench train "
+                << file << "`; run takes a suite, whose rows: list the policies to compare)\n";
+    }
+  }
+  return std::move(r.suite);
+}
+
+namespace {
 
 /// Ctrl-C during a run: write the finished episodes still in memory, say that a rerun resumes,
 /// then die of the signal as before (exit status 130 from the shell).

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -50,6 +51,14 @@ int Train(const TrainJob& job) {
     for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
     std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
               << " in " << job.file << "\n";
+    std::ifstream text(job.file);
+    for (std::string line; std::getline(text, line);) {
+      if (line.starts_with("rows:")) {
+        std::cerr << "(" << job.file << " is a suite: run it with `crowdsim-bench run " << job.file
+                  << "`; train takes a training file, see suites/train/)\n";
+        break;
+      }
+    }
     return 2;
   }
   training::TrainOptions options;

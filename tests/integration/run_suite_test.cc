@@ -696,6 +696,15 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   auto [nrc, ntext] = Shell(exe + " validate " + untrainable.string());
   EXPECT_EQ(nrc, 2) << ntext;
   EXPECT_NE(ntext.find("policy 'orca' cannot be trained"), std::string::npos) << ntext;
+  // A training file given to run, a suite given to train: the other command is named.
+  auto [wrc, wtext] = Shell(exe + " run " + untrainable.string() + " --quiet");
+  EXPECT_EQ(wrc, 2) << wtext;
+  EXPECT_NE(wtext.find("is a training file: train it with `crowdsim-bench train "),
+            std::string::npos)
+      << wtext;
+  auto [xrc, xtext] = Shell("timeout 120 " + exe + " train " + suite.string() + " --quiet");
+  EXPECT_EQ(xrc, 2) << xtext;
+  EXPECT_NE(xtext.find("is a suite: run it with `crowdsim-bench run "), std::string::npos) << xtext;
 
   // One kind of output per folder: a training does not write into a run's folder (`out`
   // holds the run above), nor a run into a training's (timeout: a failure must not train).

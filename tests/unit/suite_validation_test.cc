@@ -126,8 +126,7 @@ rows:
   - {policy: linear, params: {speed_factor: 1e400}}
 )");
   ASSERT_FALSE(r.suite);
-  EXPECT_NE(Find(r, "rows[0].sensors[0].beams: must be a whole number, found '2.5'"), "")
-      << All(r);
+  EXPECT_NE(Find(r, "rows[0].sensors[0].beams: must be a whole number, found '2.5'"), "") << All(r);
   EXPECT_NE(Find(r, "rows[1].sensors[0].beams: value 1e30 is out of range; valid: ["), "")
       << All(r);
   EXPECT_NE(Find(r, "rows[2].params.speed_factor: value 1e400 is out of range; valid: [0, 2]"), "")
