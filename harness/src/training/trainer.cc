@@ -596,7 +596,22 @@ void Trainer::WriteSummaryJson() const {
                     {"exploration", ToString(p.exploration)},
                     {"train_batches", p.train_batches},
                     {"validation_interval", p.validation_interval},
-                    {"validation_episodes", p.validation_episodes}};
+                    {"validation_episodes", p.validation_episodes},
+                    {"il_learning_rate", p.il_learning_rate},
+                    {"rl_learning_rate", p.rl_learning_rate},
+                    {"momentum", p.momentum},
+                    {"target_update_interval", p.target_update_interval},
+                    {"capacity", p.capacity},
+                    {"batch_size", p.batch_size},
+                    {"checkpoint_interval", p.checkpoint_interval}};
+  // The teacher of the imitation phase, with every parameter it ran with.
+  nlohmann::ordered_json teacher = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : spec_.teacher.params.values()) {
+    teacher[key] = FormatParamValue(value);
+  }
+  j["procedure"]["il_policy"] = spec_.teacher.loaded ? spec_.teacher.loaded->descriptor->name
+                                                     : spec_.teacher.plugin;
+  j["procedure"]["il_params"] = std::move(teacher);
   j["cpu"] = CpuModel();
   j["blas_coretype"] = BlasCoreType();
   j["commit"] = GitCommit();
