@@ -208,11 +208,12 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   const std::optional<SchemaDefaults> schema = LoadSchemaDefaults(&result.errors);
   if (!schema) return result;
   Reader r(file.string(), registry);
+  std::vector<SweptRow> swept;
   YAML::Node root = LoadYamlFile(file, "suite file", &result.errors);
   if (!result.errors.empty()) return result;
   if (root.IsMap()) {
     ApplyOverrides(root, overrides, &result.errors);
-    ExpandSweeps(root, file.string(), &result.errors);
+    ExpandSweeps(root, file.string(), &result.errors, &swept);
     LocateOverrideErrors(overrides, &result.errors);
     if (!result.errors.empty()) return result;
   }
@@ -294,9 +295,15 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     // Suite-level sections (world, humans, robot sensors) are read once per row: report each
     // problem once.
     LocateOverrideErrors(overrides, &r.errors);
+    LocateSweepErrors(swept, file.string(), &r.errors);
+    // One problem at one place is one error, whichever row's copy of the section found it
+    // (a suite-level world copied into each row a sweep made).
     std::set<std::string> seen;
     for (auto& e : r.errors) {
-      if (seen.insert(e.Format()).second) result.errors.push_back(std::move(e));
+      const std::string key = e.line > 0 ? e.file + ":" + std::to_string(e.line) + ":" +
+                                               std::to_string(e.column) + ":" + e.message
+                                         : e.Format();
+      if (seen.insert(key).second) result.errors.push_back(std::move(e));
     }
     return result;
   }

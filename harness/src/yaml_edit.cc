@@ -229,11 +229,19 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
     for (SuiteError& e : *errors) {
       // Sweeps renumber rows, so an error about the overridden value may name another index:
       // the last key then decides (such errors sit at line 1 or nowhere, as --set values do).
+      // A key the override made on its way (rows[orca].param.x=1: 'param' unknown) has no
+      // place in the file either: its last key is one of the override's.
+      std::string last = e.key_path.substr(e.key_path.rfind('.') + 1);
+      last = last.substr(0, last.find('['));
+      const bool made_on_the_way =
+          e.line == 0 && std::any_of(segments->begin(), segments->end(),
+                                     [&](const Segment& s) { return s.key == last; });
       const bool under =
           (!exact.empty() && (e.key_path == exact || e.key_path.starts_with(exact + ".") ||
                               e.key_path.starts_with(exact + "["))) ||
           (segments->back().selectors.empty() &&
-           (e.key_path == tail || e.key_path.ends_with("." + tail)));
+           (e.key_path == tail || e.key_path.ends_with("." + tail))) ||
+          made_on_the_way;
       if (!under || e.line > 1) continue;
       e.file = "--set " + text;
       e.line = 0;
@@ -253,7 +261,8 @@ std::string ValueText(const YAML::Node& v) {
 
 }  // namespace
 
-void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteError>* errors) {
+void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteError>* errors,
+                  std::vector<SweptRow>* swept) {
   YAML::Node rows = root["rows"];
   if (!rows.IsDefined() || !rows.IsSequence()) return;
   auto error = [&](const YAML::Node& at, const std::string& path, const std::string& message) {
@@ -280,12 +289,13 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
       std::string key;
       std::vector<Segment> segments;
       YAML::Node values;
+      YAML::Mark mark;
     };
     std::vector<Axis> axes;
     std::size_t combinations = 1;
     bool ok = true;
     for (const auto& kv : sweep) {
-      Axis axis{kv.first.Scalar(), {}, kv.second};
+      Axis axis{kv.first.Scalar(), {}, kv.second, kv.first.Mark()};
       std::string why;
       auto segments = ParsePath(axis.key, &why);
       if (!segments) {
@@ -353,10 +363,41 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
       copy.reset(WithKey(copy, "info", info));
       if (!ok) break;
       copy.reset(WithKey(copy, "label", YAML::Node(label)));
+      if (swept != nullptr) {
+        SweptRow made{expanded.size(), r, {}};
+        for (const Axis& axis : axes) {
+          made.keys.push_back({axis.key, axis.mark.line >= 0 ? axis.mark.line + 1 : 0,
+                               axis.mark.line >= 0 ? axis.mark.column + 1 : 0});
+        }
+        swept->push_back(std::move(made));
+      }
       expanded.push_back(copy);
     }
   }
   if (any) root.reset(WithKey(root, "rows", expanded));
+}
+
+void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& file,
+                       std::vector<SuiteError>* errors) {
+  for (SuiteError& e : *errors) {
+    if (e.line > 0 || e.file.starts_with("--set ")) continue;
+    for (const SweptRow& row : swept) {
+      const std::string prefix = "rows[" + std::to_string(row.row) + "].";
+      if (!e.key_path.starts_with(prefix)) continue;
+      const std::string rest = e.key_path.substr(prefix.size());
+      for (const SweptRow::Key& key : row.keys) {
+        // The swept key itself, a key under it, or a map on its way that the sweep made.
+        const bool related = rest == key.path || rest.starts_with(key.path + ".") ||
+                             rest.starts_with(key.path + "[") || key.path.starts_with(rest + ".");
+        if (!related) continue;
+        e.file = file;
+        e.line = key.line;
+        e.column = key.column;
+        e.key_path = "rows[" + std::to_string(row.source_row) + "].sweep." + key.path;
+        break;
+      }
+    }
+  }
 }
 
 }  // namespace crowdsim::suite_internal

@@ -26,11 +26,31 @@ void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
 void LocateOverrideErrors(const std::vector<std::string>& overrides,
                           std::vector<SuiteError>* errors);
 
+/// A row that a sweep made: its index after expansion, the row of the file it came from, and
+/// the swept keys with their place in the file.
+struct SweptRow {
+  std::size_t row = 0;
+  std::size_t source_row = 0;
+  struct Key {
+    std::string path;  ///< row-relative, as written: "world.obstacles"
+    int line = 0, column = 0;
+  };
+  std::vector<Key> keys;
+};
+
 /// Replaces every row with a `sweep:` map of row-relative key paths to value lists, e.g.
 /// `sweep: {humans.count: [5, 10, 20], world.obstacles: [1, 3]}`, by one row per combination
 /// (the first key varies slowest), labelled `label/key=value/...` and with one info column per
 /// swept key. A row that inherits `world`, `humans` or the robot's sensors gets its own copy
 /// before the swept key is set. `file` locates errors.
-void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteError>* errors);
+void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteError>* errors,
+                  std::vector<SweptRow>* swept = nullptr);
+
+/// Points the reader's errors about a swept key at the `sweep:` entry that set it: an error
+/// without a location under an expanded row (`rows[5].world.obstacle`, a key the sweep made)
+/// becomes the file location of that entry (`rows[4].sweep.world.obstacle`), so that it is
+/// reported once, where it can be fixed.
+void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& file,
+                       std::vector<SuiteError>* errors);
 
 }  // namespace crowdsim::suite_internal

@@ -82,6 +82,31 @@ TEST_F(SuiteEdits, ErrorsInASweptValuePointAtThatValue) {
       << All(bad);
 }
 
+TEST_F(SuiteEdits, AMisspelledSweptKeyIsOneErrorAtItsSweepEntry) {
+  // It was one error per expanded row, each naming a row the file does not have, without a
+  // line; and a suite-level error copied into each swept row was repeated as often.
+  std::string yaml = kSuite;
+  yaml.replace(yaml.find("world.obstacles: [1, 3]"), 23, "world.obstacle: [1, 3]");
+  yaml.replace(yaml.find("split: test"), 11, "split: tset");
+  const auto r = Load(yaml);
+  ASSERT_FALSE(r.suite);
+  EXPECT_EQ(r.errors.size(), 2u) << All(r);
+  EXPECT_NE(All(r).find("suite.yaml:12:35: rows[0].sweep.world.obstacle: unknown parameter "
+                        "'obstacle' for world plugin 'random_rect'"),
+            std::string::npos)
+      << All(r);
+  EXPECT_NE(All(r).find("suite.yaml:3:51: "), std::string::npos) << All(r);  // split, once
+}
+
+TEST_F(SuiteEdits, AKeyThatASetMadeOnItsWayIsBlamedOnTheSet) {
+  // rows[linear].param.speed_factor: 'param' is new, so it has no line in the file.
+  const auto r = Load(kSuite, {"rows[linear].param.speed_factor=0.5"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("--set rows[linear].param.speed_factor=0.5: rows[12].param: unknown key"),
+            std::string::npos)
+      << All(r);
+}
+
 TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
   const auto base = Load(kSuite);
   ASSERT_TRUE(base.suite) << All(base);

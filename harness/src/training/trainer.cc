@@ -609,8 +609,8 @@ void Trainer::WriteSummaryJson() const {
   for (const auto& [key, value] : spec_.teacher.params.values()) {
     teacher[key] = FormatParamValue(value);
   }
-  j["procedure"]["il_policy"] = spec_.teacher.loaded ? spec_.teacher.loaded->descriptor->name
-                                                     : spec_.teacher.plugin;
+  j["procedure"]["il_policy"] =
+      spec_.teacher.loaded ? spec_.teacher.loaded->descriptor->name : spec_.teacher.plugin;
   j["procedure"]["il_params"] = std::move(teacher);
   j["cpu"] = CpuModel();
   j["blas_coretype"] = BlasCoreType();
