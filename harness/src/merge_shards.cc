@@ -94,6 +94,14 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     if (!shard.empty() && !shards_seen.insert(shard).second) {
       throw RunRefused("shard " + shard + " is given twice ('" + dir.string() + "')");
     }
+    // A shard's slice depends on the episode count (--episodes): other counts, other slices.
+    if (const long n = ReadManifestInteger(manifest, "episodes"),
+        first = ReadManifestInteger(shard_dirs.front() / "manifest.json", "episodes");
+        n != first) {
+      throw RunRefused("'" + shard_dirs.front().string() + "' ran " + std::to_string(first) +
+                       " episodes per row and '" + dir.string() + "' " + std::to_string(n) +
+                       ": the shards of one run use one --episodes; rerun the odd ones with it");
+    }
     std::string commit = ReadManifestField(manifest, "git_commit");
     if (commit.empty()) commit = "unknown";
     if (!shard_commits.empty() && commit != shard_commits.front().first && !allow_mixed_commits) {
@@ -121,9 +129,19 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   if (!loaded.suite) {
     std::string msg = "cannot load the suite '" + file.string() + "' of the shards:";
     for (const auto& e : loaded.errors) msg += "\n  " + e.Format();
+    if (suite_file.empty()) {
+      msg +=
+          "\n(the path the shards' manifest.json records, relative to the folder they ran "
+          "from: merge from there, or give the suite with --suite FILE)";
+    }
     throw RunRefused(msg);
   }
   const Suite& suite = *loaded.suite;
+  if (const std::string ran = ReadManifestField(shard_dirs.front() / "manifest.json", "suite");
+      !ran.empty() && ran != suite.name) {
+    throw RunRefused(file.string() + " is the suite '" + suite.name + "', but the shards ran '" +
+                     ran + "': give that suite's file with --suite, or leave --suite out");
+  }
   if (suite.ConfigHash() != hash) {
     throw RunRefused("the suite '" + file.string() +
                      "' is now another configuration (config hash " + suite.ConfigHash() +
@@ -180,10 +198,35 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
                      "' holds a training (training.yaml); merge into a folder of its own: "
                      "choose another --out");
   }
+  // merge replaces what --out holds: only an earlier merge of these shards' configuration.
+  for (const fs::path& dir : shard_dirs) {
+    if (fs::exists(out_dir, ec) && fs::equivalent(dir, out_dir, ec)) {
+      throw RunRefused("--out '" + out_dir.string() +
+                       "' is one of the shards; merge into a folder of its own");
+    }
+  }
+  if (OutputFolderKind(out_dir) == "a suite run") {
+    const fs::path held = out_dir / "manifest.json";
+    const bool merged = fs::exists(held, ec) && ReadJsonFile(held).contains("shard_commits");
+    if (!merged) {
+      throw RunRefused("'" + out_dir.string() +
+                       "' holds a run, which merge would replace; merge into a folder of its "
+                       "own (choose another --out)");
+    }
+    if (ReadManifestField(held, "config_hash") != hash) {
+      throw RunRefused("'" + out_dir.string() + "' holds the merge of another configuration (" +
+                       ReadManifestField(held, "config_hash") + ", these shards " + hash +
+                       "); choose another --out");
+    }
+  }
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir)) {
     throw RunError("cannot create the output folder '" + out_dir.string() + "': " + ec.message());
   }
+  // Held from the first write to the last (the runner below shares it: same process).
+  std::string busy;
+  const auto lock = OutputFolderLock::Acquire(out_dir, &busy);
+  if (!lock) throw RunRefused(busy);
   std::string text = EpisodeCsvHeader() + "\n";
   for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
   WriteFileAtomically(out_dir / "episodes.csv", text);

@@ -1,42 +1,59 @@
 #include "output_folder.h"
 
 #include <fcntl.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstring>
+#include <map>
+#include <mutex>
 #include <string>
 
 namespace crowdsim {
 namespace fs = std::filesystem;
 
-std::unique_ptr<OutputFolderLock> OutputFolderLock::Acquire(const fs::path& dir, std::string* why) {
+namespace {
+
+std::mutex g_mutex;
+std::map<fs::path, std::weak_ptr<OutputFolderLock>> g_held;  // by canonical folder
+
+}  // namespace
+
+std::shared_ptr<OutputFolderLock> OutputFolderLock::Acquire(const fs::path& dir, std::string* why) {
+  std::error_code ec;
+  const fs::path key = fs::weakly_canonical(dir, ec);
+  std::lock_guard<std::mutex> guard(g_mutex);
+  if (const auto it = g_held.find(key); it != g_held.end()) {
+    if (auto shared = it->second.lock()) return shared;
+  }
   const fs::path file = dir / ".crowdsim-bench.lock";
   const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    // A folder we cannot lock is one we cannot write either: the writes say why.
-    return std::unique_ptr<OutputFolderLock>(new OutputFolderLock(-1));
+  // A folder we cannot open a file in is one we cannot write either: the writes say why.
+  std::shared_ptr<OutputFolderLock> lock(new OutputFolderLock(fd));
+  if (fd >= 0) {
+    struct flock request {};
+    request.l_type = F_WRLCK;
+    request.l_whence = SEEK_SET;  // the whole file
+    if (::fcntl(fd, F_SETLK, &request) != 0) {
+      if (errno != EACCES && errno != EAGAIN) {
+        g_held[key] = lock;
+        return lock;  // no locking on this file system: go on as before locks existed
+      }
+      struct flock holder {};
+      holder.l_type = F_WRLCK;
+      holder.l_whence = SEEK_SET;
+      const bool known = ::fcntl(fd, F_GETLK, &holder) == 0 && holder.l_type != F_UNLCK;
+      *why = "another crowdsim-bench process" +
+             (known ? " (pid " + std::to_string(holder.l_pid) + ")" : std::string()) +
+             " is writing into '" + dir.string() + "'; wait until it ends, or choose another --out";
+      return nullptr;
+    }
   }
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    char pid[32] = {};
-    const ssize_t n = ::pread(fd, pid, sizeof(pid) - 1, 0);
-    std::string holder = n > 0 ? std::string(pid, static_cast<size_t>(n)) : "";
-    while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
-    ::close(fd);
-    *why = "another crowdsim-bench process" + (holder.empty() ? "" : " (pid " + holder + ")") +
-           " is writing into '" + dir.string() + "'; wait until it ends, or choose another --out";
-    return nullptr;
-  }
-  const std::string pid = std::to_string(::getpid()) + "\n";
-  if (::ftruncate(fd, 0) == 0) {
-    [[maybe_unused]] const ssize_t written = ::pwrite(fd, pid.data(), pid.size(), 0);
-  }
-  return std::unique_ptr<OutputFolderLock>(new OutputFolderLock(fd));
+  g_held[key] = lock;
+  return lock;
 }
 
 OutputFolderLock::~OutputFolderLock() {
-  if (fd_ >= 0) ::close(fd_);  // releases the flock
+  if (fd_ >= 0) ::close(fd_);  // releases the record lock
 }
 
 std::string OutputFolderKind(const fs::path& dir) {

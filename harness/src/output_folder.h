@@ -9,14 +9,18 @@
 
 namespace crowdsim {
 
-/// An exclusive lock on an output folder for the lifetime of this object: flock on the file
-/// `.crowdsim-bench.lock` in it, which the system releases when the process ends, however it
-/// ends (a crash leaves no stale lock). The file itself stays (git ignores it).
+/// An exclusive lock on an output folder while any holder of it lives: a POSIX record lock
+/// (fcntl) on the file `.crowdsim-bench.lock` in it, which belongs to this process (children it
+/// forks do not hold it, and the system releases it when the process ends, however it ends: a
+/// crash leaves no stale lock; it works on NFS). The file itself stays (git ignores it).
 class OutputFolderLock {
  public:
-  /// The lock, or null when another process holds it: then `*why` names that process and
-  /// the folder.
-  static std::unique_ptr<OutputFolderLock> Acquire(const std::filesystem::path& dir,
+  /// The lock, or null when another process holds it: then `*why` names that process and the
+  /// folder. In one process, holders of the same folder share one lock (merge writes, then
+  /// runs the runner into the folder it holds). A file system that cannot lock (ENOLCK,
+  /// ENOSYS: NFS without a lock daemon, Lustre without flock) gives an unlocked holder: the
+  /// run goes on as before locks existed.
+  static std::shared_ptr<OutputFolderLock> Acquire(const std::filesystem::path& dir,
                                                    std::string* why);
   ~OutputFolderLock();
   OutputFolderLock(const OutputFolderLock&) = delete;

@@ -121,7 +121,7 @@ bool PluginRegistry::IsHarnessPlugin(const LoadedPlugin& p) {
   if (p.path.empty()) return false;  // made in memory (e.g. the Python module's policy)
   std::error_code ec;
   static const fs::path own = fs::weakly_canonical(HarnessPluginDir(), ec);
-  return fs::weakly_canonical(p.path, ec).parent_path() == own;
+  return (p.folder.empty() ? fs::weakly_canonical(p.path, ec).parent_path() : p.folder) == own;
 }
 
 fs::path DataRoot() {
@@ -210,6 +210,7 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   }
   auto loaded = std::make_unique<LoadedPlugin>();
   loaded->path = canonical;
+  loaded->folder = fs::weakly_canonical(fs::absolute(path, ec).parent_path(), ec);
   loaded->library = std::move(lib);
   loaded->descriptor = &desc;
   try {

@@ -27,6 +27,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// Every plugin a row's episodes call, with its role there.
+std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row) {
+  std::vector<std::pair<std::string, const PluginUse*>> uses = {
+      {"policy", &row.policy}, {"humans' policy", &row.humans.policy}, {"world", &row.world}};
+  for (const auto& s : row.sensors) uses.push_back({"sensor", &s});
+  return uses;
+}
+
 /// Builds row `r`'s world, sensors and policies once, checks that the robot has the sensors
 /// it needs, and makes and checks episode 0's scenario as the run does (a world too small for
 /// the row's humans fails here, in `validate` too); returns the world. Throws RunError naming
@@ -65,8 +73,14 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
       const auto world = PreflightRow(suite, r, registry);
       // The first step of episode 0, played as a run plays it: what fails on every step (a
       // lidar whose beams do not fit a learned policy, a sensor that throws) fails here, not
-      // as a table of policy errors.
+      // as a table of policy errors. Only in a row of the harness's own plugins without a
+      // timeout: `run` isolates the others, whose crash or hang would end validate.
       const RowSpec& row = suite.rows[r];
+      const auto uses = RowPlugins(row);
+      const bool own = std::all_of(uses.begin(), uses.end(), [](const auto& use) {
+        return PluginRegistry::IsHarnessPlugin(*use.second->loaded);
+      });
+      if (!own || suite.episode_timeout_s > 0 || suite.isolation == IsolationMode::kOn) continue;
       RowInstance instance(row, registry);
       const Scenario scenario = world->Make(MakeEpisodeRequest(suite, row, *world, 0));
       Episode episode(scenario, suite.sim, instance.Agents(scenario.humans.size()));
@@ -296,14 +310,6 @@ void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
   worker();
   for (auto& th : threads) th.join();
   sink.Finish(failure);
-}
-
-/// Every plugin a row's episodes call, with its role there.
-std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row) {
-  std::vector<std::pair<std::string, const PluginUse*>> uses = {
-      {"policy", &row.policy}, {"humans' policy", &row.humans.policy}, {"world", &row.world}};
-  for (const auto& s : row.sensors) uses.push_back({"sensor", &s});
-  return uses;
 }
 
 /// The plugins a crash of `row` is laid to: those not of the harness (loaded by path or from

@@ -209,12 +209,14 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   if (!schema) return result;
   Reader r(file.string(), registry);
   std::vector<SweptRow> swept;
+  std::vector<std::string> set_paths;             // each --set's path, list items by index
+  std::vector<std::vector<std::size_t>> row_map;  // each row's index after sweeps
   YAML::Node root = LoadYamlFile(file, "suite file", &result.errors);
   if (!result.errors.empty()) return result;
   if (root.IsMap()) {
-    ApplyOverrides(root, overrides, &result.errors);
-    ExpandSweeps(root, file.string(), &result.errors, &swept);
-    LocateOverrideErrors(overrides, &result.errors);
+    ApplyOverrides(root, overrides, &result.errors, &set_paths);
+    ExpandSweeps(root, file.string(), &result.errors, &swept, &row_map);
+    LocateOverrideErrors(overrides, &result.errors, set_paths, row_map);
     if (!result.errors.empty()) return result;
   }
   if (!root.IsMap()) {
@@ -294,7 +296,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   if (!r.errors.empty()) {
     // Suite-level sections (world, humans, robot sensors) are read once per row: report each
     // problem once.
-    LocateOverrideErrors(overrides, &r.errors);
+    LocateOverrideErrors(overrides, &r.errors, set_paths, row_map);
     LocateSweepErrors(swept, file.string(), &r.errors);
     // One problem at one place is one error, whichever row's copy of the section found it
     // (a suite-level world copied into each row a sweep made).

@@ -61,15 +61,18 @@ bool Reader::IsMap(const YAML::Node& n, const std::string& path, const char* wha
 namespace {
 
 // Whether a scalar is a number as written (all of it, in any notation strtod reads; an
-// overflow gives +-inf), with its value.
-bool WrittenAsNumber(const YAML::Node& n, double* value) {
+// overflow gives +-inf), with its value; `underflow` says it was too small for a double (1e-400,
+// which is then 0 or nearly).
+bool WrittenAsNumber(const YAML::Node& n, double* value, bool* underflow = nullptr) {
   if (!n.IsScalar() || n.Scalar().empty()) return false;
   const std::string& text = n.Scalar();
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size() || std::isnan(v)) return false;
-  *value = errno == ERANGE && std::abs(v) > 1.0 ? std::copysign(HUGE_VAL, v) : v;
+  const bool out_of_range = errno == ERANGE;
+  *value = out_of_range && std::abs(v) > 1.0 ? std::copysign(HUGE_VAL, v) : v;
+  if (underflow != nullptr) *underflow = out_of_range && std::abs(v) <= 1.0;
   return true;
 }
 
@@ -108,11 +111,14 @@ std::optional<std::int64_t> Reader::Integer(const YAML::Node& n, const std::stri
     // A whole number in another notation (1e3) is that number; one beyond the 64-bit range
     // (1e30, 99999999999999999999) is out of range.
     double d = 0;
-    if (!WrittenAsNumber(n, &d) || (std::isfinite(d) && d != std::floor(d))) {
+    bool underflow = false;
+    if (!WrittenAsNumber(n, &d, &underflow) || underflow ||
+        (std::isfinite(d) && d != std::floor(d))) {
       Error(n, path, "must be a whole number, found " + Scalar(n));
       return std::nullopt;
     }
-    if (!std::isfinite(d) || std::abs(d) >= 9.2e18) {
+    // [-2^63, 2^63): the doubles that convert to an int64_t.
+    if (!std::isfinite(d) || d < -9223372036854775808.0 || d >= 9223372036854775808.0) {
       Error(n, path,
             "value " + n.Scalar() + " is out of range; valid: [" + std::to_string(lo) + ", " +
                 std::to_string(hi) + "]");

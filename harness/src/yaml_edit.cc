@@ -172,19 +172,22 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
 
 /// Sets the value at `segments` in `root` (rebinding `root` to the edited copy). Returns ""
 /// or what went wrong.
-std::string SetPath(YAML::Node& root, const std::vector<Segment>& segments,
-                    const YAML::Node& value) {
+std::string SetPath(YAML::Node& root, const std::vector<Segment>& segments, const YAML::Node& value,
+                    std::string* resolved_out = nullptr) {
   std::string resolved, problem;
   YAML::Node edited = SetFrom(root, segments, 0, 0, value, &resolved, &problem);
   if (problem.empty()) root.reset(edited);
+  if (resolved_out != nullptr) *resolved_out = problem.empty() ? resolved : "";
   return problem;
 }
 
 }  // namespace
 
 void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
-                    std::vector<SuiteError>* errors) {
-  for (const std::string& text : overrides) {
+                    std::vector<SuiteError>* errors, std::vector<std::string>* resolved) {
+  if (resolved != nullptr) resolved->assign(overrides.size(), "");
+  for (std::size_t i = 0; i < overrides.size(); ++i) {
+    const std::string& text = overrides[i];
     auto fail = [&](const std::string& message) {
       errors->push_back({"--set " + text, 0, 0, "", message});
     };
@@ -210,42 +213,69 @@ void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
       fail("no value after '=' (to drop a key, edit the file)");
       continue;
     }
-    const std::string problem = SetPath(root, *segments, value);
+    const std::string problem =
+        SetPath(root, *segments, value, resolved != nullptr ? &(*resolved)[i] : nullptr);
     if (!problem.empty()) fail(problem);
   }
 }
 
 void LocateOverrideErrors(const std::vector<std::string>& overrides,
-                          std::vector<SuiteError>* errors) {
+                          std::vector<SuiteError>* errors, const std::vector<std::string>& resolved,
+                          const std::vector<std::vector<std::size_t>>& row_map) {
+  auto place = [](SuiteError& e, const std::string& text) {
+    e.file = "--set " + text;
+    e.line = 0;
+    e.column = 0;
+  };
+  auto related = [](const std::string& a, const std::string& b) {  // b is a or lies under it
+    return b == a || b.starts_with(a + ".") || b.starts_with(a + "[");
+  };
+  std::vector<bool> placed(errors->size(), false);
+  // First, by the path each override set (list items by index; a row a sweep expanded under
+  // each of its new indices): errors about that value or under it, and, with no place in the
+  // file, about a key the override made on its way (rows[orca].param.x=1: 'param' unknown).
+  for (std::size_t i = 0; i < overrides.size() && i < resolved.size(); ++i) {
+    if (resolved[i].empty()) continue;
+    std::vector<std::string> paths = {resolved[i]};
+    if (resolved[i].starts_with("rows[") && !row_map.empty()) {
+      const std::size_t close = resolved[i].find(']');
+      const std::size_t row = std::stoul(resolved[i].substr(5, close - 5));
+      if (row < row_map.size()) {
+        paths.clear();
+        for (std::size_t now : row_map[row]) {
+          paths.push_back("rows[" + std::to_string(now) + resolved[i].substr(close));
+        }
+      }
+    }
+    for (std::size_t k = 0; k < errors->size(); ++k) {
+      SuiteError& e = (*errors)[k];
+      if (e.line > 1 || e.key_path.empty()) continue;
+      for (const std::string& path : paths) {
+        if (related(path, e.key_path) || (e.line == 0 && related(e.key_path, path))) {
+          place(e, overrides[i]);
+          placed[k] = true;
+          break;
+        }
+      }
+    }
+  }
+  // Then, for the rest, by the keys as written (a [name] selector unresolved): the error's
+  // path under the override's, or ending in its last key (values a row inherits).
   for (const std::string& text : overrides) {
     const std::size_t eq = text.find('=');
     if (eq == std::string::npos) continue;
     std::string why;
     const auto segments = ParsePath(text.substr(0, eq), &why);
     if (!segments) continue;
-    // [name] selectors are resolved against the document: compare by the last keys then.
     const std::string exact = ReaderPath(*segments);
     const std::string& tail = segments->back().key;
-    for (SuiteError& e : *errors) {
-      // Sweeps renumber rows, so an error about the overridden value may name another index:
-      // the last key then decides (such errors sit at line 1 or nowhere, as --set values do).
-      // A key the override made on its way (rows[orca].param.x=1: 'param' unknown) has no
-      // place in the file either: its last key is one of the override's.
-      std::string last = e.key_path.substr(e.key_path.rfind('.') + 1);
-      last = last.substr(0, last.find('['));
-      const bool made_on_the_way =
-          e.line == 0 && std::any_of(segments->begin(), segments->end(),
-                                     [&](const Segment& s) { return s.key == last; });
-      const bool under =
-          (!exact.empty() && (e.key_path == exact || e.key_path.starts_with(exact + ".") ||
-                              e.key_path.starts_with(exact + "["))) ||
-          (segments->back().selectors.empty() &&
-           (e.key_path == tail || e.key_path.ends_with("." + tail))) ||
-          made_on_the_way;
-      if (!under || e.line > 1) continue;
-      e.file = "--set " + text;
-      e.line = 0;
-      e.column = 0;
+    for (std::size_t k = 0; k < errors->size(); ++k) {
+      SuiteError& e = (*errors)[k];
+      if (placed[k] || e.line > 1) continue;
+      const bool under = (!exact.empty() && related(exact, e.key_path)) ||
+                         (segments->back().selectors.empty() &&
+                          (e.key_path == tail || e.key_path.ends_with("." + tail)));
+      if (under) place(e, text);
     }
   }
 }
@@ -262,7 +292,7 @@ std::string ValueText(const YAML::Node& v) {
 }  // namespace
 
 void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteError>* errors,
-                  std::vector<SweptRow>* swept) {
+                  std::vector<SweptRow>* swept, std::vector<std::vector<std::size_t>>* row_map) {
   YAML::Node rows = root["rows"];
   if (!rows.IsDefined() || !rows.IsSequence()) return;
   auto error = [&](const YAML::Node& at, const std::string& path, const std::string& message) {
@@ -272,10 +302,12 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
   };
   YAML::Node expanded(YAML::NodeType::Sequence);
   bool any = false;
+  if (row_map != nullptr) row_map->assign(rows.size(), {});
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const YAML::Node row = rows[r];
     const YAML::Node sweep = row.IsMap() ? row["sweep"] : YAML::Node();
     if (!sweep.IsDefined()) {
+      if (row_map != nullptr) (*row_map)[r].push_back(expanded.size());
       expanded.push_back(row);
       continue;
     }
@@ -371,6 +403,7 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
         }
         swept->push_back(std::move(made));
       }
+      if (row_map != nullptr) (*row_map)[r].push_back(expanded.size());
       expanded.push_back(copy);
     }
   }
@@ -380,22 +413,27 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
 void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& file,
                        std::vector<SuiteError>* errors) {
   for (SuiteError& e : *errors) {
-    if (e.line > 0 || e.file.starts_with("--set ")) continue;
+    if (e.file.starts_with("--set ")) continue;
     for (const SweptRow& row : swept) {
       const std::string prefix = "rows[" + std::to_string(row.row) + "].";
       if (!e.key_path.starts_with(prefix)) continue;
       const std::string rest = e.key_path.substr(prefix.size());
+      const std::string source = "rows[" + std::to_string(row.source_row) + "]";
+      e.key_path = source + "." + rest;  // the row as the file writes it
       for (const SweptRow::Key& key : row.keys) {
         // The swept key itself, a key under it, or a map on its way that the sweep made.
         const bool related = rest == key.path || rest.starts_with(key.path + ".") ||
                              rest.starts_with(key.path + "[") || key.path.starts_with(rest + ".");
         if (!related) continue;
-        e.file = file;
-        e.line = key.line;
-        e.column = key.column;
-        e.key_path = "rows[" + std::to_string(row.source_row) + "].sweep." + key.path;
+        e.key_path = source + ".sweep." + key.path;
+        if (e.line == 0) {  // a key the sweep made: the sweep entry's place
+          e.file = file;
+          e.line = key.line;
+          e.column = key.column;
+        }
         break;
       }
+      break;
     }
   }
 }

@@ -18,13 +18,20 @@ namespace crowdsim::suite_internal {
 /// `robot.sensors[lidar2d].beams=90`. The value is YAML (`10`, `[person, lidar2d]`, `{a: 1}`).
 /// Missing maps on the way are created; a list item that does not exist is an error. Each
 /// problem becomes an error whose file is "--set EXPR".
+/// `resolved` (optional) receives, per override, the path it set with list items by index
+/// (rows[12].params.x), "" where it failed: LocateOverrideErrors uses them.
 void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
-                    std::vector<SuiteError>* errors);
+                    std::vector<SuiteError>* errors, std::vector<std::string>* resolved = nullptr);
 
 /// Points the reader's errors about a value set with --set at that option (they would name
 /// line 1 of the file): an error whose key path is an override's, or lies under it.
+/// With `resolved` (ApplyOverrides'), also an error without a place in the file about a key
+/// an override made on its way (rows[orca].param.x=1: 'param' unknown).
+/// `row_map` (ExpandSweeps') gives the rows' indices after sweeps expanded them.
 void LocateOverrideErrors(const std::vector<std::string>& overrides,
-                          std::vector<SuiteError>* errors);
+                          std::vector<SuiteError>* errors,
+                          const std::vector<std::string>& resolved = {},
+                          const std::vector<std::vector<std::size_t>>& row_map = {});
 
 /// A row that a sweep made: its index after expansion, the row of the file it came from, and
 /// the swept keys with their place in the file.
@@ -43,8 +50,10 @@ struct SweptRow {
 /// (the first key varies slowest), labelled `label/key=value/...` and with one info column per
 /// swept key. A row that inherits `world`, `humans` or the robot's sensors gets its own copy
 /// before the swept key is set. `file` locates errors.
+/// `row_map` (optional) receives, per row of the file, its index or indices after expansion.
 void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteError>* errors,
-                  std::vector<SweptRow>* swept = nullptr);
+                  std::vector<SweptRow>* swept = nullptr,
+                  std::vector<std::vector<std::size_t>>* row_map = nullptr);
 
 /// Points the reader's errors about a swept key at the `sweep:` entry that set it: an error
 /// without a location under an expanded row (`rows[5].world.obstacle`, a key the sweep made)

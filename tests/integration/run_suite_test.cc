@@ -2,7 +2,6 @@
 // errors recorded without stopping, and the CLI's contract.
 #include <fcntl.h>
 #include <gtest/gtest.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -551,6 +550,48 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   // Refusals are RunRefused (the CLI exits 2: nothing was merged).
   EXPECT_THROW(MergeShards({shards[0], o.out_dir}, dir_.path() / "bad", suite_file, registry_),
                RunRefused);
+
+  dir_.Write("suite.yaml", kSuite);  // the shards' suite again (LoadOrDie wrote others)
+  // Shards run with another --episodes: the counts are named (the messages spoke of missing
+  // or doubled episodes, depending on the order of the folders).
+  RunOptions fewer;
+  fewer.out_dir = dir_.path() / "fewer3";
+  fewer.shard_count = 3;
+  fewer.shard_index = 3;
+  fewer.episodes = 1;
+  fewer.progress = false;
+  RunSuite(s, registry_, fewer);
+  EXPECT_NE(merge_error({shards[0], shards[1], fewer.out_dir})
+                .find("ran 12 episodes per row and '" + fewer.out_dir.string() + "' 1"),
+            std::string::npos)
+      << merge_error({shards[0], shards[1], fewer.out_dir});
+
+  // merge replaces what --out holds: never a run or a shard, only an earlier merge of the same
+  // configuration (it overwrote a whole run, and a shard given as --out, with exit 0).
+  auto merge_into = [&](const fs::path& out) {
+    try {
+      MergeShards(shards, out, suite_file, registry_);
+    } catch (const RunRefused& e) {
+      return std::string(e.what());
+    }
+    return std::string("merged");
+  };
+  EXPECT_NE(merge_into(dir_.path() / "whole").find("holds a run, which merge would replace"),
+            std::string::npos);
+  EXPECT_NE(merge_into(shards[0]).find("is one of the shards"), std::string::npos);
+  EXPECT_EQ(merge_into(dir_.path() / "merged"), "merged");  // again: the same merge
+  EXPECT_EQ(WithoutTimingColumns(ReadText(dir_.path() / "whole" / "episodes.csv")),
+            WithoutTimingColumns(ReadText(dir_.path() / "merged" / "episodes.csv")));
+  // The suite file of another suite.
+  const fs::path another = dir_.Write(
+      "another.yaml",
+      std::string(kSuite).replace(std::string(kSuite).find("name: "), 6, "name: another_"));
+  try {
+    MergeShards(shards, dir_.path() / "m2", another, registry_);
+    ADD_FAILURE() << "merged under another suite";
+  } catch (const RunRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("is the suite 'another_"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(RunSuiteTest, PolicyErrorIsRecordedAndTheSuiteGoesOn) {
@@ -696,6 +737,15 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   auto [nrc, ntext] = Shell(exe + " validate " + untrainable.string());
   EXPECT_EQ(nrc, 2) << ntext;
   EXPECT_NE(ntext.find("policy 'orca' cannot be trained"), std::string::npos) << ntext;
+  // validate plays no step of a plugin that run would isolate: a policy that crashes at its
+  // first decision does not take validate down with it.
+  const auto crashing = dir_.Write(
+      "crashing.yaml", "name: crash\nworld: {source: crowdnav}\nrows:\n  - {label: c, policy: " +
+                           (testing::FixturePluginDir() / "crowdsim_throwing_policy.so").string() +
+                           ", params: {fail_after_steps: 0, mode: segfault}}\n");
+  auto [crc, ctext] = Shell(exe + " validate " + crashing.string());
+  EXPECT_EQ(crc, 0) << ctext;
+
   // A training file given to run, a suite given to train: the other command is named.
   auto [wrc, wtext] = Shell(exe + " run " + untrainable.string() + " --quiet");
   EXPECT_EQ(wrc, 2) << wtext;
@@ -725,14 +775,42 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   // runs appending to one episodes.csv interleaved their lines).
   const int held = ::open((fs::path(out) / ".crowdsim-bench.lock").c_str(), O_RDWR | O_CREAT, 0644);
   ASSERT_GE(held, 0);
-  ASSERT_EQ(::flock(held, LOCK_EX | LOCK_NB), 0);
+  struct flock whole {};
+  whole.l_type = F_WRLCK;
+  whole.l_whence = SEEK_SET;
+  ASSERT_EQ(::fcntl(held, F_SETLK, &whole), 0);
   auto [lrc, ltext] = Shell(exe + " run " + suite.string() + " --episodes 3 --quiet --out " + out);
   EXPECT_EQ(lrc, 2) << ltext;
-  EXPECT_NE(ltext.find("another crowdsim-bench process"), std::string::npos) << ltext;
+  EXPECT_NE(ltext.find("another crowdsim-bench process (pid " + std::to_string(::getpid()) + ")"),
+            std::string::npos)
+      << ltext;
   EXPECT_NE(ltext.find("is writing into '" + out + "'"), std::string::npos) << ltext;
   ::close(held);
   auto [frc, ftext] = Shell(exe + " run " + suite.string() + " --episodes 3 --quiet --out " + out);
   EXPECT_EQ(frc, 0) << ftext;  // the lock went with its holder
+
+  // merge is refused before it writes anything into a locked folder (it wrote episodes.csv
+  // and manifest.json, then said nothing was merged).
+  for (const char* k : {"1", "2"}) {
+    auto [src3, stext3] = Shell(exe + " run " + suite.string() + " --episodes 2 --quiet --shard " +
+                                k + "/2 --out " + (dir_.path() / "s").string() + k);
+    EXPECT_EQ(src3, 0) << stext3;
+  }
+  const std::string shards = (dir_.path() / "s1").string() + " " + (dir_.path() / "s2").string();
+  const fs::path merged = dir_.path() / "m";
+  auto [mrc1, mtext1] = Shell(exe + " merge " + shards + " --out " + merged.string());
+  EXPECT_EQ(mrc1, 0) << mtext1;
+  const std::string manifest_before = ReadText(merged / "manifest.json");
+  const int held_m = ::open((merged / ".crowdsim-bench.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(held_m, 0);
+  ASSERT_EQ(::fcntl(held_m, F_SETLK, &whole), 0);
+  auto [mrc2, mtext2] = Shell(exe + " merge " + shards + " --out " + merged.string());
+  EXPECT_EQ(mrc2, 2) << mtext2;
+  EXPECT_NE(mtext2.find("another crowdsim-bench process"), std::string::npos) << mtext2;
+  EXPECT_EQ(ReadText(merged / "manifest.json"), manifest_before);
+  ::close(held_m);
+  auto [mrc3, mtext3] = Shell(exe + " merge " + shards + " --out " + merged.string());
+  EXPECT_EQ(mrc3, 0) << mtext3;  // an earlier merge of the same shards is merged again
 }
 
 // `validate` runs `run`'s preflight: every row's plugins built (weights read, world files read,

@@ -72,9 +72,13 @@ TEST_F(SuiteEdits, ErrorsInASweptValuePointAtThatValue) {
   yaml.replace(yaml.find("[0.0, 0.1, 0.2]"), 15, "[0.0, 7.5]");
   const auto r = Load(yaml);
   ASSERT_FALSE(r.suite);
-  EXPECT_NE(All(r).find("suite.yaml:12:87: rows[1].params.safety_space: value 7.5 is out of range"),
-            std::string::npos)
+  // Once, at the value, under the sweep entry that gave it (it named rows[1], an expanded row
+  // the file does not have).
+  EXPECT_NE(
+      All(r).find("suite.yaml:12:87: rows[0].sweep.params.safety_space: value 7.5 is out of range"),
+      std::string::npos)
       << All(r);
+  EXPECT_EQ(r.errors.size(), 1u) << All(r);
   const auto bad = Load(std::string(kSuite).replace(std::string(kSuite).find("[2, 8]"), 6, "[]"));
   ASSERT_FALSE(bad.suite);
   EXPECT_NE(All(bad).find("rows[0].sweep.humans.count: must be a non-empty list"),
@@ -105,6 +109,15 @@ TEST_F(SuiteEdits, AKeyThatASetMadeOnItsWayIsBlamedOnTheSet) {
   EXPECT_NE(All(r).find("--set rows[linear].param.speed_factor=0.5: rows[12].param: unknown key"),
             std::string::npos)
       << All(r);
+  // Each such error is blamed on the --set whose path it lies on, not on another one that
+  // only shares a key name.
+  const auto two = Load(kSuite, {"rows[linear].param.speed_factor=0.5", "humans.params.param=1"});
+  ASSERT_FALSE(two.suite);
+  EXPECT_NE(All(two).find("--set rows[linear].param.speed_factor=0.5: rows[12].param: unknown key"),
+            std::string::npos)
+      << All(two);
+  EXPECT_EQ(All(two).find("--set humans.params.param=1: rows[12].param"), std::string::npos)
+      << All(two);
 }
 
 TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {

@@ -124,12 +124,15 @@ rows:
   - {policy: linear, sensors: [{type: lidar2d, beams: 2.5}]}
   - {policy: linear, sensors: [{type: lidar2d, beams: 1e30}]}
   - {policy: linear, params: {speed_factor: 1e400}}
+  - {policy: linear, sensors: [{type: lidar2d, beams: 1e-400}]}
 )");
   ASSERT_FALSE(r.suite);
   EXPECT_NE(Find(r, "rows[0].sensors[0].beams: must be a whole number, found '2.5'"), "") << All(r);
   EXPECT_NE(Find(r, "rows[1].sensors[0].beams: value 1e30 is out of range; valid: ["), "")
       << All(r);
   EXPECT_NE(Find(r, "rows[2].params.speed_factor: value 1e400 is out of range; valid: [0, 2]"), "")
+      << All(r);
+  EXPECT_NE(Find(r, "rows[3].sensors[0].beams: must be a whole number, found '1e-400'"), "")
       << All(r);
 }
 
@@ -263,6 +266,21 @@ TEST_F(SuiteValidation, AnUnknownPluginNamesTheFileThatCallsItselfSo) {
   const auto r = LoadSuite(dir_.Write("walker.yaml", kGood), only_walker);
   EXPECT_NE(Find(r, "unknown policy plugin 'linear'"), "") << All(r);
   EXPECT_NE(Find(r, "is named 'walker' but its descriptor calls it 'linear'"), "") << All(r);
+}
+
+TEST_F(SuiteValidation, APluginIsTheHarnesssOwnByTheFolderItIsFoundIn) {
+  // Not by where its file links to: an installed copy whose plugin files are symlinks into a
+  // package store keeps the committed config hashes; a link of yours to a built-in plugin is
+  // yours.
+  namespace fs = std::filesystem;
+  fs::create_directories(dir_.path() / "linked");
+  fs::create_symlink(testing::PluginDir() / "crowdsim_linear.so",
+                     dir_.path() / "linked" / "crowdsim_linear.so");
+  PluginRegistry registry({testing::PluginDir()});
+  const LoadedPlugin& linked =
+      registry.Load((dir_.path() / "linked" / "crowdsim_linear.so").string(), PluginKind::kPolicy);
+  EXPECT_FALSE(PluginRegistry::IsHarnessPlugin(linked));
+  EXPECT_TRUE(PluginRegistry::IsHarnessPlugin(registry.Load("person", PluginKind::kSensor)));
 }
 
 TEST_F(SuiteValidation, ReferencesAndSummariesLoadWithoutChangingTheConfigHash) {

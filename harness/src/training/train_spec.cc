@@ -250,10 +250,11 @@ std::vector<std::string> TrainSpecWarnings(const TrainSpec& spec) {
 TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry,
                                   const std::vector<std::string>& overrides) {
   TrainSpecLoadResult result;
+  std::vector<std::string> set_paths;  // each --set's path, list items by index
   YAML::Node root = suite_internal::LoadYamlFile(file, "training file", &result.errors);
   if (!result.errors.empty()) return result;
   if (root.IsMap()) {
-    suite_internal::ApplyOverrides(root, overrides, &result.errors);
+    suite_internal::ApplyOverrides(root, overrides, &result.errors, &set_paths);
     if (!result.errors.empty()) return result;
   }
   if (!root.IsMap()) {
@@ -284,7 +285,7 @@ TrainSpecLoadResult LoadTrainSpec(const fs::path& file, PluginRegistry& registry
   UseTrainSplit(r, root["world"], &s.row.world);
   ReadTraining(r, root["training"], *schema, base, &s);
   if (!r.errors.empty()) {
-    suite_internal::LocateOverrideErrors(overrides, &r.errors);
+    suite_internal::LocateOverrideErrors(overrides, &r.errors, set_paths);
     result.errors = std::move(r.errors);
     return result;
   }

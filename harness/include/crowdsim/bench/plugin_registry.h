@@ -25,7 +25,10 @@ class PluginError : public std::runtime_error {
 
 /// A loaded, ABI-checked plugin library.
 struct LoadedPlugin {
-  std::filesystem::path path;
+  std::filesystem::path path;  ///< the file, symlinks resolved
+  /// The folder the file was found in or given from (its own symlink not followed: an install
+  /// whose plugin files link into a store is still the harness's own folder).
+  std::filesystem::path folder;
   std::shared_ptr<boost::dll::shared_library> library;
   const PluginDescriptor* descriptor = nullptr;
   ParamSchema schema;
