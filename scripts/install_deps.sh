@@ -12,7 +12,7 @@ packages=(
   libboost-serialization-dev libboost-program-options-dev
   libompl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libpng-dev libcairo2-dev libgif-dev
+  libpng-dev libcairo2-dev libgif-dev zlib1g-dev
   libopenmpi-dev openmpi-bin
   python3-dev python3-pybind11 python3-numpy
 )
@@ -31,7 +31,7 @@ fi
 if [[ $with_torch -eq 1 ]]; then
   # python3-torch: the torchscript plugin's test scripts and saves tiny TorchScript modules
   # with it (and examples/python/ train and export policies); the C++ side needs only libtorch.
-  packages+=(libtorch-dev libopenblas0-pthread zlib1g-dev python3-torch)
+  packages+=(libtorch-dev libopenblas0-pthread python3-torch)
 fi
 
 missing=()

@@ -30,7 +30,7 @@ int ReportCommand(const std::vector<std::string>& args) {
         dir.filename().empty() ? dir.parent_path().filename().string() : dir.filename().string();
     CreateFolderOf("--out", *out);
     render::WriteFigure(
-        render::LearningCurveDrawing(render::ReadTextFileIfExists(dir / "training_episodes.csv"),
+        render::LearningCurveDrawing(render::ReadTrainingEpisodes(dir),
                                      render::ReadTextFileIfExists(dir / "training_log.csv"), name),
         *out);
     std::cerr << "wrote " << *out << "\n";

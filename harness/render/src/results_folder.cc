@@ -1,5 +1,7 @@
 #include "crowdsim/render/results_folder.h"
 
+#include <zlib.h>
+
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -35,6 +37,26 @@ CsvTable ReadCsv(const std::filesystem::path& path) {
 
 std::string ReadTextFileIfExists(const std::filesystem::path& path) {
   return std::filesystem::exists(path) ? ReadTextFile(path) : std::string();
+}
+
+std::string ReadTrainingEpisodes(const std::filesystem::path& folder) {
+  const auto plain = folder / "training_episodes.csv";
+  if (std::filesystem::exists(plain)) return ReadTextFile(plain);
+  const auto packed = folder / "training_episodes.csv.gz";
+  if (!std::filesystem::exists(packed)) return "";
+  gzFile in = gzopen(packed.c_str(), "rb");
+  if (in == nullptr) throw std::runtime_error("cannot read " + packed.string());
+  std::string text;
+  char buffer[1 << 16];
+  int n = 0;
+  while ((n = gzread(in, buffer, sizeof(buffer))) > 0) text.append(buffer, static_cast<size_t>(n));
+  int error = Z_OK;
+  const char* what = gzerror(in, &error);
+  gzclose(in);
+  if (n < 0 || (error != Z_OK && error != Z_STREAM_END)) {
+    throw std::runtime_error(packed.string() + " is damaged: " + what);
+  }
+  return text;
 }
 
 std::string ReadTextFile(const std::filesystem::path& path) {

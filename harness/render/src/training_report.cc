@@ -130,7 +130,8 @@ void WriteSummary(std::ostream& html, const std::string& summary) {
 }  // namespace
 
 bool IsTrainingFolder(const fs::path& dir) {
-  return fs::exists(dir / "training_episodes.csv") || fs::exists(dir / "training_log.csv");
+  return fs::exists(dir / "training_episodes.csv") ||
+         fs::exists(dir / "training_episodes.csv.gz") || fs::exists(dir / "training_log.csv");
 }
 
 std::string BuildTrainingReport(const fs::path& dir) {
@@ -141,7 +142,7 @@ std::string BuildTrainingReport(const fs::path& dir) {
   }
   std::string name = ReadManifestField(dir / "summary.json", "name");
   if (name.empty()) name = dir.filename().string();
-  const std::string episodes = ReadTextFileIfExists(dir / "training_episodes.csv");
+  const std::string episodes = ReadTrainingEpisodes(dir);
   const std::string validation = ReadTextFileIfExists(dir / "training_log.csv");
   std::ostringstream html;
   WriteHeader(html, dir, name, episodes, validation);

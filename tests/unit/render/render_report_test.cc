@@ -12,6 +12,8 @@
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/render/report.h"
+#include "crowdsim/render/results_folder.h"
+#include "crowdsim/render/training_report.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -172,6 +174,19 @@ TEST_F(ReportTest, AnotherSuitesFileIsRefused) {
     EXPECT_NE(std::string(e.what()).find("holds a run of the suite 'quick'"), std::string::npos)
         << e.what();
   }
+}
+
+TEST(TrainingReport, ACommittedModelFolderReadsItsCompressedEpisodeLog) {
+  // results/models/* keep training_episodes.csv.gz: the report drew an empty learning curve
+  // and "no RL episode logged yet" for every committed model.
+  const fs::path model =
+      crowdsim::testing::SourceDir() / "results/models/cadrl_pp_lidar_person_rect1";
+  ASSERT_TRUE(fs::exists(model / "training_episodes.csv.gz"));
+  ASSERT_FALSE(fs::exists(model / "training_episodes.csv"));
+  const std::string log = ReadTrainingEpisodes(model);
+  EXPECT_GT(CountOf(log, "\nrl,"), 9000) << log.substr(0, 300);
+  const std::string html = BuildTrainingReport(model);
+  EXPECT_EQ(html.find("no RL episode logged yet"), std::string::npos);
 }
 
 // Opens the report offline in headless Chromium and takes a screenshot.

@@ -24,4 +24,9 @@ std::string ReadTextFile(const std::filesystem::path& path);
 /// Whole file as a string, or "" when there is no such file (a log not written yet).
 std::string ReadTextFileIfExists(const std::filesystem::path& path);
 
+/// A training folder's training_episodes.csv, or, as a committed model folder keeps it,
+/// training_episodes.csv.gz decompressed; "" when neither exists. Throws std::runtime_error
+/// for a damaged .gz.
+std::string ReadTrainingEpisodes(const std::filesystem::path& folder);
+
 }  // namespace crowdsim::render
