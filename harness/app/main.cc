@@ -1,6 +1,8 @@
 // crowdsim-bench: the command-line entry point.
+#include <algorithm>
 #include <cctype>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -129,7 +131,23 @@ const Command* Find(const std::string& name) {
 std::string Names() {
   std::string names;
   for (const Command& c : Commands()) names += std::string(c.name) + ", ";
-  return names + "help";
+  return names + "help, completion";
+}
+
+/// The synopsis lines of a usage text: "  crowdsim-bench NAME ..." and their continuations
+/// ("                 [--set ...]"), not the description under them (which may name another
+/// command's options, as merge's names run's --shard).
+std::vector<std::string> SynopsisLines(const std::string& usage) {
+  std::vector<std::string> lines;
+  std::istringstream in(usage);
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t text = line.find_first_not_of(' ');
+    if (text == std::string::npos) continue;
+    if (line.compare(text, 15, "crowdsim-bench ") == 0 || (text >= 10 && line[text] == '[')) {
+      lines.push_back(line);
+    }
+  }
+  return lines;
 }
 
 /// Completes the command names, then options and files (the options are read off the usage).
@@ -142,17 +160,38 @@ void PrintBashCompletion() {
   for (const Command& c : Commands()) std::cout << c.name << " ";
   std::cout << "help completion --version\" -- \"$cur\")); return\n  fi\n"
                "  case ${COMP_WORDS[1]} in\n";
+  std::string names;
+  for (const Command& c : Commands()) names += std::string(c.name) + " ";
+  std::cout << "    help) [[ $COMP_CWORD -eq 2 ]] && COMPREPLY=($(compgen -W \"" << names
+            << "completion\" -- \"$cur\"));;\n"
+            << "    completion) [[ $COMP_CWORD -eq 2 ]] && COMPREPLY=($(compgen -W \"bash\" -- "
+               "\"$cur\"));;\n";
   for (const Command& c : Commands()) {
-    std::string opts;
-    const std::string u = c.usage;
-    for (std::size_t p = u.find("--"); p != std::string::npos; p = u.find("--", p + 2)) {
-      std::size_t e = p + 2;
-      while (e < u.size() && (std::isalnum(static_cast<unsigned char>(u[e])) || u[e] == '-')) ++e;
-      const std::string opt = u.substr(p, e - p);
-      if (opt.size() > 2 && opts.find(opt + " ") == std::string::npos) opts += opt + " ";
+    std::string opts, subcommands;
+    for (const std::string& u : SynopsisLines(c.usage)) {
+      for (std::size_t p = u.find("--"); p != std::string::npos; p = u.find("--", p + 2)) {
+        std::size_t e = p + 2;
+        while (e < u.size() && (std::isalnum(static_cast<unsigned char>(u[e])) || u[e] == '-')) ++e;
+        const std::string opt = u.substr(p, e - p);
+        if (opt.size() > 2 && opts.find(opt + " ") == std::string::npos) opts += opt + " ";
+      }
+      // A lower-case word after the command's name is a subcommand (floorplan import).
+      const std::string head = "crowdsim-bench " + std::string(c.name) + " ";
+      if (const std::size_t at = u.find(head); at != std::string::npos) {
+        const std::size_t from = at + head.size();
+        const std::string word = u.substr(from, u.find(' ', from) - from);
+        if (!word.empty() && std::islower(static_cast<unsigned char>(word[0])) &&
+            subcommands.find(word + " ") == std::string::npos) {
+          subcommands += word + " ";
+        }
+      }
     }
-    std::cout << "    " << c.name << ") COMPREPLY=($(compgen -W \"" << opts
-              << "--help\" -- \"$cur\") "
+    std::cout << "    " << c.name << ") ";
+    if (!subcommands.empty()) {
+      std::cout << "if [[ $COMP_CWORD -eq 2 ]]; then COMPREPLY=($(compgen -W \"" << subcommands
+                << "--help\" -- \"$cur\")); return; fi; ";
+    }
+    std::cout << "COMPREPLY=($(compgen -W \"" << opts << "--help\" -- \"$cur\") "
               << "$(compgen -f -- \"$cur\"));;\n";
   }
   std::cout << "  esac\n}\ncomplete -o filenames -F _crowdsim_bench crowdsim-bench\n";
@@ -172,6 +211,11 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    if (args.size() > 1 && (args[1] == "help" || args[1] == "completion" ||
+                            args[1] == "--version" || args[1] == "version")) {
+      std::cout << "usage:\n" << kFooter << kNotes;  // where help, --version, completion are
+      return 0;
+    }
     if (args.size() > 1) {
       const Command* c = Find(args[1]);
       if (c == nullptr) {
@@ -185,6 +229,10 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (args[0] == "completion") {
+    if (args.size() == 2 && (args[1] == "--help" || args[1] == "-h")) {
+      std::cout << "usage:\n" << kFooter << kNotes;
+      return 0;
+    }
     if (args.size() != 2 || args[1] != "bash") {
       std::cerr << "error: completion needs the shell: crowdsim-bench completion bash\n";
       return 2;
@@ -199,7 +247,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   args.erase(args.begin());
-  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+  // --help anywhere among a command's arguments (run suites/quick.yaml --help).
+  if (std::find(args.begin(), args.end(), "--help") != args.end() ||
+      (!args.empty() && args[0] == "-h")) {
     std::cout << "usage:\n" << command->usage << "\n" << kNotes;
     return 0;
   }

@@ -947,6 +947,24 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   const auto script = dir_.Write("completion.bash", completion);
   const auto [b, bash_text] = Shell("bash -n " + script.string());
   EXPECT_EQ(b, 0) << bash_text;
+  // Options from the synopsis only (merge's description names run's --shard), subcommands of
+  // floorplan, command names after help.
+  EXPECT_NE(completion.find("merge) COMPREPLY=($(compgen -W \"--out --suite --allow-mixed-commits "
+                            "--help\""),
+            std::string::npos)
+      << completion;
+  EXPECT_NE(completion.find("compgen -W \"import preview dataset --help\""), std::string::npos)
+      << completion;
+  EXPECT_NE(completion.find("help) [[ $COMP_CWORD -eq 2 ]] && COMPREPLY=($(compgen -W \"run "),
+            std::string::npos)
+      << completion;
+  // help knows help and completion; --help works after a command's arguments too.
+  for (const char* line :
+       {" help help", " help completion", " completion --help", " run suites/quick.yaml --help"}) {
+    const auto [h, htext] = Shell(exe + line);
+    EXPECT_EQ(h, 0) << line << ": " << htext;
+    EXPECT_EQ(htext.rfind("usage:", 0), 0u) << line << ": " << htext;
+  }
 }
 
 }  // namespace
