@@ -297,8 +297,10 @@ int ListPluginsCommand(const std::vector<std::string>& args) {
                   << FormatParamValue(s.default_value);
         if (s.type == ParamType::kInt || s.type == ParamType::kDouble ||
             s.type == ParamType::kDoubleList) {
-          if (std::isfinite(s.min) || std::isfinite(s.max))
-            std::cout << ", range [" << s.min << ", " << s.max << "]";
+          if (std::isfinite(s.min) || std::isfinite(s.max)) {
+            std::cout << ", range " << (std::isinf(s.min) ? "(" : "[") << s.min << ", " << s.max
+                      << (std::isinf(s.max) ? ")" : "]");
+          }
         }
         if (!s.choices.empty()) {
           std::cout << ", one of";

@@ -92,9 +92,12 @@ std::optional<double> Reader::Number(const YAML::Node& n, const std::string& pat
     }
   }
   if (!std::isfinite(v) || v < lo || v > hi || (lo_open && v == lo)) {
+    // An infinite bound is open: inf itself is never a valid value (a range "[0, inf]" read
+    // as if it were).
     std::ostringstream os;
-    os << "value " << n.Scalar() << " is out of range; valid: " << (lo_open ? "(" : "[") << lo
-       << ", " << hi << "]";
+    os << "value " << n.Scalar() << " is out of range; valid: "
+       << (lo_open || std::isinf(lo) ? "(" : "[") << lo << ", " << hi
+       << (std::isinf(hi) ? ")" : "]");
     Error(n, path, os.str());
     return std::nullopt;
   }
