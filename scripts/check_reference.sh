@@ -5,15 +5,23 @@
 #
 #   scripts/check_reference.sh suites/baselines.yaml [--jobs N] [--bin PATH]
 set -euo pipefail
-suite="${1:?usage: scripts/check_reference.sh SUITE.yaml [--jobs N] [--bin PATH]}"
+usage="usage: scripts/check_reference.sh SUITE.yaml [--jobs N] [--bin PATH]"
+case "${1:-}" in
+  -h|--help) sed -n '2,6p' "$0"; exit 0 ;;
+  ""|-*) echo "check_reference: $usage" >&2; exit 2 ;;
+esac
+suite="$1"
 shift
+[[ -f "$suite" ]] || { echo "check_reference: no suite file '$suite'" >&2; exit 2; }
 jobs=$(nproc)
 bin="build/bin/crowdsim-bench"
 while [[ $# -gt 0 ]]; do
   case "$1" in
-    --jobs) jobs="$2"; shift 2 ;;
-    --bin) bin="$2"; shift 2 ;;
-    *) echo "check_reference: unknown option '$1'" >&2; exit 2 ;;
+    --jobs|--bin)
+      [[ $# -ge 2 ]] || { echo "check_reference: $1 needs a value ($usage)" >&2; exit 2; }
+      if [[ "$1" == --jobs ]]; then jobs="$2"; else bin="$2"; fi
+      shift 2 ;;
+    *) echo "check_reference: unknown option '$1' ($usage)" >&2; exit 2 ;;
   esac
 done
 name=$(sed -n 's/^name: *\([A-Za-z0-9_.-]*\).*/\1/p' "$suite" | head -n1)
