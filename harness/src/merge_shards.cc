@@ -193,11 +193,6 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   // The joined episodes under the shards' configuration: the runner resumes all of them and
   // writes the tables and manifest exactly as after a single run.
   std::error_code ec;
-  if (OutputFolderKind(out_dir) == "a training") {
-    throw RunRefused("'" + out_dir.string() +
-                     "' holds a training (training.yaml); merge into a folder of its own: "
-                     "choose another --out");
-  }
   // merge replaces what --out holds: only an earlier merge of these shards' configuration.
   for (const fs::path& dir : shard_dirs) {
     if (fs::exists(out_dir, ec) && fs::equivalent(dir, out_dir, ec)) {
@@ -224,9 +219,9 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     throw RunError("cannot create the output folder '" + out_dir.string() + "': " + ec.message());
   }
   // Held from the first write to the last (the runner below shares it: same process).
-  std::string busy;
-  const auto lock = OutputFolderLock::Acquire(out_dir, &busy);
-  if (!lock) throw RunRefused(busy);
+  std::string refused;
+  const auto lock = ClaimOutputFolder(out_dir, "a suite run", &refused);
+  if (!lock) throw RunRefused(refused);
   std::string text = EpisodeCsvHeader() + "\n";
   for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
   WriteFileAtomically(out_dir / "episodes.csv", text);

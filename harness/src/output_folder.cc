@@ -67,4 +67,18 @@ std::string OutputFolderKind(const fs::path& dir) {
   return "";
 }
 
+std::shared_ptr<OutputFolderLock> ClaimOutputFolder(const fs::path& dir, const std::string& kind,
+                                                    std::string* why) {
+  auto lock = OutputFolderLock::Acquire(dir, why);
+  if (!lock) return nullptr;
+  const std::string held = OutputFolderKind(dir);
+  if (!held.empty() && held != kind) {
+    *why = "'" + dir.string() + "' holds " + held +
+           (held == "a training" ? " (training.yaml)" : " (manifest.json, episodes.csv)") + "; " +
+           kind + " writes into a folder of its own: choose another --out";
+    return nullptr;
+  }
+  return lock;
+}
+
 }  // namespace crowdsim

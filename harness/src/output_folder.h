@@ -35,4 +35,10 @@ class OutputFolderLock {
 /// (manifest.json or episodes.csv), or "" (nothing of ours, or no folder).
 std::string OutputFolderKind(const std::filesystem::path& dir);
 
+/// Claims the existing folder `dir` for output of `kind` ("a suite run" or "a training"): its
+/// lock, once no other process holds it and the folder holds no output of the other kind.
+/// Null, and in `*why` the refusal (naming the folder and the fix), otherwise.
+std::shared_ptr<OutputFolderLock> ClaimOutputFolder(const std::filesystem::path& dir,
+                                                    const std::string& kind, std::string* why);
+
 }  // namespace crowdsim

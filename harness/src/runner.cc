@@ -482,14 +482,9 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   RunSummary summary;
   const auto worlds = PreflightRows(suite, registry, &facts);  // before the folder is made
   summary.out_dir = PrepareOutDir(suite, options);
-  std::string busy;
-  const auto lock = OutputFolderLock::Acquire(summary.out_dir, &busy);
-  if (!lock) throw RunRefused(busy);
-  if (OutputFolderKind(summary.out_dir) == "a training") {
-    throw RunRefused("'" + summary.out_dir.string() +
-                     "' holds a training (training.yaml); a suite run writes into a folder of "
-                     "its own: choose another --out");
-  }
+  std::string refused;
+  const auto lock = ClaimOutputFolder(summary.out_dir, "a suite run", &refused);
+  if (!lock) throw RunRefused(refused);
   if (options.fresh) {
     // --fresh discards the stored results, those set aside by earlier reruns with them.
     std::error_code ec;

@@ -95,8 +95,8 @@ std::optional<double> Reader::Number(const YAML::Node& n, const std::string& pat
     // An infinite bound is open: inf itself is never a valid value (a range "[0, inf]" read
     // as if it were).
     std::ostringstream os;
-    os << "value " << n.Scalar() << " is out of range; valid: "
-       << (lo_open || std::isinf(lo) ? "(" : "[") << lo << ", " << hi
+    os << "value " << n.Scalar()
+       << " is out of range; valid: " << (lo_open || std::isinf(lo) ? "(" : "[") << lo << ", " << hi
        << (std::isinf(hi) ? ")" : "]");
     Error(n, path, os.str());
     return std::nullopt;

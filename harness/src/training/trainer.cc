@@ -648,14 +648,9 @@ TrainSummary Trainer::Run() {
     throw TrainError("cannot create the output folder '" + summary_.out_dir.string() +
                      "': " + ec.message());
   }
-  std::string busy;
-  const auto lock = OutputFolderLock::Acquire(summary_.out_dir, &busy);
-  if (!lock) throw TrainRefused(busy);
-  if (OutputFolderKind(summary_.out_dir) == "a suite run") {
-    throw TrainRefused("'" + summary_.out_dir.string() +
-                       "' holds a suite run (manifest.json, episodes.csv); a training writes "
-                       "into a folder of its own: choose another --out");
-  }
+  std::string refused;
+  const auto lock = ClaimOutputFolder(summary_.out_dir, "a training", &refused);
+  if (!lock) throw TrainRefused(refused);
   if (options_.resume) {
     LoadCheckpoint();
     OpenEpisodeLog(state_.episode_log_bytes);
