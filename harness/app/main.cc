@@ -247,14 +247,17 @@ int main(int argc, char** argv) {
     return 2;
   }
   args.erase(args.begin());
-  // --help anywhere among a command's arguments (run suites/quick.yaml --help).
-  if (std::find(args.begin(), args.end(), "--help") != args.end() ||
-      (!args.empty() && args[0] == "-h")) {
+  // --help first; anywhere else among the options, Args::Parse says so (HelpRequested), as it
+  // alone knows which tokens are option values (--out --help names a folder).
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
     std::cout << "usage:\n" << command->usage << "\n" << kNotes;
     return 0;
   }
   try {
     return command->run(args);
+  } catch (const crowdsim::cli::HelpRequested&) {
+    std::cout << "usage:\n" << command->usage << "\n" << kNotes;
+    return 0;
   } catch (const crowdsim::cli::UsageError& e) {
     std::cerr << "error: " << e.what() << "\nusage:\n" << command->usage;
     return 2;

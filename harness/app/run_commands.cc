@@ -112,17 +112,23 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
   opt.progress = opt.progress && group.rank() == 0;
   if (group.rank() == 0) ExplainInterruption(out);
   bool ok = true, refused = false;
+  // One write per message: the ranks share stderr, and std::cerr writes each << at once, so
+  // pieces of two ranks' lines interleaved.
+  auto say = [&](const std::string& what) {
+    const std::string line = "error: rank " + std::to_string(group.rank()) + ": " + what + "\n";
+    std::cerr.write(line.data(), static_cast<std::streamsize>(line.size()));
+  };
   try {
     RunSuite(suite, registry, opt);
   } catch (const RunRefused& e) {
-    std::cerr << "error: rank " << group.rank() << ": " << e.what() << "\n";
+    say(e.what());
     ok = false;
     refused = true;
   } catch (const std::exception& e) {  // RunError, or a write that failed: never leave early,
-    std::cerr << "error: rank " << group.rank() << ": " << e.what() << "\n";
+    say(e.what());
     ok = false;  // the other ranks wait in the collective calls below
   } catch (...) {
-    std::cerr << "error: rank " << group.rank() << ": a non-standard exception\n";
+    say("a non-standard exception");
     ok = false;
   }
   // Three collective calls, made by every rank in this order.
@@ -131,14 +137,13 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
   const bool all_refused = group.AllOk(refused);
   if (!all_ok) {
     if (group.rank() == 0) {
-      if (all_refused) {
-        std::cerr << "error: the run was refused (see above); nothing was run\n";
-      } else {
-        std::cerr << "error: not every rank finished"
-                  << (none_refused ? "" : " (some were refused)")
-                  << "; the episodes that ran are kept in " << (out / "ranks").string()
-                  << "; fix what is said above and run the same command again to resume\n";
-      }
+      const std::string line =
+          all_refused ? std::string("error: the run was refused (see above); nothing was run\n")
+                      : "error: not every rank finished" +
+                            std::string(none_refused ? "" : " (some were refused)") +
+                            "; the episodes that ran are kept in " + (out / "ranks").string() +
+                            "; fix what is said above and run the same command again to resume\n";
+      std::cerr.write(line.data(), static_cast<std::streamsize>(line.size()));
     }
     return all_refused ? 2 : 1;
   }

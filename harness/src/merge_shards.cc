@@ -201,17 +201,21 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     }
   }
   if (OutputFolderKind(out_dir) == "a suite run") {
+    // What merge may replace: results of these shards' configuration and episode count (an
+    // earlier merge of them, also one cut short before its manifest was complete), never
+    // another configuration, another count, or a shard.
     const fs::path held = out_dir / "manifest.json";
-    const bool merged = fs::exists(held, ec) && ReadJsonFile(held).contains("shard_commits");
-    if (!merged) {
-      throw RunRefused("'" + out_dir.string() +
-                       "' holds a run, which merge would replace; merge into a folder of its "
-                       "own (choose another --out)");
-    }
-    if (ReadManifestField(held, "config_hash") != hash) {
-      throw RunRefused("'" + out_dir.string() + "' holds the merge of another configuration (" +
-                       ReadManifestField(held, "config_hash") + ", these shards " + hash +
-                       "); choose another --out");
+    const std::string held_hash =
+        fs::exists(held, ec) ? ReadManifestField(held, "config_hash") : "";
+    const long held_episodes = fs::exists(held, ec) ? ReadManifestInteger(held, "episodes") : -1;
+    const bool held_shard = fs::exists(held, ec) && !ReadManifestField(held, "shard").empty();
+    if (held_hash != hash || held_shard || (held_episodes >= 0 && held_episodes != episodes)) {
+      throw RunRefused("'" + out_dir.string() + "' holds " +
+                       (held_shard          ? std::string("a shard")
+                        : held_hash != hash ? "a run of another configuration"
+                                            : "a run of another episode count") +
+                       ", which merge would replace; merge into a folder of its own (choose "
+                       "another --out)");
     }
   }
   fs::create_directories(out_dir, ec);
@@ -231,6 +235,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   options.out_dir = out_dir;
   options.episodes = static_cast<int>(episodes);
   options.progress = false;
+  options.out_dir_claimed = true;  // held above, until the shards' commits are recorded
   RunSummary summary = RunSuite(suite, registry, options);
   if (summary.episodes_run != 0) {
     throw RunError("merge ran " + std::to_string(summary.episodes_run) +

@@ -4,8 +4,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <map>
 #include <mutex>
+#include <set>
 #include <string>
 
 namespace crowdsim {
@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::mutex g_mutex;
-std::map<fs::path, std::weak_ptr<OutputFolderLock>> g_held;  // by canonical folder
+std::set<fs::path> g_held;  // canonical folders a holder in this process writes into
 
 }  // namespace
 
@@ -22,34 +22,41 @@ std::shared_ptr<OutputFolderLock> OutputFolderLock::Acquire(const fs::path& dir,
   std::error_code ec;
   const fs::path key = fs::weakly_canonical(dir, ec);
   std::lock_guard<std::mutex> guard(g_mutex);
-  if (const auto it = g_held.find(key); it != g_held.end()) {
-    if (auto shared = it->second.lock()) return shared;
+  if (g_held.count(key)) {
+    *why = "this process is already writing into '" + dir.string() +
+           "' (another run or evaluate at the same time); wait until it ends, or choose another "
+           "--out";
+    return nullptr;
   }
   const fs::path file = dir / ".crowdsim-bench.lock";
   const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  // A folder we cannot open a file in is one we cannot write either: the writes say why.
-  std::shared_ptr<OutputFolderLock> lock(new OutputFolderLock(fd));
+  // A folder we cannot open a file in is one we cannot write either: the writes say why. A
+  // file system without locks (errors other than "held") runs unlocked.
   if (fd >= 0) {
     struct flock request {};
     request.l_type = F_WRLCK;
     request.l_whence = SEEK_SET;  // the whole file
-    if (::fcntl(fd, F_SETLK, &request) != 0) {
-      if (errno != EACCES && errno != EAGAIN) {
-        g_held[key] = lock;
-        return lock;  // no locking on this file system: go on as before locks existed
-      }
+    if (::fcntl(fd, F_SETLK, &request) != 0 && (errno == EACCES || errno == EAGAIN)) {
       struct flock holder {};
       holder.l_type = F_WRLCK;
       holder.l_whence = SEEK_SET;
-      const bool known = ::fcntl(fd, F_GETLK, &holder) == 0 && holder.l_type != F_UNLCK;
+      const bool known =
+          ::fcntl(fd, F_GETLK, &holder) == 0 && holder.l_type != F_UNLCK && holder.l_pid > 0;
+      ::close(fd);
       *why = "another crowdsim-bench process" +
              (known ? " (pid " + std::to_string(holder.l_pid) + ")" : std::string()) +
              " is writing into '" + dir.string() + "'; wait until it ends, or choose another --out";
       return nullptr;
     }
   }
-  g_held[key] = lock;
-  return lock;
+  g_held.insert(key);
+  // Released under the mutex: closing a descriptor of the file drops this process's lock, so
+  // no new holder may take the folder before the old descriptor is closed.
+  return std::shared_ptr<OutputFolderLock>(new OutputFolderLock(fd), [key](OutputFolderLock* held) {
+    std::lock_guard<std::mutex> release(g_mutex);
+    delete held;
+    g_held.erase(key);
+  });
 }
 
 OutputFolderLock::~OutputFolderLock() {

@@ -15,11 +15,10 @@ namespace crowdsim {
 /// crash leaves no stale lock; it works on NFS). The file itself stays (git ignores it).
 class OutputFolderLock {
  public:
-  /// The lock, or null when another process holds it: then `*why` names that process and the
-  /// folder. In one process, holders of the same folder share one lock (merge writes, then
-  /// runs the runner into the folder it holds). A file system that cannot lock (ENOLCK,
-  /// ENOSYS: NFS without a lock daemon, Lustre without flock) gives an unlocked holder: the
-  /// run goes on as before locks existed.
+  /// The lock, or null when another process, or another holder in this one (two Python
+  /// threads evaluating into one folder), holds it: then `*why` names the holder and the
+  /// folder. A file system that cannot lock (ENOLCK, ENOSYS: NFS without a lock daemon, Lustre
+  /// without flock) gives an unlocked holder: the run goes on as before locks existed.
   static std::shared_ptr<OutputFolderLock> Acquire(const std::filesystem::path& dir,
                                                    std::string* why);
   ~OutputFolderLock();

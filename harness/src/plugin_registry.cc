@@ -161,7 +161,12 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   fs::path canonical = fs::weakly_canonical(path, ec);
   if (ec) canonical = path;
   const std::string key = canonical.string();
-  if (auto it = loaded_.find(key); it != loaded_.end()) return *it->second;
+  // Cached by the folder it is found in and its name (the file's own symlink not followed):
+  // the same library reached from the harness's folder and from a link of yours are two uses,
+  // each the harness's own or not by its folder, whatever was loaded first.
+  const fs::path folder = fs::weakly_canonical(fs::absolute(path, ec).parent_path(), ec);
+  const std::string use = (folder / path.filename()).string();
+  if (auto it = loaded_.find(use); it != loaded_.end()) return *it->second;
 
   auto lib = std::make_shared<boost::dll::shared_library>();
   PinBlasKernel();  // before a learned policy's plugin brings OpenBLAS in
@@ -210,7 +215,7 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   }
   auto loaded = std::make_unique<LoadedPlugin>();
   loaded->path = canonical;
-  loaded->folder = fs::weakly_canonical(fs::absolute(path, ec).parent_path(), ec);
+  loaded->folder = folder;
   loaded->library = std::move(lib);
   loaded->descriptor = &desc;
   try {
@@ -220,7 +225,7 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
                       e.what() + ". Fix the plugin.");
   }
   const LoadedPlugin& ref = *loaded;
-  loaded_[key] = std::move(loaded);
+  loaded_[use] = std::move(loaded);
   return ref;
 }
 

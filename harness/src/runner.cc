@@ -483,8 +483,10 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   const auto worlds = PreflightRows(suite, registry, &facts);  // before the folder is made
   summary.out_dir = PrepareOutDir(suite, options);
   std::string refused;
-  const auto lock = ClaimOutputFolder(summary.out_dir, "a suite run", &refused);
-  if (!lock) throw RunRefused(refused);
+  const auto lock = options.out_dir_claimed
+                        ? nullptr
+                        : ClaimOutputFolder(summary.out_dir, "a suite run", &refused);
+  if (!lock && !options.out_dir_claimed) throw RunRefused(refused);
   if (options.fresh) {
     // --fresh discards the stored results, those set aside by earlier reruns with them.
     std::error_code ec;

@@ -143,7 +143,9 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
   std::vector<std::string> names;
   for (std::size_t j = 0; j < node.size(); ++j) {
     names.push_back(ItemName(node[j]));
-    if (!found && (IsIndex(sel) ? std::stoul(sel) == j : names.back() == sel)) found = j;
+    // An index too long for a number is no item (std::stoul would throw).
+    if (!found && (IsIndex(sel) ? sel.size() <= 9 && std::stoul(sel) == j : names.back() == sel))
+      found = j;
   }
   if (!found) {
     std::string valid;
@@ -240,7 +242,7 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
     if (resolved[i].starts_with("rows[") && !row_map.empty()) {
       const std::size_t close = resolved[i].find(']');
       const std::size_t row = std::stoul(resolved[i].substr(5, close - 5));
-      if (row < row_map.size()) {
+      if (row < row_map.size() && !row_map[row].empty()) {  // empty: its sweep failed
         paths.clear();
         for (std::size_t now : row_map[row]) {
           paths.push_back("rows[" + std::to_string(now) + resolved[i].substr(close));
@@ -305,7 +307,7 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
   if (row_map != nullptr) row_map->assign(rows.size(), {});
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const YAML::Node row = rows[r];
-    const YAML::Node sweep = row.IsMap() ? row["sweep"] : YAML::Node();
+    const YAML::Node sweep = row.IsMap() ? row["sweep"] : YAML::Node(YAML::NodeType::Undefined);
     if (!sweep.IsDefined()) {
       if (row_map != nullptr) (*row_map)[r].push_back(expanded.size());
       expanded.push_back(row);
@@ -413,7 +415,7 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
 void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& file,
                        std::vector<SuiteError>* errors) {
   for (SuiteError& e : *errors) {
-    if (e.file.starts_with("--set ")) continue;
+    const bool from_set = e.file.starts_with("--set ");  // its place is the option: kept
     for (const SweptRow& row : swept) {
       const std::string prefix = "rows[" + std::to_string(row.row) + "].";
       if (!e.key_path.starts_with(prefix)) continue;
@@ -426,7 +428,7 @@ void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& fi
                              rest.starts_with(key.path + "[") || key.path.starts_with(rest + ".");
         if (!related) continue;
         e.key_path = source + ".sweep." + key.path;
-        if (e.line == 0) {  // a key the sweep made: the sweep entry's place
+        if (e.line == 0 && !from_set) {  // a key the sweep made: the sweep entry's place
           e.file = file;
           e.line = key.line;
           e.column = key.column;

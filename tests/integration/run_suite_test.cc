@@ -576,10 +576,20 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
     }
     return std::string("merged");
   };
-  EXPECT_NE(merge_into(dir_.path() / "whole").find("holds a run, which merge would replace"),
-            std::string::npos);
+  const Suite other_whole = LoadOrDie(other);  // seed 12
+  Run(other_whole, "other_whole", 2);
+  dir_.Write("suite.yaml", kSuite);
+  EXPECT_NE(merge_into(dir_.path() / "other_whole")
+                .find("holds a run of another configuration, which merge would replace"),
+            std::string::npos)
+      << merge_into(dir_.path() / "other_whole");
   EXPECT_NE(merge_into(shards[0]).find("is one of the shards"), std::string::npos);
+  EXPECT_NE(merge_into(o.out_dir).find("holds a shard"), std::string::npos);
   EXPECT_EQ(merge_into(dir_.path() / "merged"), "merged");  // again: the same merge
+  // A merge cut short (only its first manifest written) is merged again, not refused.
+  std::ofstream(dir_.path() / "merged" / "manifest.json")
+      << "{\"config_hash\": \"" << s.ConfigHash() << "\"}\n";
+  EXPECT_EQ(merge_into(dir_.path() / "merged"), "merged");
   EXPECT_EQ(WithoutTimingColumns(ReadText(dir_.path() / "whole" / "episodes.csv")),
             WithoutTimingColumns(ReadText(dir_.path() / "merged" / "episodes.csv")));
   // The suite file of another suite.

@@ -120,6 +120,21 @@ TEST_F(SuiteEdits, AKeyThatASetMadeOnItsWayIsBlamedOnTheSet) {
       << All(two);
 }
 
+TEST_F(SuiteEdits, ASetIntoASweptRowIsOneErrorAndAnIndexTooLongIsNoItem) {
+  // The row the sweep makes 12 of: one error, named by the --set (it was one per expanded row,
+  // named rows[0] to rows[11]); an index beyond any number: no such item (std::stoul threw).
+  const auto r = Load(kSuite, {"rows[0].params.bogus=1"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_EQ(r.errors.size(), 1u) << All(r);
+  EXPECT_NE(All(r).find("--set rows[0].params.bogus=1: rows[0].params.bogus: unknown parameter"),
+            std::string::npos)
+      << All(r);
+  const auto huge = Load(kSuite, {"rows[99999999999999999999999].y=1"});
+  ASSERT_FALSE(huge.suite);
+  EXPECT_NE(All(huge).find("has no item [99999999999999999999999]"), std::string::npos)
+      << All(huge);
+}
+
 TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
   const auto base = Load(kSuite);
   ASSERT_TRUE(base.suite) << All(base);

@@ -21,6 +21,7 @@ Args Args::Parse(const std::vector<std::string>& args, const std::vector<std::st
       value = s.substr(eq + 1);
       inline_value = true;
     }
+    if (name == "--help" && !inline_value) throw HelpRequested();
     if (std::find(flags.begin(), flags.end(), name) != flags.end()) {
       if (inline_value) throw UsageError(name + " takes no value");
       a.options[name] = "";

@@ -51,7 +51,7 @@ std::string ReadTrainingEpisodes(const std::filesystem::path& folder) {
   int n = 0;
   while ((n = gzread(in, buffer, sizeof(buffer))) > 0) text.append(buffer, static_cast<size_t>(n));
   int error = Z_OK;
-  const char* what = gzerror(in, &error);
+  const std::string what = gzerror(in, &error);  // a copy: gzclose frees zlib's text
   gzclose(in);
   if (n < 0 || (error != Z_OK && error != Z_STREAM_END)) {
     throw std::runtime_error(packed.string() + " is damaged: " + what);

@@ -79,7 +79,8 @@ class PluginRegistry {
   const LoadedPlugin& LoadPath(const std::filesystem::path& path);
 
   std::vector<std::filesystem::path> search_dirs_;
-  std::map<std::string, std::unique_ptr<LoadedPlugin>> loaded_;  // by canonical path
+  std::map<std::string, std::unique_ptr<LoadedPlugin>>
+      loaded_;  // by folder (resolved) and file name
 };
 
 }  // namespace crowdsim

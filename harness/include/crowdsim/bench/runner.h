@@ -47,6 +47,9 @@ struct RunOptions {
   /// (`merge` joins the shards). 1 of 1 is the whole suite.
   int shard_index = 1;
   int shard_count = 1;
+  /// The caller already holds `out_dir` (its lock and kind checked), as merge does around
+  /// the run that writes the joined tables: the run does not claim it again.
+  bool out_dir_claimed = false;
 };
 
 struct RunSummary {

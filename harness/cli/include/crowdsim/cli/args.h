@@ -17,6 +17,12 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// `--help` among a command's options (not as an option's value): main prints the usage.
+class HelpRequested : public std::exception {
+ public:
+  const char* what() const noexcept override { return "--help"; }
+};
+
 /// Positional arguments and --options of one subcommand.
 struct Args {
   std::vector<std::string> positional;
