@@ -80,9 +80,15 @@ std::shared_ptr<OutputFolderLock> ClaimOutputFolder(const fs::path& dir, const s
   if (!lock) return nullptr;
   const std::string held = OutputFolderKind(dir);
   if (!held.empty() && held != kind) {
-    *why = "'" + dir.string() + "' holds " + held +
-           (held == "a training" ? " (training.yaml)" : " (manifest.json, episodes.csv)") + "; " +
-           kind + " writes into a folder of its own: choose another --out";
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on the one long sum.
+    std::string text = "'";
+    text += dir.string();
+    text += "' holds ";
+    text += held;
+    text += held == "a training" ? " (training.yaml); " : " (manifest.json, episodes.csv); ";
+    text += kind;
+    text += " writes into a folder of its own: choose another --out";
+    *why = std::move(text);
     return nullptr;
   }
   return lock;

@@ -11,7 +11,10 @@ Suite LoadSuiteOrThrow(const std::string& path, PluginRegistry& registry,
   SuiteLoadResult r = LoadSuite(path, registry, set);
   if (!r.suite) {
     std::string msg;
-    for (const auto& e : r.errors) msg += (msg.empty() ? "" : "\n") + e.Format();
+    for (const auto& e : r.errors) {
+      if (!msg.empty()) msg += '\n';
+      msg += e.Format();  // appended: GCC 12 warned (-Wrestrict, falsely) on "\n" + text
+    }
     throw py::value_error(msg);
   }
   return std::move(*r.suite);
