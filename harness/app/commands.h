@@ -10,6 +10,11 @@
 
 namespace crowdsim::cli {
 
+/// What a YAML file is, by its first top-level `training:`/`policy:` (a training file) or
+/// `rows:` (a suite) key.
+enum class SpecFileKind { kUnknown, kSuite, kTraining };
+SpecFileKind KindOfSpecFile(const std::string& file);
+
 /// Loads a suite with its --set overrides, or prints every error (and, for a training file,
 /// what to do with it) and returns nothing.
 std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,

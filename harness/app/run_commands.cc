@@ -20,15 +20,15 @@
 
 namespace crowdsim::cli {
 
-/// A training file has a top-level `training` or `policy` key (a suite has `rows`).
-static bool LooksLikeTrainingFile(const std::string& file) {
+SpecFileKind KindOfSpecFile(const std::string& file) {
   std::ifstream f(file);
   std::string line;
   while (std::getline(f, line)) {
-    if (line.starts_with("training:") || line.starts_with("policy:")) return true;
-    if (line.starts_with("rows:")) return false;
+    if (line.starts_with("training:") || line.starts_with("policy:"))
+      return SpecFileKind::kTraining;
+    if (line.starts_with("rows:")) return SpecFileKind::kSuite;
   }
-  return false;
+  return SpecFileKind::kUnknown;
 }
 
 std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,
@@ -38,7 +38,7 @@ std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& regis
     for (const auto& e : r.errors) std::cerr << "error: " << e.Format() << "\n";
     std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file
               << "\n";
-    if (LooksLikeTrainingFile(file)) {
+    if (KindOfSpecFile(file) == SpecFileKind::kTraining) {
       std::cerr << "(" << file << " is a training file: train it with `crowdsim-bench train "
                 << file << "`; run takes a suite, whose rows: list the policies to compare)\n";
     }
@@ -232,7 +232,7 @@ int ValidateCommand(const std::vector<std::string>& args) {
   int status = 0;
   for (const auto& file : a.positional) {
     PluginRegistry registry;
-    if (LooksLikeTrainingFile(file)) {
+    if (KindOfSpecFile(file) == SpecFileKind::kTraining) {
       training::TrainSpecLoadResult loaded =
           training::LoadTrainSpec(file, registry, a.All("--set"));
       if (!loaded.spec) {

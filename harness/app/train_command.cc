@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -51,13 +50,9 @@ int Train(const TrainJob& job) {
     for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
     std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
               << " in " << job.file << "\n";
-    std::ifstream text(job.file);
-    for (std::string line; std::getline(text, line);) {
-      if (line.starts_with("rows:")) {
-        std::cerr << "(" << job.file << " is a suite: run it with `crowdsim-bench run " << job.file
-                  << "`; train takes a training file, see suites/train/)\n";
-        break;
-      }
+    if (KindOfSpecFile(job.file) == SpecFileKind::kSuite) {
+      std::cerr << "(" << job.file << " is a suite: run it with `crowdsim-bench run " << job.file
+                << "`; train takes a training file, see suites/train/)\n";
     }
     return 2;
   }

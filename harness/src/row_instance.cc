@@ -46,6 +46,15 @@ ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const
   return req;
 }
 
+Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const WorldSource& world,
+                             int episode, ScenarioRequest* request) {
+  const ScenarioRequest req = MakeEpisodeRequest(suite, row, world, episode);
+  Scenario scenario = world.Make(req);
+  CheckHumanCount(req, scenario);
+  if (request != nullptr) *request = req;
+  return scenario;
+}
+
 Replay ReplayEpisode(const Suite& suite, size_t row_index, int episode, PluginRegistry& registry,
                      bool record_trajectory) {
   if (row_index >= suite.rows.size()) {
@@ -57,9 +66,7 @@ Replay ReplayEpisode(const Suite& suite, size_t row_index, int episode, PluginRe
   auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
   RowInstance instance(row, registry);
   Replay replay;
-  const ScenarioRequest request = MakeEpisodeRequest(suite, row, *world, episode);
-  replay.scenario = world->Make(request);
-  CheckHumanCount(request, replay.scenario);
+  replay.scenario = MakeEpisodeScenario(suite, row, *world, episode);
   Episode ep(replay.scenario, suite.sim, instance.Agents(replay.scenario.humans.size()),
              record_trajectory);
   replay.result = ep.Run();

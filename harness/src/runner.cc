@@ -35,30 +35,35 @@ std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& 
   return uses;
 }
 
+/// A row as its preflight built it: the world, the plugins and episode 0's scenario.
+struct PreflightedRow {
+  std::shared_ptr<WorldSource> world;
+  std::unique_ptr<RowInstance> instance;
+  Scenario episode0;
+};
+
 /// Builds row `r`'s world, sensors and policies once, checks that the robot has the sensors
 /// it needs, and makes and checks episode 0's scenario as the run does (a world too small for
-/// the row's humans fails here, in `validate` too); returns the world. Throws RunError naming
-/// the row.
-std::shared_ptr<WorldSource> PreflightRow(const Suite& suite, size_t r, PluginRegistry& registry) {
+/// the row's humans fails here, in `validate` too). Throws RunError naming the row.
+PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& registry) {
   const RowSpec& row = suite.rows[r];
   const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
   try {
-    auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
-    RowInstance probe(row, registry);
-    probe.Agents(1);
-    if (const std::string unmet = probe.UnmetSensorNeed(); !unmet.empty()) {
+    PreflightedRow built;
+    built.world = registry.MakeWorld(*row.world.loaded, row.world.params);
+    built.instance = std::make_unique<RowInstance>(row, registry);
+    built.instance->Agents(1);
+    if (const std::string unmet = built.instance->UnmetSensorNeed(); !unmet.empty()) {
       throw RunError(where + ": " + unmet + "; add it to the row's sensors list");
     }
     try {
-      const ScenarioRequest request = MakeEpisodeRequest(suite, row, *world, 0);
-      const Scenario scenario = world->Make(request);
-      CheckHumanCount(request, scenario);
-      CheckScenario(scenario, suite.sim);
+      built.episode0 = MakeEpisodeScenario(suite, row, *built.world, 0);
+      CheckScenario(built.episode0, suite.sim);
     } catch (const std::exception& e) {
       throw RunError(where + ": the scenario of episode 0 (world '" +
                      row.world.loaded->descriptor->name + "') cannot be made: " + e.what());
     }
-    return world;
+    return built;
   } catch (const PluginError& e) {
     throw RunError(where + ": " + e.what());
   }
@@ -70,7 +75,7 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
   std::vector<std::string> errors;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     try {
-      const auto world = PreflightRow(suite, r, registry);
+      PreflightedRow built = PreflightRow(suite, r, registry);
       // The first step of episode 0, played as a run plays it: what fails on every step (a
       // lidar whose beams do not fit a learned policy, a sensor that throws) fails here, not
       // as a table of policy errors. Only in a row of the harness's own plugins without a
@@ -81,9 +86,8 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
         return PluginRegistry::IsHarnessPlugin(*use.second->loaded);
       });
       if (!own || suite.episode_timeout_s > 0 || suite.isolation == IsolationMode::kOn) continue;
-      RowInstance instance(row, registry);
-      const Scenario scenario = world->Make(MakeEpisodeRequest(suite, row, *world, 0));
-      Episode episode(scenario, suite.sim, instance.Agents(scenario.humans.size()));
+      const Scenario& scenario = built.episode0;
+      Episode episode(scenario, suite.sim, built.instance->Agents(scenario.humans.size()));
       if (!episode.done()) episode.Step();
       if (episode.result().status == EpisodeStatus::kPolicyError) {
         errors.push_back("row '" + row.label + "' (rows[" + std::to_string(r) +
@@ -151,7 +155,7 @@ std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
   std::string errors;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     try {
-      worlds.push_back(PreflightRow(suite, r, registry));
+      worlds.push_back(PreflightRow(suite, r, registry).world);
       facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
     } catch (const RunError& e) {
       errors += (errors.empty() ? "" : "\n") + std::string(e.what());
@@ -217,9 +221,8 @@ EpisodeLine RunEpisode(const Suite& suite, const RowSpec& row, const WorldSource
   EpisodeLine line;
   line.row = row.label;
   line.episode = episode_index;
-  const ScenarioRequest req = MakeEpisodeRequest(suite, row, world, episode_index);
-  const Scenario scenario = world.Make(req);
-  CheckHumanCount(req, scenario);
+  ScenarioRequest req;
+  const Scenario scenario = MakeEpisodeScenario(suite, row, world, episode_index, &req);
   Episode episode(scenario, suite.sim, instance.Agents(scenario.humans.size()));
   const EpisodeResult& result = episode.Run();
   line.seed = req.seed;

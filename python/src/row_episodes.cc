@@ -20,10 +20,8 @@ const Observation& RowEpisodes::Reset(int episode, bool record) {
   if (episode < 0)
     throw std::invalid_argument("episode must be >= 0, got " + std::to_string(episode));
   episode_.reset();
-  const ScenarioRequest request = MakeEpisodeRequest(suite_, row_, *world_, episode);
-  scenario_ = world_->Make(request);
   try {
-    CheckHumanCount(request, scenario_);
+    scenario_ = MakeEpisodeScenario(suite_, row_, *world_, episode);
     CheckScenario(scenario_, suite_.sim);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("episode " + std::to_string(episode) + ": " + e.what());

@@ -40,6 +40,12 @@ class RowInstance {
 ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const WorldSource& world,
                                    int episode);
 
+/// The world's scenario for that request, checked to hold the humans asked for
+/// (CheckHumanCount); `request` (optional) receives the request. Throws what the world throws,
+/// or std::invalid_argument.
+Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const WorldSource& world,
+                             int episode, ScenarioRequest* request = nullptr);
+
 /// Re-simulates one episode of a suite exactly as `crowdsim-bench run` does, optionally
 /// recording the trajectory. Throws PluginError or std::out_of_range for a bad row index.
 struct Replay {
