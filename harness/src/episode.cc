@@ -222,6 +222,8 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
       ctx.seed = SplitMix64(scenario_.seed + i + 1);
       agents_.humans[i]->Reset(ctx);
     }
+  } catch (const AbortRun&) {
+    throw;  // the whole run stops: no result for this episode
   } catch (const std::exception& e) {
     result_.error = std::string("Reset failed: ") + e.what();
     Finish(EpisodeStatus::kPolicyError);
@@ -243,6 +245,8 @@ void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const
     r.sensor = agents_.sensors[s].name;
     try {
       agents_.sensors[s].sensor->Sense(input, &r);
+    } catch (const AbortRun&) {
+      throw;
     } catch (const std::exception& e) {
       throw std::runtime_error("sensor '" + r.sensor + "' failed: " + e.what());
     } catch (...) {
@@ -275,6 +279,8 @@ void Episode::DecideHuman(int i) {
   human_obs_.self_index = i;
   try {
     human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
+  } catch (const AbortRun&) {
+    throw;
   } catch (const std::exception& e) {
     throw std::runtime_error(PolicyName(i) + " failed: " + e.what());
   } catch (...) {
@@ -326,6 +332,8 @@ StepInfo Episode::Step() {
       throw std::runtime_error(PolicyName(-1) + " returned a non-finite velocity");
     }
     CheckSpeed(info.robot_action.velocity, robot_.v_pref, -1);
+  } catch (const AbortRun&) {
+    throw;  // the whole run stops: no result for this episode
   } catch (const std::exception& e) {
     result_.error = e.what();
     Finish(EpisodeStatus::kPolicyError);

@@ -10,6 +10,7 @@ namespace crowdsim {
 
 Policy::~Policy() = default;
 void Policy::Reset(const EpisodeContext&) {}
+AbortRun::~AbortRun() = default;
 Sensor::~Sensor() = default;
 WorldSource::~WorldSource() = default;
 Lookahead::~Lookahead() = default;

@@ -168,6 +168,7 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   j["seed"] = suite.seed;
   j["episodes"] = facts.episodes;
   if (!facts.shard.empty()) j["shard"] = facts.shard;
+  if (facts.merged) j["merged"] = true;
   j["jobs"] = facts.jobs;
   j["isolated"] = facts.isolated;
   j["started_utc"] = facts.started_utc;

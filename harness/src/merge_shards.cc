@@ -201,19 +201,22 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     }
   }
   if (OutputFolderKind(out_dir) == "a suite run") {
-    // What merge may replace: results of these shards' configuration and episode count (an
-    // earlier merge of them, also one cut short before its manifest was complete), never
-    // another configuration, another count, or a shard.
+    // What merge may replace: an earlier merge of these shards' configuration and episode
+    // count (also one cut short: its manifest says "merged" from the first write), never a
+    // run (whose episodes beyond the count are kept for a longer rerun), another
+    // configuration, another count, or a shard.
     const fs::path held = out_dir / "manifest.json";
-    const std::string held_hash =
-        fs::exists(held, ec) ? ReadManifestField(held, "config_hash") : "";
-    const long held_episodes = fs::exists(held, ec) ? ReadManifestInteger(held, "episodes") : -1;
-    const bool held_shard = fs::exists(held, ec) && !ReadManifestField(held, "shard").empty();
-    if (held_hash != hash || held_shard || (held_episodes >= 0 && held_episodes != episodes)) {
+    const std::string held_hash = ReadManifestField(held, "config_hash");
+    const long held_episodes = ReadManifestInteger(held, "episodes");
+    const bool held_shard = !ReadManifestField(held, "shard").empty();
+    const bool held_merge = ReadManifestBool(held, "merged").value_or(false);
+    if (held_hash != hash || held_shard || !held_merge ||
+        (held_episodes >= 0 && held_episodes != episodes)) {
       throw RunRefused("'" + out_dir.string() + "' holds " +
                        (held_shard          ? std::string("a shard")
                         : held_hash != hash ? "a run of another configuration"
-                                            : "a run of another episode count") +
+                        : !held_merge       ? "a run of this configuration (not a merge)"
+                                            : "a merge of another episode count") +
                        ", which merge would replace; merge into a folder of its own (choose "
                        "another --out)");
     }
@@ -230,12 +233,13 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
   WriteFileAtomically(out_dir / "episodes.csv", text);
   WriteFileAtomically(out_dir / "manifest.json",
-                      FormatJson(nlohmann::ordered_json{{"config_hash", hash}}));
+                      FormatJson(nlohmann::ordered_json{{"config_hash", hash}, {"merged", true}}));
   RunOptions options;
   options.out_dir = out_dir;
   options.episodes = static_cast<int>(episodes);
   options.progress = false;
   options.out_dir_claimed = true;  // held above, until the shards' commits are recorded
+  options.merge = true;
   RunSummary summary = RunSuite(suite, registry, options);
   if (summary.episodes_run != 0) {
     throw RunError("merge ran " + std::to_string(summary.episodes_run) +

@@ -69,6 +69,33 @@ PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& regist
   }
 }
 
+/// The first step of episode 0, played as a run plays it: what fails on every step (a lidar
+/// whose beams do not fit a learned policy, a sensor that throws) fails before the run, not as
+/// a table of policy errors. Only in a row of the harness's own plugins without a timeout or
+/// isolation: the others run isolated, and their crash or hang would end this process. Throws
+/// RunError naming the row.
+void CheckFirstStep(const Suite& suite, size_t r, PreflightedRow& built) {
+  const RowSpec& row = suite.rows[r];
+  const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
+  const auto uses = RowPlugins(row);
+  const bool own = std::all_of(uses.begin(), uses.end(), [](const auto& use) {
+    return PluginRegistry::IsHarnessPlugin(*use.second->loaded);
+  });
+  if (!own || suite.episode_timeout_s > 0 || suite.isolation == IsolationMode::kOn) return;
+  try {
+    const Scenario& scenario = built.episode0;
+    Episode episode(scenario, suite.sim, built.instance->Agents(scenario.humans.size()));
+    if (!episode.done()) episode.Step();
+    if (episode.result().status == EpisodeStatus::kPolicyError) {
+      throw RunError(where + ": the first step of episode 0 fails: " + episode.result().error);
+    }
+  } catch (const RunError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw RunError(where + ": episode 0 cannot start: " + e.what());
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& registry) {
@@ -76,23 +103,7 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     try {
       PreflightedRow built = PreflightRow(suite, r, registry);
-      // The first step of episode 0, played as a run plays it: what fails on every step (a
-      // lidar whose beams do not fit a learned policy, a sensor that throws) fails here, not
-      // as a table of policy errors. Only in a row of the harness's own plugins without a
-      // timeout: `run` isolates the others, whose crash or hang would end validate.
-      const RowSpec& row = suite.rows[r];
-      const auto uses = RowPlugins(row);
-      const bool own = std::all_of(uses.begin(), uses.end(), [](const auto& use) {
-        return PluginRegistry::IsHarnessPlugin(*use.second->loaded);
-      });
-      if (!own || suite.episode_timeout_s > 0 || suite.isolation == IsolationMode::kOn) continue;
-      const Scenario& scenario = built.episode0;
-      Episode episode(scenario, suite.sim, built.instance->Agents(scenario.humans.size()));
-      if (!episode.done()) episode.Step();
-      if (episode.result().status == EpisodeStatus::kPolicyError) {
-        errors.push_back("row '" + row.label + "' (rows[" + std::to_string(r) +
-                         "]): the first step of episode 0 fails: " + episode.result().error);
-      }
+      CheckFirstStep(suite, r, built);
     } catch (const RunError& e) {
       errors.push_back(e.what());
     } catch (const std::exception& e) {
@@ -155,7 +166,9 @@ std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
   std::string errors;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     try {
-      worlds.push_back(PreflightRow(suite, r, registry).world);
+      PreflightedRow built = PreflightRow(suite, r, registry);
+      CheckFirstStep(suite, r, built);
+      worlds.push_back(built.world);
       facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
     } catch (const RunError& e) {
       errors += (errors.empty() ? "" : "\n") + std::string(e.what());
@@ -268,6 +281,9 @@ class EpisodeSink {
   EpisodeLines* done_;
 };
 
+// The failure of a run whose RunOptions::stop_requested said stop.
+constexpr const char* kStopped = "stopped on request";
+
 std::string Where(const RowSpec& row, int episode) {
   return "row '" + row.label + "', episode " + std::to_string(episode);
 }
@@ -276,7 +292,8 @@ std::string Where(const RowSpec& row, int episode) {
 /// naming the row and episode of the first failure, or the reason an append failed.
 void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
                        const std::vector<std::shared_ptr<WorldSource>>& worlds,
-                       const std::vector<Task>& tasks, int jobs, EpisodeSink& sink) {
+                       const std::vector<Task>& tasks, int jobs,
+                       const std::function<bool()>& stop_requested, EpisodeSink& sink) {
   std::mutex mutex;
   std::atomic<size_t> next{0};
   std::atomic<bool> failed{false};
@@ -284,6 +301,12 @@ void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
   auto worker = [&]() {
     std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());
     while (!failed) {
+      if (stop_requested && stop_requested()) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failed) failure = kStopped;
+        failed = true;
+        break;
+      }
       const size_t t = next.fetch_add(1);
       if (t >= tasks.size()) break;
       const Task task = tasks[t];
@@ -349,7 +372,8 @@ EpisodeLine LostEpisodeLine(const Suite& suite, const RowSpec& row, const WorldS
 /// worker was stopped from outside (SIGINT, SIGTERM, SIGHUP).
 void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
                          const std::vector<std::shared_ptr<WorldSource>>& worlds,
-                         const std::vector<Task>& tasks, int jobs, EpisodeSink& sink) {
+                         const std::vector<Task>& tasks, int jobs,
+                         const std::function<bool()>& stop_requested, EpisodeSink& sink) {
   std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());  // a worker's own
   std::string failure;
   WorkerPoolCallbacks callbacks;
@@ -371,7 +395,12 @@ void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
       failure = bytes.substr(1);
       return false;
     }
-    return sink.Add(DecodeEpisodeLine(std::string_view(bytes).substr(1)), &failure);
+    if (!sink.Add(DecodeEpisodeLine(std::string_view(bytes).substr(1)), &failure)) return false;
+    if (stop_requested && stop_requested()) {
+      failure = kStopped;
+      return false;
+    }
+    return true;
   };
   callbacks.lost = [&](size_t t, const WorkerLoss& loss) {
     const Task task = tasks[t];
@@ -431,9 +460,6 @@ void WriteShardFiles(const Suite& suite, const RunScope& scope, const EpisodeLin
     }
   }
   WriteFileAtomically(summary->out_dir / "episodes.csv", EpisodesCsvText(lines));
-  std::error_code ec;
-  fs::remove(summary->out_dir / "table.md", ec);
-  fs::remove(summary->out_dir / "table.csv", ec);
   WriteFileAtomically(summary->out_dir / "manifest.json", FormatManifestJson(suite, {}, facts));
   summary->table_markdown = "shard " + facts.shard + " of suite " + suite.name + ": " +
                             std::to_string(summary->episodes_resumed + summary->episodes_run) +
@@ -479,6 +505,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   facts.jobs = std::max(1, options.jobs);
   facts.episodes = scope.episodes;
   facts.isolated = Isolated(suite, options);
+  facts.merged = options.merge;
   if (scope.shards > 1)
     facts.shard = std::to_string(scope.shard_index) + "/" + std::to_string(scope.shards);
 
@@ -504,6 +531,12 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   for (const auto& [key, line] : done) stored.push_back(&line);
   WriteFileAtomically(summary.out_dir / "episodes.csv", EpisodesCsvText(stored));
   WriteFileAtomically(summary.out_dir / "manifest.json", FormatManifestJson(suite, {}, facts));
+  // Until this run finishes, no table: an earlier run's (another configuration, or fewer
+  // episodes) would be read as this folder's result if the run is cut short. A shard never
+  // writes one.
+  std::error_code ec;
+  fs::remove(summary.out_dir / "table.md", ec);
+  fs::remove(summary.out_dir / "table.csv", ec);
 
   const std::vector<Task> tasks = PendingTasks(suite, scope, done, &summary.episodes_resumed);
   Progress progress(suite.name, static_cast<int>(tasks.size()) + summary.episodes_resumed,
@@ -516,9 +549,9 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
       facts.isolated ? std::chrono::milliseconds(0) : EpisodeAppender::kThreadedRunDelay, progress,
       &done);
   if (facts.isolated) {
-    RunTasksInProcesses(suite, registry, worlds, tasks, facts.jobs, sink);
+    RunTasksInProcesses(suite, registry, worlds, tasks, facts.jobs, options.stop_requested, sink);
   } else {
-    RunTasksInThreads(suite, registry, worlds, tasks, facts.jobs, sink);
+    RunTasksInThreads(suite, registry, worlds, tasks, facts.jobs, options.stop_requested, sink);
   }
   summary.episodes_run = static_cast<int>(tasks.size());
   summary.policy_errors = PolicyErrorNotes(suite, done);

@@ -6,6 +6,7 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/PathSimplifier.h>
+#include <ompl/geometric/SimpleSetup.h>
 #include <ompl/util/Console.h>
 
 #include <algorithm>
@@ -115,7 +116,14 @@ bool GlobalPlanner::Attempt(const Vec2& start, const Vec2& goal, double radius, 
     return std::make_shared<SeededStateSampler>(s, source);
   });
 
-  auto si = std::make_shared<ob::SpaceInformation>(space);
+  // Made by libompl, not here: a planner's setup (tools::SelfConfig) files `si` in a static map
+  // of OMPL's through a weak_ptr, dropped only by a later setup or at exit. Dropping it frees
+  // the shared_ptr's control block through its vtable, which must not be this plugin's: the
+  // harness unloads the plugin before exit (libompl stays), and with std::make_shared here the
+  // vtable was the plugin's, so the process crashed on exit (SIGSEGV, exit code 139) after
+  // every run or validate with `local: actions` (with `local: orca` a thread-local of the ORCA
+  // code happened to keep the plugin mapped).
+  const ob::SpaceInformationPtr si = og::SimpleSetup(space).getSpaceInformation();
   si->setStateValidityChecker(std::make_shared<DiscValidityChecker>(si, world_, radius));
   si->setMotionValidator(std::make_shared<SweptMotionValidator>(si, world_, radius));
   si->setup();

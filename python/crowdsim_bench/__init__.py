@@ -199,6 +199,9 @@ class Env(_Base):
             episode = _episode_index(seed, "seed")
         else:
             episode = self._episode + 1
+            if episode > _MAX_EPISODE:
+                raise ValueError(f"episode {self._episode} was the last episode index: call "
+                                 f"reset(seed=k) with k in [0, {_MAX_EPISODE}]")
         obs = self._env.reset(episode, self._record)
         self._episode = episode
         self._done = False
@@ -245,6 +248,8 @@ class Env(_Base):
 
     def result(self) -> dict:
         """The current episode's metrics (status, time, path length, ...)."""
+        if self._episode < 0:  # the constructor's probe episode is not the user's
+            raise ValueError("result() before reset(): no episode yet, call reset() first")
         return self._env.result()
 
     def positions(self) -> np.ndarray:
@@ -274,7 +279,7 @@ class _DiscreteSpace:
         return int(self._rng.integers(self.n))
 
     def contains(self, x) -> bool:
-        return 0 <= int(x) < self.n
+        return _is_whole(x) and 0 <= int(x) < self.n
 
 
 def _episode_count(episodes) -> int:
@@ -293,10 +298,15 @@ def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
              progress: bool = False) -> list[dict]:
     """Runs one suite row with `policy(obs) -> (vx, vy)` as the robot (obs as in Env) and writes
     the CLI's outputs (table.md, table.csv, episodes.csv, manifest.json) to `out` (default
-    runs/<suite name>/). Returns the table rows as dicts. A policy that raises ends that episode
-    as policy_error with the message (episodes.csv's `error` column; a RuntimeWarning says how
-    many). `episodes`: None for the suite's count. `fresh=False` resumes stored episodes: only
-    safe when the policy has not changed since."""
+    runs/<suite name>.<label>/, beside the CLI's runs/<suite name>/). Returns the table rows as
+    dicts. A policy that raises ends that episode as policy_error with the message
+    (episodes.csv's `error` column; a RuntimeWarning says how many). Ctrl-C (or a
+    KeyboardInterrupt / SystemExit from the policy) stops the evaluation: the finished episodes
+    stay in `out`, and the exception is raised again here. `episodes`: None for the suite's
+    count. `fresh=True` plays every episode again, replacing the results of an earlier
+    evaluation of this row and label in `out`; a folder holding anything else (a CLI run,
+    another row or label) is refused. `fresh=False` resumes stored episodes: only safe when the
+    policy has not changed since."""
     return _core.evaluate(policy, str(suite), row, label, out, _episode_count(episodes), fresh,
                           _settings(set), progress)
 
@@ -308,10 +318,16 @@ def run_suite(suite: str, *, out: str = "", jobs: int = 1, episodes: int | None 
     returns its table as a list of dicts (a pandas DataFrame with dataframe=True)."""
     if not _is_whole(jobs) or not 1 <= jobs <= _core.MAX_JOBS:
         raise ValueError(f"jobs must be a whole number in [1, {_core.MAX_JOBS}], got {jobs!r}")
+    if dataframe:
+        try:
+            import pandas as pd  # before the run, not after hours of it
+        except ModuleNotFoundError as e:
+            raise ModuleNotFoundError(
+                "run_suite(dataframe=True) needs pandas (apt install python3-pandas); "
+                "without dataframe=True the table comes as a list of dicts") from e
     rows = _core.run_suite(str(suite), out, int(jobs), _episode_count(episodes), fresh,
                            _settings(set), progress)
     if dataframe:
-        import pandas as pd
         return pd.DataFrame(rows)
     return rows
 

@@ -84,9 +84,13 @@ class VectorEnv:
             velocities = self.actions[_action_indices(actions, len(self.actions), (self.num_envs,))]
         else:
             velocities = np.asarray(actions, dtype=np.float64)
-        if velocities.shape != (self.num_envs, 2) or not np.all(np.isfinite(velocities)):
+        if velocities.shape != (self.num_envs, 2):
             raise ValueError(f"actions must be {self.num_envs} finite velocities, shape "
                              f"({self.num_envs}, 2); got shape {np.shape(actions)}")
+        if not np.all(np.isfinite(velocities)):
+            bad = sorted({int(i) for i in np.nonzero(~np.isfinite(velocities))[0]})
+            raise ValueError(f"actions must be finite velocities; not those of sub-environments "
+                             f"{bad}")
         obs, reward, terminated, truncated, status, episode = self._env.step(velocities)
         return obs, reward, terminated, truncated, {"status": status, "episode": episode}
 

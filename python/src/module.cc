@@ -9,11 +9,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -186,9 +188,25 @@ py::tuple TimeFixedVelocitySteps(const std::string& suite_path, const py::object
   return py::make_tuple(steps, wall.count());
 }
 
+// A run's message in the package's words: the CLI's options are keyword arguments here.
+std::string InPythonTerms(std::string message) {
+  for (const auto& [cli, python] : {std::pair<std::string, std::string>{"--fresh", "fresh=True"},
+                                    {"--out ", "out= "},
+                                    {"--episodes ", "episodes="}}) {
+    for (auto at = message.find(cli); at != std::string::npos; at = message.find(cli, at)) {
+      message.replace(at, cli.size(), python);
+      at += python.size();
+    }
+  }
+  return message;
+}
+
 // RunSuite with the GIL released (a Python policy's Decide takes it back for each decision);
-// its errors become ValueError.
-RunSummary RunWithoutGil(const Suite& suite, PluginRegistry& registry, const RunOptions& options) {
+// Ctrl-C stops it between episodes and is raised again here, with the episodes that finished
+// kept; its other errors become ValueError.
+RunSummary RunWithoutGil(const Suite& suite, PluginRegistry& registry, RunOptions options,
+                         PythonStop& stop) {
+  options.stop_requested = [&stop] { return stop.Requested(); };
   std::string error;
   RunSummary summary;
   {
@@ -199,8 +217,29 @@ RunSummary RunWithoutGil(const Suite& suite, PluginRegistry& registry, const Run
       error = e.what();
     }
   }
-  if (!error.empty()) throw py::value_error(error);
+  stop.RaiseIfKept();
+  if (!error.empty()) throw py::value_error(InPythonTerms(error));
   return summary;
+}
+
+// evaluate() replays the policy's episodes each time (a Python callable has no hash to tell a
+// changed one): it may replace only its own earlier results, never another configuration's
+// (it wiped a CLI run's folder without a word).
+void RefuseOtherResults(const Suite& suite, const std::filesystem::path& out) {
+  const std::filesystem::path manifest = out / "manifest.json";
+  std::error_code ec;
+  if (!std::filesystem::exists(manifest, ec) && !std::filesystem::exists(out / "episodes.csv", ec))
+    return;
+  const std::string held = ReadManifestField(manifest, "config_hash");
+  if (held == suite.ConfigHash()) return;
+  const std::string held_suite = ReadManifestField(manifest, "suite");
+  throw py::value_error(
+      "'" + out.string() + "' holds results of another configuration (" +
+      (held.empty() ? std::string("no readable manifest.json")
+                    : "suite '" + held_suite + "', config hash " + held) +
+      "; this evaluation's is " + suite.ConfigHash() +
+      "): evaluate() replaces only its own earlier results. Pass another out=, or remove the "
+      "folder first");
 }
 
 // A policy that raises ends its episode, not the run: say so once, with where the messages are.
@@ -225,20 +264,25 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
     throw py::type_error("policy must be callable: policy(obs) -> (vx, vy)");
   PluginRegistry registry;
   Suite suite = LoadSuiteOrThrow(suite_path, registry, set);
-  const RowSpec row_spec = WithPythonRobot(suite.rows[RowIndex(suite, row)], label);
+  const RowSpec& original = suite.rows[RowIndex(suite, row)];
+  CheckOneOfEachArraySensor(original);
+  PythonStop stop;
+  const PythonPolicyBinding binding(SensorNames(original), original.humans.count, policy, &stop);
+  const RowSpec row_spec = WithPythonRobot(original, label, binding.plugin());
   suite.rows = {row_spec};
   suite.summaries.clear();
   suite.canonical += "\nrobot: python policy '" + label + "'";
   RunOptions options;
-  options.out_dir = out.empty() ? DefaultRunDir(suite) : std::filesystem::path(out);
+  // Its own folder by default, beside the CLI's runs/<suite name>/ (never in it).
+  options.out_dir = out.empty() ? std::filesystem::path(DefaultRunDir(suite).string() + "." + label)
+                                : std::filesystem::path(out);
   options.jobs = 1;                         // one Python interpreter: episodes one after another
   options.isolation = IsolationMode::kOff;  // the policy lives in this interpreter: no fork
   options.episodes = episodes;
   options.fresh = fresh;
   options.progress = progress;
-  SetNextPythonPolicy(SensorNames(row_spec), row_spec.humans.count, policy.ptr());
-  const RunSummary summary = RunWithoutGil(suite, registry, options);
-  SetNextPythonPolicy({}, 0, nullptr);
+  RefuseOtherResults(suite, options.out_dir);
+  const RunSummary summary = RunWithoutGil(suite, registry, options, stop);
   WarnOfPolicyErrors(summary);
   return Rows(summary);
 }
@@ -253,7 +297,8 @@ py::list RunSuiteFile(const std::string& suite_path, const std::string& out, int
   options.episodes = episodes;
   options.fresh = fresh;
   options.progress = progress;
-  const RunSummary summary = RunWithoutGil(suite, registry, options);
+  PythonStop stop;
+  const RunSummary summary = RunWithoutGil(suite, registry, options, stop);
   return Rows(summary);
 }
 

@@ -1,7 +1,5 @@
 #include "python_row.h"
 
-#include "python_policy.h"
-
 namespace py = pybind11;
 
 namespace crowdsim::python {
@@ -21,12 +19,25 @@ Suite LoadSuiteOrThrow(const std::string& path, PluginRegistry& registry,
 }
 
 size_t RowIndex(const Suite& suite, const py::object& row) {
-  if (py::isinstance<py::int_>(row)) {
-    const long k = row.cast<long>();  // 1-based, as in the tables and `render --row`
+  // An int or any integer with __index__ (numpy's), not a bool; or a label.
+  const bool is_bool =
+      PyBool_Check(row.ptr()) || py::isinstance(row, py::module_::import("numpy").attr("bool_"));
+  if (!is_bool && !py::isinstance<py::str>(row) && PyIndex_Check(row.ptr())) {
+    const py::int_ index = py::reinterpret_steal<py::int_>(PyNumber_Index(row.ptr()));
+    const bool fits =
+        index.ptr() != nullptr && index < py::int_(1L << 30) && index > py::int_(-(1L << 30));
+    if (!fits) PyErr_Clear();
+    const long k = fits ? index.cast<long>() : 0;  // 1-based, as in the tables and `render --row`
     if (k < 1 || k > static_cast<long>(suite.rows.size()))
-      throw py::index_error("row " + std::to_string(k) + " does not exist: the suite has rows 1.." +
+      throw py::index_error("row " + py::repr(row).cast<std::string>() +
+                            " does not exist: the suite has rows 1.." +
                             std::to_string(suite.rows.size()));
     return static_cast<size_t>(k - 1);
+  }
+  if (!py::isinstance<py::str>(row)) {
+    throw py::type_error("row must be a row's label or its 1-based index, got " +
+                         py::repr(row).cast<std::string>() + " (" +
+                         py::str(py::type::of(row).attr("__name__")).cast<std::string>() + ")");
   }
   const std::string label = row.cast<std::string>();
   std::string labels;
@@ -43,9 +54,28 @@ std::vector<std::string> SensorNames(const RowSpec& row) {
   return names;
 }
 
-RowSpec WithPythonRobot(const RowSpec& row, const std::string& label) {
+void CheckOneOfEachArraySensor(const RowSpec& row) {
+  // The observation has one `humans` array (the person sensor's people) and one `lidar` array:
+  // two person sensors listed their people twice, past the array's rows.
+  for (const std::string kind : {"person", "lidar2d"}) {
+    std::vector<std::string> listed;
+    for (size_t k = 0; k < row.sensors.size(); ++k) {
+      if (row.sensors[k].loaded->descriptor->name == kind)
+        listed.push_back("robot.sensors[" + std::to_string(k) + "]");
+    }
+    if (listed.size() < 2) continue;
+    std::string names;
+    for (const std::string& one : listed) names += (names.empty() ? "" : ", ") + one;
+    throw py::value_error("row '" + row.label + "' has " + std::to_string(listed.size()) + " " +
+                          kind + " sensors (" + names +
+                          "); a Python observation has one array for them: keep one");
+  }
+}
+
+RowSpec WithPythonRobot(const RowSpec& row, const std::string& label,
+                        const LoadedPlugin& python_policy) {
   RowSpec out = row;
-  out.policy = PluginUse{"python", &PythonPolicyPlugin(), Params{}};
+  out.policy = PluginUse{"python", &python_policy, Params{}};
   out.label = label;
   out.reference.reset();
   for (auto& [column, value] : out.info)
@@ -58,8 +88,10 @@ PythonRow::PythonRow(const std::string& suite_path, const py::object& row_choice
                      const std::vector<std::string>& set)
     : suite(LoadSuiteOrThrow(suite_path, registry, set)) {
   const RowSpec& original = suite.rows[RowIndex(suite, row_choice)];
-  row = WithPythonRobot(original, original.label);
-  SetNextPythonPolicy(SensorNames(row), row.humans.count, nullptr);
+  CheckOneOfEachArraySensor(original);
+  binding = std::make_unique<PythonPolicyBinding>(SensorNames(original), original.humans.count,
+                                                  py::object(), nullptr);
+  row = WithPythonRobot(original, original.label, binding->plugin());
 }
 
 }  // namespace crowdsim::python

@@ -10,6 +10,7 @@
 
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/bench/suite.h"
+#include "python_policy.h"
 
 namespace crowdsim::python {
 
@@ -23,12 +24,19 @@ size_t RowIndex(const Suite& suite, const pybind11::object& row);
 /// Plugin names of the row's sensors.
 std::vector<std::string> SensorNames(const RowSpec& row);
 
-/// The row with the Python policy in place of its robot policy; the marker in the canonical
-/// text keeps its stored results apart from the original row's.
-RowSpec WithPythonRobot(const RowSpec& row, const std::string& label);
+/// Refuses (ValueError) a row with two sensors of one kind that fills one observation array
+/// (person: `humans`, lidar2d: `lidar`).
+void CheckOneOfEachArraySensor(const RowSpec& row);
 
-/// A suite, its registry and one of its rows with the Python robot (not movable: the row's
-/// plugins live in the registry, and RowEpisodes keep references to the suite and row).
+/// The row with the Python policy (`python_policy`, a binding's plugin) in place of its robot
+/// policy; the marker in the canonical text keeps its stored results apart from the original
+/// row's.
+RowSpec WithPythonRobot(const RowSpec& row, const std::string& label,
+                        const LoadedPlugin& python_policy);
+
+/// A suite, its registry and one of its rows with the Python robot in Env mode (not movable:
+/// the row's plugins live in the registry, and RowEpisodes keep references to the suite and
+/// row; the binding outlives the policies made from it, which live in RowEpisodes).
 struct PythonRow {
   PythonRow(const std::string& suite_path, const pybind11::object& row,
             const std::vector<std::string>& set);
@@ -37,6 +45,7 @@ struct PythonRow {
 
   PluginRegistry registry;
   Suite suite;
+  std::unique_ptr<PythonPolicyBinding> binding;
   RowSpec row;
 };
 

@@ -1,6 +1,7 @@
 #include "vector_env.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -121,7 +122,7 @@ py::dict VectorEnv::Reset(int first) {
       for (size_t i = begin; i < end; ++i) {
         const int episode = first + static_cast<int>(i);
         Write(i, envs_[i]->Reset(episode, false), b);
-        next_episode_[i] = episode + n;
+        next_episode_[i] = std::int64_t{episode} + n;
         ended_[i] = false;
         b.episode_p[i] = episode;
       }
@@ -141,6 +142,15 @@ py::tuple VectorEnv::Step(
                           ", 2): one velocity (vx, vy) per environment");
   }
   if (!reset_done_) throw py::value_error("step() before reset(): call reset() first");
+  for (size_t i = 0; i < envs_.size(); ++i) {
+    if (ended_[i] && next_episode_[i] > std::numeric_limits<int>::max()) {
+      throw py::value_error("sub-environment " + std::to_string(i) +
+                            " has no next episode: it would be " +
+                            std::to_string(next_episode_[i]) + ", past the last index " +
+                            std::to_string(std::numeric_limits<int>::max()) +
+                            "; call reset(seed=...) with a lower first episode");
+    }
+  }
   const double* a = actions.data();
   Batch b = MakeBatch();
   {
@@ -150,8 +160,8 @@ py::tuple VectorEnv::Step(
         RowEpisodes& env = *envs_[i];
         double reward = 0.0;
         if (ended_[i]) {  // next-step autoreset: the action of this step is ignored
-          env.Reset(next_episode_[i], false);
-          next_episode_[i] += static_cast<int>(n);
+          env.Reset(static_cast<int>(next_episode_[i]), false);
+          next_episode_[i] += n;
           ended_[i] = false;
         } else {
           reward = env.Step(Vec2(a[2 * i], a[2 * i + 1])).reward;

@@ -45,8 +45,8 @@ class VectorEnv {
 
   std::unique_ptr<PythonRow> row_;
   std::vector<std::unique_ptr<RowEpisodes>> envs_;
-  std::vector<int> next_episode_;
-  std::vector<std::uint8_t> ended_;  // not vector<bool>: workers write neighbouring entries
+  std::vector<std::int64_t> next_episode_;  // past the last index once all are played
+  std::vector<std::uint8_t> ended_;         // not vector<bool>: workers write neighbouring entries
   // Set by Reset: the constructor resets sub-environment 0 alone (to read the sensors' shapes),
   // so "env 0 has an episode" does not mean every sub-environment has one.
   bool reset_done_ = false;

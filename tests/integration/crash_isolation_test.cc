@@ -62,9 +62,12 @@ class CrashIsolationTest : public ::testing::Test {
   }
   RunSummary Run(const Suite& s, const std::string& out, int jobs,
                  std::optional<IsolationMode> isolation = std::nullopt) {
-    return RunSuite(
-        s, registry_,
-        {.out_dir = dir_.path() / out, .jobs = jobs, .isolation = isolation, .progress = false});
+    RunOptions options;
+    options.out_dir = dir_.path() / out;
+    options.jobs = jobs;
+    options.isolation = isolation;
+    options.progress = false;
+    return RunSuite(s, registry_, options);
   }
   std::string Manifest(const std::string& out) {
     return ReadText(dir_.path() / out / "manifest.json");

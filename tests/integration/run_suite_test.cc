@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -586,10 +587,19 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   EXPECT_NE(merge_into(shards[0]).find("is one of the shards"), std::string::npos);
   EXPECT_NE(merge_into(o.out_dir).find("holds a shard"), std::string::npos);
   EXPECT_EQ(merge_into(dir_.path() / "merged"), "merged");  // again: the same merge
+  EXPECT_EQ(ReadManifestBool(dir_.path() / "merged" / "manifest.json", "merged"), true);
   // A merge cut short (only its first manifest written) is merged again, not refused.
   std::ofstream(dir_.path() / "merged" / "manifest.json")
-      << "{\"config_hash\": \"" << s.ConfigHash() << "\"}\n";
+      << "{\"config_hash\": \"" << s.ConfigHash() << "\", \"merged\": true}\n";
   EXPECT_EQ(merge_into(dir_.path() / "merged"), "merged");
+  // A whole run of the same configuration and count is a run, not a merge: refused, and its
+  // episodes beyond the count (kept for a longer rerun) stay (merge replaced them, exit 0).
+  const std::string whole_before = ReadText(dir_.path() / "whole" / "episodes.csv");
+  EXPECT_NE(merge_into(dir_.path() / "whole")
+                .find("holds a run of this configuration (not a merge), which merge would replace"),
+            std::string::npos)
+      << merge_into(dir_.path() / "whole");
+  EXPECT_EQ(ReadText(dir_.path() / "whole" / "episodes.csv"), whole_before);
   EXPECT_EQ(WithoutTimingColumns(ReadText(dir_.path() / "whole" / "episodes.csv")),
             WithoutTimingColumns(ReadText(dir_.path() / "merged" / "episodes.csv")));
   // The suite file of another suite.
@@ -601,6 +611,63 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
     ADD_FAILURE() << "merged under another suite";
   } catch (const RunRefused& e) {
     EXPECT_NE(std::string(e.what()).find("is the suite 'another_"), std::string::npos) << e.what();
+  }
+}
+
+// A run stopped from outside (RunOptions::stop_requested, the Python package's Ctrl-C) or by
+// a plugin (AbortRun) keeps the finished episodes for a resume, writes no line for the
+// interrupted episode, and leaves no table: an earlier run's tables were left in place and
+// read as this folder's result (report showed another configuration's table).
+TEST_F(RunSuiteTest, StoppedRunKeepsFinishedEpisodesAndLeavesNoTable) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "out", 1, 4);
+  ASSERT_TRUE(fs::exists(dir_.path() / "out" / "table.md"));
+  RunOptions o;
+  o.out_dir = dir_.path() / "out";
+  o.fresh = true;
+  o.progress = false;
+  int asked = 0;
+  o.stop_requested = [&asked] { return ++asked == 3; };  // before the third episode
+  try {
+    RunSuite(s, registry_, o);
+    ADD_FAILURE() << "a stopped run returned";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("stopped on request (finished episodes are kept"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir_.path() / "out" / "table.md"));
+  EXPECT_FALSE(fs::exists(dir_.path() / "out" / "table.csv"));
+  const std::string kept = ReadText(dir_.path() / "out" / "episodes.csv");
+  EXPECT_EQ(std::count(kept.begin(), kept.end(), '\n'), 3) << kept;  // header + 2 episodes
+  const RunSummary resumed = Run(s, "out", 1);
+  EXPECT_EQ(resumed.episodes_resumed, 2);
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "table.md"));
+
+  // A plugin's AbortRun, in threads and in worker processes: no policy_error line for it.
+  for (const char* isolation : {"off", "on"}) {
+    const Suite aborting = LoadOrDie(std::string(R"(name: aborting
+episodes: 4
+isolation: )") + isolation + R"(
+world: {source: random_rect, obstacles: 1}
+humans: {count: 2, policy: linear}
+rows:
+  - {label: a, policy: throwing_policy, params: {mode: abort_run, good_episodes: 2, fail_after_steps: 1}}
+)");
+    const std::string out = std::string("aborted_") + isolation;
+    try {
+      Run(aborting, out, 1);
+      ADD_FAILURE() << "an aborted run returned (isolation " << isolation << ")";
+    } catch (const RunError& e) {
+      EXPECT_NE(std::string(e.what()).find(
+                    "row 'a', episode 2: deliberate stop of the run (fixture) (finished "
+                    "episodes are kept"),
+                std::string::npos)
+          << e.what();
+    }
+    const std::string lines = ReadText(dir_.path() / out / "episodes.csv");
+    EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 3) << lines;
+    EXPECT_EQ(lines.find("policy_error"), std::string::npos) << lines;
   }
 }
 

@@ -112,6 +112,17 @@ class EnvContract(unittest.TestCase):
             cb.Env(QUICK, row=9)
         with self.assertRaises(ValueError):
             cb.Env(QUICK, row=1, set=["humans.count=-1"])
+        self.assertEqual(cb.Env(QUICK, row=np.int64(2))._env.label, "orca")  # numpy ints too
+        for not_a_row in (1.0, None, True):  # pybind's "Unable to cast" said nothing of rows
+            with self.assertRaisesRegex(TypeError, "row must be a row's label or its 1-based"):
+                cb.Env(QUICK, row=not_a_row)
+        with self.assertRaisesRegex(ValueError, "result\\(\\) before reset\\(\\)"):
+            cb.Env(QUICK).result()  # the constructor's probe episode is not the user's
+
+    def test_a_row_with_two_person_sensors_is_refused(self):
+        # Their people filled the humans array twice (past its rows in VectorEnv).
+        with self.assertRaisesRegex(ValueError, "2 person sensors .*keep one"):
+            cb.Env(QUICK, set=["robot.sensors=[person, {type: person, max_range: 3}]"])
 
     def test_discrete_actions_are_crowdnavs_holonomic_set(self):
         env = cb.Env(QUICK, row="orca", discrete=True)
@@ -172,6 +183,99 @@ class Evaluate(unittest.TestCase):
             with open(os.path.join(out, "episodes.csv"), newline="") as f:
                 errors = [e["error"] for e in csv.DictReader(f)]
             self.assertTrue(all("my bug" in e for e in errors), errors)
+
+    def test_evaluate_never_replaces_another_configurations_results(self):
+        # evaluate() plays every episode again (fresh=True): it wiped a CLI run's folder.
+        with tempfile.TemporaryDirectory() as out:
+            cb.run_suite(QUICK, out=out, episodes=2)
+            with open(os.path.join(out, "episodes.csv")) as f:
+                before = f.read()
+            with self.assertRaisesRegex(ValueError, "holds results of another configuration"):
+                cb.evaluate(straight_to_goal, QUICK, row="linear", out=out, episodes=2)
+            with open(os.path.join(out, "episodes.csv")) as f:
+                self.assertEqual(f.read(), before)
+            self.assertTrue(os.path.isfile(os.path.join(out, "table.md")))
+        with tempfile.TemporaryDirectory() as out:  # its own earlier results: replaced
+            cb.evaluate(straight_to_goal, QUICK, row="linear", out=out, episodes=3)
+            rows = cb.evaluate(straight_to_goal, QUICK, row="linear", out=out, episodes=2)
+            self.assertEqual(rows[0]["episodes"], 2)
+
+    def test_velocity_as_any_array_of_two_numbers(self):
+        with tempfile.TemporaryDirectory() as out:
+            rows = cb.evaluate(lambda obs: straight_to_goal(obs).reshape(1, 2), QUICK,
+                               row="linear", out=out, episodes=2)
+            self.assertEqual(rows[0]["policy_error"], 0.0)
+        with tempfile.TemporaryDirectory() as out:
+            with self.assertWarns(RuntimeWarning):
+                cb.evaluate(lambda obs: [1.0, 2.0, 3.0], QUICK, row="linear", out=out,
+                            episodes=1)
+            with open(os.path.join(out, "episodes.csv"), newline="") as f:
+                error = next(csv.DictReader(f))["error"]
+            self.assertIn("2 numbers (got 3 numbers)", error)
+
+    def test_ctrl_c_in_the_policy_stops_the_evaluation_and_reaches_the_caller(self):
+        calls = []
+
+        def interrupted(obs):
+            calls.append(obs["time"])
+            if len(calls) == 40:
+                raise KeyboardInterrupt
+            return straight_to_goal(obs)
+
+        with tempfile.TemporaryDirectory() as out:
+            with self.assertRaises(KeyboardInterrupt):
+                cb.evaluate(interrupted, QUICK, row="linear", out=out, episodes=20)
+            self.assertEqual(len(calls), 40)  # nothing called after it
+            with open(os.path.join(out, "episodes.csv"), newline="") as f:
+                lines = list(csv.DictReader(f))
+            self.assertTrue(0 < len(lines) < 20, len(lines))  # the finished ones, kept
+            self.assertFalse(any(e["status"] == "policy_error" for e in lines))
+            self.assertFalse(os.path.exists(os.path.join(out, "table.md")))
+
+    def test_ctrl_c_stops_run_suite_between_episodes(self):
+        # No Python code runs during run_suite: Ctrl-C waited for the whole suite.
+        import _thread
+        import threading
+        import time
+        timer = threading.Timer(0.3, _thread.interrupt_main)
+        with tempfile.TemporaryDirectory() as out:
+            start = time.monotonic()
+            timer.start()
+            with self.assertRaises(KeyboardInterrupt):
+                cb.run_suite(QUICK, out=out, episodes=20000)  # far longer than 0.3 s
+            self.assertLess(time.monotonic() - start, 20.0)
+            with open(os.path.join(out, "episodes.csv"), newline="") as f:
+                kept = sum(1 for _ in csv.DictReader(f))
+            self.assertLess(kept, 40000)
+            rows = cb.run_suite(QUICK, out=out, episodes=3)  # resumes
+            self.assertTrue(all(r["episodes"] == 3 for r in rows))
+
+    def test_two_threads_evaluate_each_their_own_policy(self):
+        # One shared "next policy" gave both threads the same one (or a freed one).
+        import threading
+        seen = {"a": set(), "b": set()}
+
+        def policy_of(name):
+            def policy(obs):
+                seen[name].add(threading.current_thread().name)
+                return straight_to_goal(obs) * (1.0 if name == "a" else 0.0)
+            return policy
+
+        with tempfile.TemporaryDirectory() as root:
+            results = {}
+
+            def run(name):
+                results[name] = cb.evaluate(policy_of(name), QUICK, row="linear", label=name,
+                                            out=os.path.join(root, name), episodes=6)
+
+            threads = [threading.Thread(target=run, args=(n,), name=n) for n in ("a", "b")]
+            for t in threads:
+                t.start()
+            for t in threads:
+                t.join()
+            self.assertEqual(seen, {"a": {"a"}, "b": {"b"}})
+            self.assertGreater(results["a"][0]["success"], 0.0)  # b stands still: never
+            self.assertEqual(results["b"][0]["success"], 0.0)
 
     def test_run_suite_returns_the_table(self):
         with tempfile.TemporaryDirectory() as out:

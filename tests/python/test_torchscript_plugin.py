@@ -304,11 +304,15 @@ class TorchScriptPlugin(unittest.TestCase):
         suite = quick_with_rows(self.dir, [
             f"{{label: ts, policy: torchscript, weights: {pt}, params: {{sensors: lidar+person, lidar_beams: 30}}}}",
         ])
-        got = run(suite, self.path("beams"), episodes=2)
-        with open(os.path.join(self.path("beams"), "episodes.csv"), newline="") as f:
-            errors = [e["error"] for e in csv.DictReader(f)]
-        self.assertEqual([e[3] for e in got["ts"].values()], ["policy_error"] * 2)
-        self.assertIn("has 45 beams but parameter lidar_beams is 30; set lidar_beams: 45", errors[0])
+        # run plays the first step before any episode, as validate does: refused (exit 2, no
+        # folder), where it ran a table of policy errors and exited 0.
+        p = subprocess.run([CLI, "run", suite, "--episodes", "2", "--quiet", "--out",
+                            self.path("beams")], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 2, p.stdout + p.stderr)
+        self.assertIn("row 'ts' (rows[0]): the first step of episode 0 fails: torchscript: the "
+                      "lidar2d sensor has 45 beams but parameter lidar_beams is 30; set "
+                      "lidar_beams: 45", p.stderr)
+        self.assertFalse(os.path.exists(self.path("beams")))
 
     def test_the_example_script_writes_a_runnable_suite(self):
         p = subprocess.run([sys.executable, "examples/python/export_torchscript.py", self.dir],

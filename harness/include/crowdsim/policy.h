@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,17 @@ class Policy {
   virtual void Reset(const EpisodeContext& ctx);
   /// The action for this step. Throwing ends the episode with status policy_error.
   virtual Action Decide(const Observation& obs) = 0;
+};
+
+/// Thrown by a plugin (policy, sensor or world) to stop the whole run rather than end one
+/// episode: no line is written for the episode it interrupts, the finished episodes are kept
+/// for a resume, and the run fails with this message. For what makes every further episode
+/// pointless (the user pressed Ctrl-C inside a Python policy, a resource is gone); a bad
+/// decision is an ordinary exception (policy_error, the run goes on).
+class AbortRun : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+  ~AbortRun() override;
 };
 
 }  // namespace crowdsim

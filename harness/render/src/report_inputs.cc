@@ -13,8 +13,12 @@ void CheckResultsFolder(const fs::path& dir) {
                       "' does not exist (give the --out folder of `crowdsim-bench run`)");
   }
   // A folder of `run` without its tables: a shard (merge first) or a run that did not finish.
-  if (fs::exists(dir / "manifest.json") && !fs::exists(dir / "table.csv")) {
-    const std::string shard = ReadManifestField(dir / "manifest.json", "shard");
+  // (Builds before 2026-11-26 left an earlier run's tables in place while a rerun went on: an
+  // empty finished_utc tells such a folder too.)
+  const fs::path manifest = dir / "manifest.json";
+  if (fs::exists(manifest) &&
+      (!fs::exists(dir / "table.csv") || ReadManifestField(manifest, "finished_utc").empty())) {
+    const std::string shard = ReadManifestField(manifest, "shard");
     if (!shard.empty()) {
       throw ReportError("'" + dir.string() + "' is shard " + shard +
                         " of a run, which has no tables: join the shards with `crowdsim-bench "

@@ -11,6 +11,8 @@
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/rng.h"
+#include "shell.h"
+#include "temp_dir.h"
 #include "test_paths.h"
 
 namespace crowdsim {
@@ -163,6 +165,28 @@ TEST_F(OmplPlannerEpisodes, EpisodesReplayIdenticallyInOneThreadAndInTwo) {
       EXPECT_EQ(b.robot_positions, first.robot_positions) << what << " (thread b)";
     }
   }
+}
+
+// The command line with the plugin unloaded before exit: a run and a validate of a row whose
+// local mode never calls ORCA exited with SIGSEGV (139) after writing every file, when OMPL's
+// static registry dropped a control block whose code had been unloaded with the plugin.
+TEST(OmplPlannerCommandLine, ExitsCleanlyAfterRunAndValidateWithLocalActions) {
+  testing::TempDir dir;
+  const auto suite = dir.Write("actions.yaml", R"(name: ompl_actions
+episodes: 2
+world: {source: random_rect, obstacles: 3}
+humans: {count: 5, policy: orca}
+robot:
+  sensors: [person]
+rows:
+  - {label: p, policy: ompl_planner, params: {local: actions}}
+)");
+  const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
+  const auto [rc, text] = testing::Shell(exe + " run " + suite.string() + " --quiet --out " +
+                                         (dir.path() / "out").string());
+  EXPECT_EQ(rc, 0) << text;
+  const auto [vrc, vtext] = testing::Shell(exe + " validate " + suite.string());
+  EXPECT_EQ(vrc, 0) << vtext;
 }
 
 }  // namespace

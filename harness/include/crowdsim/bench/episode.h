@@ -115,7 +115,8 @@ class Episode {
   ~Episode();
 
   bool done() const { return result_.status != EpisodeStatus::kRunning; }
-  /// Advances one step (no-op when done).
+  /// Advances one step (no-op when done). A plugin's exception ends the episode as
+  /// policy_error, except AbortRun, which passes through (as from the constructor's Resets).
   StepInfo Step();
   /// Runs to the end.
   const EpisodeResult& Run();

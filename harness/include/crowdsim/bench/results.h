@@ -62,7 +62,8 @@ struct RunFacts {
   int episodes = 0;
   double wall_seconds = 0.0;
   std::map<std::string, std::string> world_identities;  ///< per row label
-  std::string shard;  ///< "K/N" for a shard of a run, empty for a whole run
+  std::string shard;    ///< "K/N" for a shard of a run, empty for a whole run
+  bool merged = false;  ///< written by `merge` (the only folder a later merge may replace)
 };
 std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& rows,
                                const RunFacts& facts);

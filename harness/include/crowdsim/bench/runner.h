@@ -50,6 +50,12 @@ struct RunOptions {
   /// The caller already holds `out_dir` (its lock and kind checked), as merge does around
   /// the run that writes the joined tables: the run does not claim it again.
   bool out_dir_claimed = false;
+  /// The run joins shards' stored episodes (merge): its manifest says `"merged": true`.
+  bool merge = false;
+  /// Asked between episodes (from any worker thread); true stops the run as an AbortRun
+  /// would: the finished episodes are kept, RunSuite throws RunError. The Python package
+  /// checks for Ctrl-C here, which reaches Python code only between calls into C++.
+  std::function<bool()> stop_requested;
 };
 
 struct RunSummary {
