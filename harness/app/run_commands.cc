@@ -67,6 +67,7 @@ void ExplainInterruption(const std::filesystem::path& out_dir) {
                 out_dir.string().c_str());
   std::signal(SIGINT, OnRunInterrupted);
   std::signal(SIGTERM, OnRunInterrupted);
+  std::signal(SIGHUP, OnRunInterrupted);  // a closed terminal or ssh session
 }
 
 /// Joins shard folders into `out` (MergeShards), prints the table and what was written; the

@@ -157,18 +157,19 @@ std::string Format(const char* format, double value) {
     // little more than this per m^2 of it (Gibson hard: 70 humans placed in 62 m^2, 80 not).
     const double free_area = FreeArea(area);
     const double jammed = 0.547 / (std::numbers::pi * 0.25 * gap * gap);
-    message += " (and as many over the whole free space): " + std::to_string(num_humans) +
-               " humans in about " + Format("%.0f", free_area) + " m^2 of free space is " +
-               Format("%.2f", num_humans / std::max(free_area, 1e-9)) +
-               " per m^2, and humans kept " + Format("%g", gap) +
-               " m apart (starts from starts, goals from goals) jam at about " +
-               Format("%.2f", jammed) +
-               " per m^2 when placed at random on open floor. Fix: fewer humans (num_humans), "
-               "a smaller human_radius or discomfort_dist, or a larger world.";
+    message +=
+        " (and as many over the whole free space): " + std::to_string(num_humans) +
+        " humans in about " + Format("%.0f", free_area) + " m^2 of free space is " +
+        Format("%.2f", num_humans / std::max(free_area, 1e-9)) + " per m^2, and humans kept " +
+        Format("%g", gap) + " m apart (starts from starts, goals from goals) jam at about " +
+        Format("%.2f", jammed) +
+        " per m^2 when placed at random on open floor. Fix: fewer humans (the row's humans.count), "
+        "a smaller human_radius or discomfort_dist, or a larger world.";
   } else {
     message += ": the free space is too small or too crowded for discs of radius " +
                Format("%g", o.human_radius) + " m kept " + Format("%g", o.discomfort_dist) +
-               " m apart. Fix: use fewer humans (num_humans), smaller radii, or a larger world.";
+               " m apart. Fix: use fewer humans (the row's humans.count), smaller radii, or a "
+               "larger world.";
   }
   throw PlacementError(message);
 }

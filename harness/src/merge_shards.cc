@@ -113,12 +113,30 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
           "join them anyway (the merged manifest.json records each shard's commit)");
     }
     shard_commits.emplace_back(commit, shard.empty() ? dir.string() : shard);
-    for (auto& line : ReadEpisodesCsv(dir / "episodes.csv")) {
+    EpisodesCsvRead read;
+    try {
+      read = ReadEpisodesCsvChecked(dir / "episodes.csv");
+    } catch (const std::runtime_error& e) {
+      throw RunRefused(e.what());
+    }
+    if (read.damaged > 0 || read.cut_last_line) {
+      // Their episodes would be reported missing: say what is wrong with the shard instead.
+      throw RunRefused(
+          "'" + (dir / "episodes.csv").string() + "' has " +
+          (read.damaged > 0 ? std::to_string(read.damaged) +
+                                  " damaged line(s) (the first: " + read.first_damage + ")"
+                            : std::string("a last line cut short (the shard did not finish)")) +
+          ": rerun that shard's command (it sets them aside and runs their episodes again), "
+          "then merge");
+    }
+    for (auto& line : read.lines) {
       const auto key = std::make_pair(line.row, line.episode);
       if (auto it = lines.find(key); it != lines.end()) {
-        throw RunRefused("episode " + std::to_string(line.episode) + " of row '" + line.row +
-                         "' is in both '" + it->second.second.string() + "' and '" + dir.string() +
-                         "'");
+        throw RunRefused(
+            "episode " + std::to_string(line.episode) + " of row '" + line.row + "' is " +
+            (it->second.second == dir
+                 ? "twice in '" + dir.string() + "' (a line copied by hand?)"
+                 : "in both '" + it->second.second.string() + "' and '" + dir.string() + "'"));
       }
       lines.emplace(key, std::make_pair(std::move(line), dir));
     }

@@ -24,6 +24,13 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
     for (const RowSpec& row : suite.rows) kept.insert(row.label);
     return kept;
   }
+  if (stored.empty()) {
+    std::error_code ec;
+    throw RunRefused("'" + out_dir.string() + "' holds episodes, but its manifest.json is " +
+                     (fs::exists(manifest, ec) ? "unreadable or has no config_hash" : "missing") +
+                     ", so which configuration made them is unknown. Pass --fresh to replace "
+                     "them, or --out to write elsewhere.");
+  }
   const std::vector<std::string> row_hashes = ReadManifestStrings(manifest, "row_hashes");
   const std::set<std::string> stored_rows(row_hashes.begin(), row_hashes.end());
   for (const RowSpec& row : suite.rows) {
@@ -33,8 +40,7 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
     throw RunRefused("'" + out_dir.string() +
                      "' holds results of a different configuration "
                      "of this suite (config hash " +
-                     (stored.empty() ? "unknown" : stored) + ", now " + suite.ConfigHash() +
-                     ", and no row is unchanged" +
+                     stored + ", now " + suite.ConfigHash() + ", and no row is unchanged" +
                      DescribeRunInputsDifference(ReadManifestField(manifest, "suite_file"),
                                                  ReadManifestStrings(manifest, "overrides"),
                                                  suite.file.string(), suite.overrides) +
@@ -107,7 +113,7 @@ EpisodeLines StoredEpisodes(const Suite& suite,
   try {
     stored_lines = ReadEpisodesCsvChecked(episodes_csv);
   } catch (const std::runtime_error& e) {
-    throw RunError(e.what());
+    throw RunRefused(e.what());  // nothing has run: exit 2, as for other folders that do not fit
   }
   if (stored_lines.lines.empty()) return done;
   const std::set<std::string> kept = ResumableRows(suite, out_dir);

@@ -216,6 +216,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   if (root.IsMap()) {
     ApplyOverrides(root, overrides, &result.errors, &set_paths);
     ExpandSweeps(root, file.string(), &result.errors, &swept, &row_map);
+    RefuseOverridesOfSweptKeys(overrides, set_paths, swept, file.string(), &result.errors);
     LocateOverrideErrors(overrides, &result.errors, set_paths, row_map);
     if (!result.errors.empty()) return result;
   }
@@ -232,7 +233,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   keys.insert(keys.end(), {"episodes", "isolation", "episode_timeout_s", "world", "humans", "robot",
                            "columns", "rows", "summaries"});
   r.CheckKeys(root, "", keys);
-  SpecHead spec_head = ReadSpecHead(r, root, "results/<name>/");
+  SpecHead spec_head = ReadSpecHead(r, root, "runs/<name>/");
   s.name = std::move(spec_head.name);
   s.description = std::move(spec_head.description);
   s.seed = spec_head.seed;

@@ -8,6 +8,11 @@ namespace crowdsim::suite_internal {
 
 namespace {
 
+/// Whether the key path `inner` is `outer` or lies under it ("humans.count" in "humans").
+bool PathContains(const std::string& outer, const std::string& inner) {
+  return inner == outer || inner.starts_with(outer + ".") || inner.starts_with(outer + "[");
+}
+
 /// One step of a key path: a map key, then list selections ([2], [orca]).
 struct Segment {
   std::string key;
@@ -229,9 +234,7 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
     e.line = 0;
     e.column = 0;
   };
-  auto related = [](const std::string& a, const std::string& b) {  // b is a or lies under it
-    return b == a || b.starts_with(a + ".") || b.starts_with(a + "[");
-  };
+  const auto related = PathContains;  // (a, b): b is a or lies under it
   std::vector<bool> placed(errors->size(), false);
   // First, by the path each override set (list items by index; a row a sweep expanded under
   // each of its new indices): errors about that value or under it, and, with no place in the
@@ -352,6 +355,20 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
       combinations *= kv.second.size();
       axes.push_back(std::move(axis));
     }
+    // An axis inside another (humans and humans.count) would be overwritten by it in every
+    // row, while the labels and info columns still named its values.
+    for (std::size_t a = 0; ok && a < axes.size(); ++a) {
+      for (std::size_t b = 0; b < axes.size(); ++b) {
+        if (a == b || !PathContains(axes[a].key, axes[b].key)) continue;
+        const YAML::Mark m = axes[b].mark;
+        errors->push_back({file, m.line >= 0 ? m.line + 1 : 0, m.line >= 0 ? m.column + 1 : 0,
+                           path + "." + axes[b].key,
+                           "lies inside the swept key '" + axes[a].key +
+                               "', which replaces it in every row: sweep one of the two"});
+        ok = false;
+        break;
+      }
+    }
     constexpr std::size_t kMaxRows = 10000;
     if (ok && combinations > kMaxRows) {
       error(sweep, path,
@@ -436,6 +453,33 @@ void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& fi
         break;
       }
       break;
+    }
+  }
+}
+
+void RefuseOverridesOfSweptKeys(const std::vector<std::string>& overrides,
+                                const std::vector<std::string>& resolved,
+                                const std::vector<SweptRow>& swept, const std::string& file,
+                                std::vector<SuiteError>* errors) {
+  for (std::size_t i = 0; i < overrides.size() && i < resolved.size(); ++i) {
+    const std::string& set = resolved[i];  // rows[N].key.path, N a row of the file
+    if (!set.starts_with("rows[")) continue;
+    const std::size_t close = set.find(']');
+    if (close == std::string::npos || close + 1 >= set.size() || set[close + 1] != '.') continue;
+    const std::size_t row = std::stoul(set.substr(5, close - 5));
+    const std::string key = set.substr(close + 2);
+    for (const SweptRow& made : swept) {
+      if (made.source_row != row) continue;
+      for (const SweptRow::Key& axis : made.keys) {
+        if (!PathContains(axis.path, key) && !PathContains(key, axis.path)) continue;
+        errors->push_back({"--set " + overrides[i], 0, 0, "",
+                           "rows[" + std::to_string(row) + "] sweeps '" + axis.path + "' (" + file +
+                               ":" + std::to_string(axis.line) + ":" + std::to_string(axis.column) +
+                               "), which replaces this value in every row it makes: change "
+                               "the sweep's values instead"});
+        break;
+      }
+      break;  // every row of one sweep has the same keys
     }
   }
 }

@@ -62,4 +62,13 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
 void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& file,
                        std::vector<SuiteError>* errors);
 
+/// A --set into a row's key that the row's sweep sets too (or into a map holding one, or a key
+/// inside one) would be replaced in every row the sweep makes, though the manifest lists it
+/// among the overrides: an error naming the option and the sweep entry. `resolved` is
+/// ApplyOverrides', `swept` ExpandSweeps'.
+void RefuseOverridesOfSweptKeys(const std::vector<std::string>& overrides,
+                                const std::vector<std::string>& resolved,
+                                const std::vector<SweptRow>& swept, const std::string& file,
+                                std::vector<SuiteError>* errors);
+
 }  // namespace crowdsim::suite_internal

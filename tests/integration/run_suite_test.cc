@@ -602,6 +602,25 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   EXPECT_EQ(ReadText(dir_.path() / "whole" / "episodes.csv"), whole_before);
   EXPECT_EQ(WithoutTimingColumns(ReadText(dir_.path() / "whole" / "episodes.csv")),
             WithoutTimingColumns(ReadText(dir_.path() / "merged" / "episodes.csv")));
+  // A shard with a damaged line, or a line twice: said so (they read as a missing episode, or
+  // as one in both 'shard' and 'shard').
+  const fs::path damaged = dir_.path() / "damaged3";
+  fs::copy(shards[2], damaged);
+  std::ofstream(damaged / "episodes.csv", std::ios::app) << "orca,not,an,episode\n";
+  EXPECT_NE(merge_error({shards[0], shards[1], damaged})
+                .find("'" + (damaged / "episodes.csv").string() + "' has 1 damaged line(s)"),
+            std::string::npos)
+      << merge_error({shards[0], shards[1], damaged});
+  const fs::path doubled = dir_.path() / "doubled3";
+  fs::copy(shards[2], doubled);
+  const std::string shard_text = ReadText(doubled / "episodes.csv");
+  const std::string last_line =
+      shard_text.substr(shard_text.rfind('\n', shard_text.size() - 2) + 1);
+  std::ofstream(doubled / "episodes.csv", std::ios::app) << last_line;
+  EXPECT_NE(merge_error({shards[0], shards[1], doubled}).find("is twice in '" + doubled.string()),
+            std::string::npos)
+      << merge_error({shards[0], shards[1], doubled});
+
   // The suite file of another suite.
   const fs::path another = dir_.Write(
       "another.yaml",
@@ -669,6 +688,30 @@ rows:
     EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 3) << lines;
     EXPECT_EQ(lines.find("policy_error"), std::string::npos) << lines;
   }
+}
+
+TEST_F(RunSuiteTest, AFolderWithoutItsManifestIsRefusedSayingSo) {
+  // It was "a different configuration (config hash unknown ...; suite files  and ...)".
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "out", 1, 2);
+  const fs::path manifest = dir_.path() / "out" / "manifest.json";
+  auto refusal = [&] {
+    try {
+      Run(s, "out", 1, 2);
+    } catch (const RunRefused& e) {
+      return std::string(e.what());
+    }
+    return std::string("ran");
+  };
+  fs::remove(manifest);
+  EXPECT_NE(refusal().find("holds episodes, but its manifest.json is missing, so which "
+                           "configuration made them is unknown. Pass --fresh"),
+            std::string::npos)
+      << refusal();
+  std::ofstream(manifest) << "{ not json";
+  EXPECT_NE(refusal().find("its manifest.json is unreadable or has no config_hash"),
+            std::string::npos)
+      << refusal();
 }
 
 TEST_F(RunSuiteTest, PolicyErrorIsRecordedAndTheSuiteGoesOn) {

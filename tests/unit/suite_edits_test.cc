@@ -135,6 +135,31 @@ TEST_F(SuiteEdits, ASetIntoASweptRowIsOneErrorAndAnIndexTooLongIsNoItem) {
       << All(huge);
 }
 
+TEST_F(SuiteEdits, ASetOfASweptKeyAndSweptKeysInsideEachOtherAreErrors) {
+  // The sweep replaced the --set's value in every row, yet the manifest listed the override.
+  for (const std::string set : {"rows[orca].params.safety_space=0.3", "rows[0].humans.count=7",
+                                "rows[orca].params={safety_space: 0.3}"}) {
+    const auto r = Load(kSuite, {set});
+    ASSERT_FALSE(r.suite) << set;
+    EXPECT_NE(All(r).find("--set " + set + ": rows[0] sweeps '"), std::string::npos) << All(r);
+    EXPECT_NE(All(r).find("which replaces this value in every row it makes"), std::string::npos)
+        << All(r);
+  }
+  EXPECT_TRUE(Load(kSuite, {"rows[orca].params.time_horizon=4"}).suite);  // not swept: fine
+  EXPECT_TRUE(Load(kSuite, {"rows[linear].humans.count=7"}).suite);       // another row
+  // Two axes where one holds the other: the outer one replaced the inner in every row, while
+  // labels and info columns named the inner one's values.
+  std::string yaml = kSuite;
+  yaml.replace(yaml.find("world.obstacles: [1, 3]"), 23,
+               "world.obstacles: [1, 3], world: [{source: random_rect}]");
+  const auto r = Load(yaml);
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("suite.yaml:12:35: rows[0].sweep.world.obstacles: lies inside the swept "
+                        "key 'world', which replaces it in every row: sweep one of the two"),
+            std::string::npos)
+      << All(r);
+}
+
 TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
   const auto base = Load(kSuite);
   ASSERT_TRUE(base.suite) << All(base);

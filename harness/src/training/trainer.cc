@@ -41,22 +41,26 @@ namespace {
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void OnSignal(int sig) { g_signal = sig; }
 
-/// Catches SIGINT / SIGTERM while alive, so the trainer can checkpoint before leaving.
+/// Catches SIGINT / SIGTERM / SIGHUP (a closed terminal or ssh session) while alive, so the
+/// trainer can checkpoint before leaving.
 class SignalGuard {
  public:
   SignalGuard() {
     g_signal = 0;
     old_int_ = std::signal(SIGINT, OnSignal);
     old_term_ = std::signal(SIGTERM, OnSignal);
+    old_hup_ = std::signal(SIGHUP, OnSignal);
   }
   ~SignalGuard() {
     std::signal(SIGINT, old_int_);
     std::signal(SIGTERM, old_term_);
+    std::signal(SIGHUP, old_hup_);
   }
 
  private:
   void (*old_int_)(int);
   void (*old_term_)(int);
+  void (*old_hup_)(int);
 };
 
 using Clock = std::chrono::steady_clock;
