@@ -48,6 +48,13 @@ std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& regis
 
 namespace {
 
+/// The rows of `file` that cannot run, as run and validate say it.
+void ReportRowErrors(const std::string& file, const std::vector<std::string>& errors) {
+  for (const auto& e : errors) std::cerr << "error: " << file << ": " << e << "\n";
+  std::cerr << errors.size() << " row" << (errors.size() == 1 ? "" : "s") << " of " << file
+            << " cannot run\n";
+}
+
 /// Ctrl-C during a run: write the finished episodes still in memory, say that a rerun resumes,
 /// then die of the signal as before (exit status 130 from the shell).
 char g_interrupt_message[1024];
@@ -206,6 +213,9 @@ int RunCommand(const std::vector<std::string>& args) {
               << (shard_count > 1 ? ", manifest.json ("
                                   : ", table.csv, episodes.csv, manifest.json (")
               << s.episodes_run << " episodes run, " << s.episodes_resumed << " resumed)\n";
+  } catch (const RowsRefused& e) {
+    ReportRowErrors(suite->file.string(), e.errors());
+    return 2;  // nothing was run
   } catch (const RunRefused& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;  // nothing was run
@@ -263,10 +273,8 @@ int ValidateCommand(const std::vector<std::string>& args) {
     }
     // The plugins as `run` builds them: weights, world files, sensors the policies need.
     const std::vector<std::string> errors = PreflightSuite(*suite, registry);
-    for (const auto& e : errors) std::cerr << "error: " << file << ": " << e << "\n";
     if (!errors.empty()) {
-      std::cerr << errors.size() << " row" << (errors.size() == 1 ? "" : "s") << " of " << file
-                << " cannot run\n";
+      ReportRowErrors(file, errors);
       status = 2;
       continue;
     }

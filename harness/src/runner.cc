@@ -114,6 +114,14 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
   return errors;
 }
 
+RowsRefused::RowsRefused(std::vector<std::string> errors)
+    : RunRefused([&errors] {
+        std::string joined;
+        for (const std::string& e : errors) joined += (joined.empty() ? "" : "\n") + e;
+        return joined;
+      }()),
+      errors_(std::move(errors)) {}
+
 fs::path DefaultRunDir(const Suite& suite) { return fs::path("runs") / suite.name; }
 
 namespace {
@@ -163,7 +171,7 @@ std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
   // Every row is checked before any episode, and every row at fault is named (a suite of
   // three rows with missing weights said only the first); nothing is run then.
   std::vector<std::shared_ptr<WorldSource>> worlds;
-  std::string errors;
+  std::vector<std::string> errors;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     try {
       PreflightedRow built = PreflightRow(suite, r, registry);
@@ -171,10 +179,10 @@ std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
       worlds.push_back(built.world);
       facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
     } catch (const RunError& e) {
-      errors += (errors.empty() ? "" : "\n") + std::string(e.what());
+      errors.push_back(e.what());
     }
   }
-  if (!errors.empty()) throw RunRefused(errors);
+  if (!errors.empty()) throw RowsRefused(std::move(errors));
   return worlds;
 }
 

@@ -77,7 +77,10 @@ const RowRules kSuiteRowRules{"a policy plugin name such as linear or orca, or a
 /// would be turned into spaces there and could make two rows one.
 void CheckLabel(Reader& r, const YAML::Node& n, const std::string& path) {
   const std::string& label = n.Scalar();
-  if (label.empty()) r.Error(n, path, "must not be empty");
+  if (std::all_of(label.begin(), label.end(),
+                  [](char c) { return std::isspace(static_cast<unsigned char>(c)); })) {
+    r.Error(n, path, "must not be empty or blank");
+  }
   if (std::any_of(label.begin(), label.end(),
                   [](char c) { return std::iscntrl(static_cast<unsigned char>(c)); })) {
     r.Error(n, path,

@@ -439,18 +439,24 @@ void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& fi
       const std::string rest = e.key_path.substr(prefix.size());
       const std::string source = "rows[" + std::to_string(row.source_row) + "]";
       e.key_path = source + "." + rest;  // the row as the file writes it
+      bool placed = false;
       for (const SweptRow::Key& key : row.keys) {
         // The swept key itself, a key under it, or a map on its way that the sweep made.
-        const bool related = rest == key.path || rest.starts_with(key.path + ".") ||
-                             rest.starts_with(key.path + "[") || key.path.starts_with(rest + ".");
-        if (!related) continue;
+        if (!PathContains(key.path, rest) && !key.path.starts_with(rest + ".")) continue;
         e.key_path = source + ".sweep." + key.path;
         if (e.line == 0 && !from_set) {  // a key the sweep made: the sweep entry's place
           e.file = file;
           e.line = key.line;
           e.column = key.column;
         }
+        placed = true;
         break;
+      }
+      if (!placed && e.line == 0 && !from_set && !row.keys.empty()) {
+        // A key the sweep wrote beside the swept ones (the row's label): at its sweep.
+        e.file = file;
+        e.line = row.keys.front().line;
+        e.column = row.keys.front().column;
       }
       break;
     }

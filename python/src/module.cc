@@ -265,7 +265,6 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
   PluginRegistry registry;
   Suite suite = LoadSuiteOrThrow(suite_path, registry, set);
   const RowSpec& original = suite.rows[RowIndex(suite, row)];
-  CheckOneOfEachArraySensor(original);
   PythonStop stop;
   const PythonPolicyBinding binding(SensorNames(original), original.humans.count, policy, &stop);
   const RowSpec row_spec = WithPythonRobot(original, label, binding.plugin());

@@ -54,24 +54,6 @@ std::vector<std::string> SensorNames(const RowSpec& row) {
   return names;
 }
 
-void CheckOneOfEachArraySensor(const RowSpec& row) {
-  // The observation has one `humans` array (the person sensor's people) and one `lidar` array:
-  // two person sensors listed their people twice, past the array's rows.
-  for (const std::string kind : {"person", "lidar2d"}) {
-    std::vector<std::string> listed;
-    for (size_t k = 0; k < row.sensors.size(); ++k) {
-      if (row.sensors[k].loaded->descriptor->name == kind)
-        listed.push_back("robot.sensors[" + std::to_string(k) + "]");
-    }
-    if (listed.size() < 2) continue;
-    std::string names;
-    for (const std::string& one : listed) names += (names.empty() ? "" : ", ") + one;
-    throw py::value_error("row '" + row.label + "' has " + std::to_string(listed.size()) + " " +
-                          kind + " sensors (" + names +
-                          "); a Python observation has one array for them: keep one");
-  }
-}
-
 RowSpec WithPythonRobot(const RowSpec& row, const std::string& label,
                         const LoadedPlugin& python_policy) {
   RowSpec out = row;
@@ -88,7 +70,6 @@ PythonRow::PythonRow(const std::string& suite_path, const py::object& row_choice
                      const std::vector<std::string>& set)
     : suite(LoadSuiteOrThrow(suite_path, registry, set)) {
   const RowSpec& original = suite.rows[RowIndex(suite, row_choice)];
-  CheckOneOfEachArraySensor(original);
   binding = std::make_unique<PythonPolicyBinding>(SensorNames(original), original.humans.count,
                                                   py::object(), nullptr);
   row = WithPythonRobot(original, original.label, binding->plugin());

@@ -24,10 +24,6 @@ size_t RowIndex(const Suite& suite, const pybind11::object& row);
 /// Plugin names of the row's sensors.
 std::vector<std::string> SensorNames(const RowSpec& row);
 
-/// Refuses (ValueError) a row with two sensors of one kind that fills one observation array
-/// (person: `humans`, lidar2d: `lidar`).
-void CheckOneOfEachArraySensor(const RowSpec& row);
-
 /// The row with the Python policy (`python_policy`, a binding's plugin) in place of its robot
 /// policy; the marker in the canonical text keeps its stored results apart from the original
 /// row's.

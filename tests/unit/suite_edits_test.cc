@@ -160,6 +160,22 @@ TEST_F(SuiteEdits, ASetOfASweptKeyAndSweptKeysInsideEachOtherAreErrors) {
       << All(r);
 }
 
+TEST_F(SuiteEdits, ALabelTwoSweepsBothMakeIsAnErrorAtTheSecondSweep) {
+  // It had no line: the label is written by the sweep, not by the file.
+  const auto r = Load(R"(name: t
+episodes: 3
+world: {source: random_rect, obstacles: 1, split: test}
+rows:
+  - {label: a, policy: linear, sweep: {humans.count: [1, 2]}}
+  - {label: a, policy: orca, sweep: {humans.count: [2, 3]}}
+)");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("suite.yaml:6:38: rows[1].label: label 'a/humans.count=2' is used by an "
+                        "earlier row"),
+            std::string::npos)
+      << All(r);
+}
+
 TEST_F(SuiteEdits, SetOverridesKeysAndRowsByName) {
   const auto base = Load(kSuite);
   ASSERT_TRUE(base.suite) << All(base);

@@ -439,6 +439,18 @@ TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
   EXPECT_NE(Find(dotdot, "name: '..' must not start with '.'"), "") << All(dotdot);
   EXPECT_NE(Find(dotdot, "rows[0].label: must not contain control characters"), "") << All(dotdot);
   EXPECT_NE(Find(dotdot, "rows[1].label: must not contain control characters"), "") << All(dotdot);
+  // A blank label passed; two sensors of one plugin too, the second never read.
+  auto blank = Load(
+      "name: b\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "robot: {sensors: [person, {type: person, max_range: 3}]}\n"
+      "rows:\n  - {label: \"  \", policy: linear}\n");
+  ASSERT_FALSE(blank.suite);
+  EXPECT_NE(Find(blank, "rows[0].label: must not be empty or blank"), "") << All(blank);
+  EXPECT_NE(Find(blank,
+                 "robot.sensors[1].type: a second 'person' sensor: readings are named by "
+                 "their sensor, so only the first would ever be read; keep one"),
+            "")
+      << All(blank);
   // A folder given as the suite file.
   const SuiteLoadResult folder = LoadSuite(dir_.path(), registry_);
   ASSERT_FALSE(folder.suite);

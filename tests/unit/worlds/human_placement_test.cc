@@ -199,7 +199,7 @@ TEST(HumanPlacement, ImpossibleRequestThrowsAClearError) {
   } catch (const PlacementError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("human"), std::string::npos) << what;
-    EXPECT_NE(what.find("num_humans"), std::string::npos) << what;
+    EXPECT_NE(what.find("(the row's humans.count)"), std::string::npos) << what;
   }
 }
 
@@ -311,7 +311,7 @@ TEST(HumanPlacement, AnImpossibleDensityIsNamedInTheError) {
     EXPECT_NE(what.find("0.8 m apart (starts from starts, goals from goals) jam at about 1.09"),
               std::string::npos)
         << what;
-    EXPECT_NE(what.find("num_humans"), std::string::npos) << what;
+    EXPECT_NE(what.find("(the row's humans.count)"), std::string::npos) << what;
   }
 }
 

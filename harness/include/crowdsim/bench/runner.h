@@ -28,6 +28,17 @@ class RunRefused : public RunError {
   using RunError::RunError;
 };
 
+/// Rows that cannot run, found before any episode (the preflight of every row): one message per
+/// row at fault, each naming its row; what() joins them with newlines.
+class RowsRefused : public RunRefused {
+ public:
+  explicit RowsRefused(std::vector<std::string> errors);
+  const std::vector<std::string>& errors() const { return errors_; }
+
+ private:
+  std::vector<std::string> errors_;
+};
+
 /// The ranges a run takes for its worker count and its episode count (the CLI's --jobs and
 /// --episodes, the Python package's jobs= and episodes=).
 inline constexpr int kMaxJobs = 1024;
