@@ -154,7 +154,7 @@ std::vector<std::string> SynopsisLines(const std::string& usage) {
 void PrintBashCompletion() {
   std::cout << "# bash completion for crowdsim-bench (source <(crowdsim-bench completion bash))\n"
                "_crowdsim_bench() {\n"
-               "  local cur=${COMP_WORDS[COMP_CWORD]}\n"
+               "  local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}\n"
                "  if [[ $COMP_CWORD -eq 1 ]]; then\n"
                "    COMPREPLY=($(compgen -W \"";
   for (const Command& c : Commands()) std::cout << c.name << " ";
@@ -167,13 +167,18 @@ void PrintBashCompletion() {
             << "    completion) [[ $COMP_CWORD -eq 2 ]] && COMPREPLY=($(compgen -W \"bash\" -- "
                "\"$cur\"));;\n";
   for (const Command& c : Commands()) {
-    std::string opts, subcommands;
+    std::string opts, subcommands, with_value;
     for (const std::string& u : SynopsisLines(c.usage)) {
       for (std::size_t p = u.find("--"); p != std::string::npos; p = u.find("--", p + 2)) {
         std::size_t e = p + 2;
         while (e < u.size() && (std::isalnum(static_cast<unsigned char>(u[e])) || u[e] == '-')) ++e;
         const std::string opt = u.substr(p, e - p);
-        if (opt.size() > 2 && opts.find(opt + " ") == std::string::npos) opts += opt + " ";
+        if (opt.size() <= 2 || opts.find(opt + " ") != std::string::npos) continue;
+        opts += opt + " ";
+        // "--out DIR", "--kind navmesh|outline": a value follows (a flag ends at its ']').
+        if (e + 1 < u.size() && u[e] == ' ' && u[e + 1] != '[' && u[e + 1] != '-') {
+          with_value += (with_value.empty() ? "" : "|") + opt;
+        }
       }
       // A lower-case word after the command's name is a subcommand (floorplan import).
       const std::string head = "crowdsim-bench " + std::string(c.name) + " ";
@@ -187,6 +192,10 @@ void PrintBashCompletion() {
       }
     }
     std::cout << "    " << c.name << ") ";
+    if (!with_value.empty()) {  // an option's value: files (or what the user types), no options
+      std::cout << "case $prev in " << with_value
+                << ") COMPREPLY=($(compgen -f -- \"$cur\")); return;; esac; ";
+    }
     if (!subcommands.empty()) {
       std::cout << "if [[ $COMP_CWORD -eq 2 ]]; then COMPREPLY=($(compgen -W \"" << subcommands
                 << "--help\" -- \"$cur\")); return; fi; ";

@@ -812,6 +812,11 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   auto [urc, utext] = Shell(exe + " run " + suite.string() + " --jobz 2");
   EXPECT_EQ(urc, 2) << utext;
   EXPECT_NE(utext.find("unknown option '--jobz'"), std::string::npos) << utext;
+  // An option of one value given twice: the last one silently won.
+  auto [drc, dtext] = Shell(exe + " run " + suite.string() + " --out a --out b");
+  EXPECT_EQ(drc, 2) << dtext;
+  EXPECT_NE(dtext.find("--out is given 2 times ('a', 'b'): give it once"), std::string::npos)
+      << dtext;
   auto [mrc, mtext] = Shell(exe + " run /nonexistent/suite.yaml");
   EXPECT_EQ(mrc, 2) << mtext;
   EXPECT_NE(mtext.find("suite file does not exist"), std::string::npos) << mtext;
@@ -1057,11 +1062,14 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
       completion.find("run merge validate train train-all floorplan render report list-plugins"),
       std::string::npos)
       << completion;
-  EXPECT_NE(completion.find(
-                "train) COMPREPLY=($(compgen -W \"--resume --out --seed --quiet --set --help\""),
+  EXPECT_NE(completion.find("train) case $prev in --out|--seed|--set) COMPREPLY=($(compgen -f "
+                            "-- \"$cur\")); return;; esac; COMPREPLY=($(compgen -W \"--resume "
+                            "--out --seed --quiet --set --help\""),
             std::string::npos)
       << completion;
-  EXPECT_NE(completion.find("train-all) COMPREPLY=($(compgen -W \"--quiet --set --help\""),
+  EXPECT_NE(completion.find("train-all) case $prev in --set) COMPREPLY=($(compgen -f -- "
+                            "\"$cur\")); return;; esac; COMPREPLY=($(compgen -W \"--quiet --set "
+                            "--help\""),
             std::string::npos)
       << completion;
   const auto script = dir_.Write("completion.bash", completion);
@@ -1069,10 +1077,19 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   EXPECT_EQ(b, 0) << bash_text;
   // Options from the synopsis only (merge's description names run's --shard), subcommands of
   // floorplan, command names after help.
-  EXPECT_NE(completion.find("merge) COMPREPLY=($(compgen -W \"--out --suite --allow-mixed-commits "
+  EXPECT_NE(completion.find("COMPREPLY=($(compgen -W \"--out --suite --allow-mixed-commits "
                             "--help\""),
             std::string::npos)
       << completion;
+  // After an option that takes a value, files only (options were offered as --out's value).
+  auto complete = [&](const std::string& words, int cword) {
+    return Shell("bash -c 'source " + script.string() + "; COMP_WORDS=(" + words +
+                 "); COMP_CWORD=" + std::to_string(cword) +
+                 "; _crowdsim_bench; printf \"%s\\n\" \"${COMPREPLY[@]}\"'")
+        .second;
+  };
+  EXPECT_EQ(complete("crowdsim-bench run s.yaml --out --", 4).find("--jobs"), std::string::npos);
+  EXPECT_NE(complete("crowdsim-bench run s.yaml --", 3).find("--jobs"), std::string::npos);
   EXPECT_NE(completion.find("compgen -W \"import preview dataset --help\""), std::string::npos)
       << completion;
   EXPECT_NE(completion.find("help) [[ $COMP_CWORD -eq 2 ]] && COMPREPLY=($(compgen -W \"run "),

@@ -46,6 +46,14 @@ Args Args::Parse(const std::vector<std::string>& args, const std::vector<std::st
 std::optional<std::string> Args::Get(const std::string& name) const {
   auto it = options.find(name);
   if (it == options.end()) return std::nullopt;
+  // An option of one value given twice (--out a ... --out b): the last silently won.
+  if (const auto values = repeated.find(name);
+      values != repeated.end() && values->second.size() > 1) {
+    std::string given;
+    for (const std::string& v : values->second) given += (given.empty() ? "'" : "', '") + v;
+    throw UsageError(name + " is given " + std::to_string(values->second.size()) + " times (" +
+                     given + "'): give it once");
+  }
   return it->second;
 }
 

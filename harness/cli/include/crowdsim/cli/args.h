@@ -35,6 +35,7 @@ struct Args {
                     const std::vector<std::string>& with_value,
                     const std::vector<std::string>& flags);
   bool Has(const std::string& name) const { return options.count(name) != 0; }
+  /// The value of an option given at most once (UsageError when it was given more often).
   std::optional<std::string> Get(const std::string& name) const;
   /// Every value of a repeatable option (e.g. --set), in order; empty when absent.
   std::vector<std::string> All(const std::string& name) const;
