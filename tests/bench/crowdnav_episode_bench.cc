@@ -7,14 +7,18 @@
 // Where that time goes, exactly: the same 500 episodes with some agents' decisions replayed
 // (each action as the real policy chose it in that episode and step), so the episodes, their
 // steps and outcomes are the ones of the real run and only the replayed decisions' cost is
-// gone. BM_CrowdNavEpisode less BM_CrowdNavEpisodeReplaying/humans is what the five humans'
-// decisions cost, less .../robot the robot's, and .../everybody is everything else: the
-// scenario, the episode's set-up, the neighbour index, the robot's observation, the collision
-// test, rewards and records. (Timing a part by doing it twice per step underestimates it: the
-// second call repeats the first's branches and finds its data in cache.)
+// gone. Each policy then sits behind a recorder (a call and a store per decision), so the
+// split is taken against BM_CrowdNavEpisodeReplaying/nobody, the recorders recording:
+// .../nobody less .../humans is what the five humans' decisions cost, less .../robot the
+// robot's, and .../everybody is everything else: the scenario, the episode's set-up, the
+// neighbour index, the robot's observation, the collision test, rewards and records (and the
+// recorders' replay). BM_CrowdNavEpisode plays the row's own policies, no recorder between. (Timing
+// a part by doing it twice per step underestimates it: the second call repeats the first's branches
+// and finds its data in cache.)
 #include <benchmark/benchmark.h>
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -74,6 +78,7 @@ class CrowdNavTask {
     world_ = registry_.MakeWorld(*row.world.loaded, row.world.params);
     instance_ = std::make_unique<RowInstance>(row, registry_);
     agents_ = instance_->Agents(static_cast<size_t>(row.humans.count_max));
+    plain_agents_ = agents_;
     robot_ = std::make_unique<RecordedPolicy>(agents_.robot);
     agents_.robot = robot_.get();
     for (Policy*& human : agents_.humans) {
@@ -89,7 +94,16 @@ class CrowdNavTask {
   const Suite& suite() const { return *loaded_.suite; }
   const EpisodeResult& Recorded(int k) const { return recorded_[static_cast<size_t>(k)]; }
 
-  /// Episode k as a suite run plays it, with the decisions of `replayed` played back.
+  /// Episode k as a suite run plays it: the row's own policies, nothing between them and the
+  /// episode.
+  EpisodeResult PlayPlain(int k) {
+    const RowSpec& row = suite().rows.at(0);
+    const Scenario scenario = world_->Make(MakeEpisodeRequest(suite(), row, *world_, k));
+    Episode episode(scenario, suite().sim, plain_agents_);
+    return episode.Run();
+  }
+
+  /// Episode k with every policy behind its recorder, the decisions of `replayed` played back.
   EpisodeResult Play(int k, Replayed replayed) {
     robot_->Use(k, replayed == Replayed::kRobot || replayed == Replayed::kEverybody);
     for (auto& h : humans_) {
@@ -106,13 +120,15 @@ class CrowdNavTask {
   SuiteLoadResult loaded_;
   std::shared_ptr<WorldSource> world_;
   std::unique_ptr<RowInstance> instance_;
-  EpisodeAgents agents_;
+  EpisodeAgents agents_;        // the recorders
+  EpisodeAgents plain_agents_;  // the row's policies themselves
   std::unique_ptr<RecordedPolicy> robot_;
   std::vector<std::unique_ptr<RecordedPolicy>> humans_;
   std::vector<EpisodeResult> recorded_;
 };
 
-void TimeEpisodes(benchmark::State& state, Replayed replayed) {
+// `replayed` empty: the plain episodes, as `crowdsim-bench run` plays them.
+void TimeEpisodes(benchmark::State& state, std::optional<Replayed> replayed) {
   static CrowdNavTask* task = nullptr;  // recorded once for every variant
   try {
     if (task == nullptr) task = new CrowdNavTask();
@@ -123,7 +139,7 @@ void TimeEpisodes(benchmark::State& state, Replayed replayed) {
   int k = 0;
   std::int64_t steps = 0, successes = 0;
   for (auto _ : state) {
-    const EpisodeResult result = task->Play(k, replayed);
+    const EpisodeResult result = replayed ? task->Play(k, *replayed) : task->PlayPlain(k);
     // A replay must be the recorded episode; anything else would time another workload.
     if (result.steps != task->Recorded(k).steps || result.status != task->Recorded(k).status) {
       state.SkipWithError("a replayed episode differs from the recorded one");
@@ -139,12 +155,15 @@ void TimeEpisodes(benchmark::State& state, Replayed replayed) {
   state.counters["steps_per_episode"] = static_cast<double>(steps) / episodes;
   state.counters["success"] = static_cast<double>(successes) / episodes;
 }
-void BM_CrowdNavEpisode(benchmark::State& state) { TimeEpisodes(state, Replayed::kNobody); }
+void BM_CrowdNavEpisode(benchmark::State& state) { TimeEpisodes(state, std::nullopt); }
 BENCHMARK(BM_CrowdNavEpisode)->Unit(benchmark::kMicrosecond);
 
 void BM_CrowdNavEpisodeReplaying(benchmark::State& state, Replayed replayed) {
   TimeEpisodes(state, replayed);
 }
+// The split's baseline: every policy behind its recorder, recording (nothing replayed).
+BENCHMARK_CAPTURE(BM_CrowdNavEpisodeReplaying, nobody, Replayed::kNobody)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_CrowdNavEpisodeReplaying, humans, Replayed::kHumans)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_CrowdNavEpisodeReplaying, robot, Replayed::kRobot)
