@@ -1,12 +1,12 @@
 #include "crowdsim/bench/episode.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 #include "crowdsim/rng.h"
+#include "decision_clock.h"
 
 namespace crowdsim {
 
@@ -324,10 +324,9 @@ StepInfo Episode::Step() {
     } else {
       robot_obs_.lookahead = nullptr;
     }
-    const auto t0 = std::chrono::steady_clock::now();
+    const std::uint64_t t0 = DecisionClock::Now();
     info.robot_action = agents_.robot->Decide(robot_obs_);
-    decision_time_total_us_ +=
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    decision_ticks_ += DecisionClock::Now() - t0;
     if (!info.robot_action.velocity.allFinite()) {
       throw std::runtime_error(PolicyName(-1) + " returned a non-finite velocity");
     }
@@ -404,7 +403,8 @@ void Episode::Finish(EpisodeStatus status) {
   result_.status = status;
   result_.time = time_;
   result_.steps = step_index_;
-  result_.decision_time_us = step_index_ > 0 ? decision_time_total_us_ / step_index_ : 0.0;
+  result_.decision_time_us =
+      step_index_ > 0 ? DecisionClock::Microseconds(decision_ticks_) / step_index_ : 0.0;
   int at_goal = 0;
   for (size_t i = 0; i < humans_.size(); ++i) {
     if (human_reached_[i] || (humans_[i].position - humans_[i].goal).norm() < humans_[i].radius) {

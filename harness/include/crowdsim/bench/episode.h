@@ -1,6 +1,7 @@
 // The episode loop: sense -> decide (robot + humans) -> move all -> check -> record.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -168,7 +169,7 @@ class Episode {
   bool robot_obs_current_ = false;  ///< robot_obs_ shows the current state (ObserveRobot)
   Observation human_obs_;
   std::unique_ptr<StepLookahead> lookahead_;
-  double decision_time_total_us_ = 0.0;
+  std::uint64_t decision_ticks_ = 0;  ///< the robot's Decide calls, DecisionClock ticks
   EpisodeResult result_;
 };
 
