@@ -10,6 +10,8 @@
 
 #include "blas_kernel.h"
 
+#include "shipped_plugins.h"
+
 namespace crowdsim {
 namespace fs = std::filesystem;
 
@@ -119,6 +121,9 @@ fs::path PluginRegistry::HarnessPluginDir() {
 
 bool PluginRegistry::IsHarnessPlugin(const LoadedPlugin& p) {
   if (p.path.empty()) return false;  // made in memory (e.g. the Python module's policy)
+  // One this build ships, by its name (a plugin of yours copied into the harness's folder was
+  // taken for the harness's: a rebuild of it resumed the old build's episodes, unisolated).
+  if (p.descriptor == nullptr || !IsShippedPluginName(p.descriptor->name)) return false;
   std::error_code ec;
   static const fs::path own = fs::weakly_canonical(HarnessPluginDir(), ec);
   return (p.folder.empty() ? fs::weakly_canonical(p.path, ec).parent_path() : p.folder) == own;

@@ -281,6 +281,18 @@ TEST_F(SuiteValidation, APluginIsTheHarnesssOwnByTheFolderItIsFoundIn) {
       registry.Load((dir_.path() / "linked" / "crowdsim_linear.so").string(), PluginKind::kPolicy);
   EXPECT_FALSE(PluginRegistry::IsHarnessPlugin(linked));
   EXPECT_TRUE(PluginRegistry::IsHarnessPlugin(registry.Load("person", PluginKind::kSensor)));
+  // In the harness's folder, only a plugin this build ships: one of yours copied there (the
+  // SDK's CROWDSIM_PLUGIN_INSTALL_DIR) was taken for the harness's, so a rebuild of it resumed
+  // the old build's episodes.
+  PluginDescriptor yours = *registry.Load("linear", PluginKind::kPolicy).descriptor;
+  yours.name = "walker";
+  LoadedPlugin copied;
+  copied.path = fs::weakly_canonical(testing::PluginDir()) / "crowdsim_walker.so";
+  copied.folder = fs::weakly_canonical(testing::PluginDir());
+  copied.descriptor = &yours;
+  EXPECT_FALSE(PluginRegistry::IsHarnessPlugin(copied));
+  yours.name = "linear";
+  EXPECT_TRUE(PluginRegistry::IsHarnessPlugin(copied));
 }
 
 TEST_F(SuiteValidation, ReferencesAndSummariesLoadWithoutChangingTheConfigHash) {
