@@ -9,7 +9,6 @@
 #include <stdexcept>
 
 #include "blas_kernel.h"
-
 #include "shipped_plugins.h"
 
 namespace crowdsim {

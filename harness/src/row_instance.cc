@@ -1,9 +1,12 @@
 #include "crowdsim/bench/row_instance.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "crowdsim/rng.h"
+#include "worker_process.h"
 
 namespace crowdsim {
 
@@ -35,6 +38,20 @@ const EpisodeAgents& RowInstance::Agents(size_t humans) {
   return agents_;
 }
 
+std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row) {
+  std::vector<std::pair<std::string, const PluginUse*>> uses = {
+      {"policy", &row.policy}, {"humans' policy", &row.humans.policy}, {"world", &row.world}};
+  for (const auto& s : row.sensors) uses.push_back({"sensor", &s});
+  return uses;
+}
+
+bool AllHarnessPlugins(const RowSpec& row) {
+  const auto uses = RowPlugins(row);
+  return std::all_of(uses.begin(), uses.end(), [](const auto& use) {
+    return PluginRegistry::IsHarnessPlugin(*use.second->loaded);
+  });
+}
+
 ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const WorldSource& world,
                                    int episode) {
   ScenarioRequest req;
@@ -55,14 +72,59 @@ Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const World
   return scenario;
 }
 
+namespace {
+
+/// Whether a replay of `row` runs first in a worker process: where `run` would isolate it (a
+/// plugin that is not the harness's own, a timeout, isolation: on).
+bool ReplayIsolated(const Suite& suite, const RowSpec& row) {
+  if (suite.isolation != IsolationMode::kAuto) return suite.isolation == IsolationMode::kOn;
+  return suite.episode_timeout_s > 0 || !AllHarnessPlugins(row);
+}
+
+/// Plays the episode once in a worker process (with the suite's episode_timeout_s): a plugin
+/// that crashes or hangs there ends the worker, and this throws saying so, where it took the
+/// caller down (render died of SIGSEGV, or hung, on an episode the run had recorded as
+/// policy_crash / policy_timeout). Nothing is kept from it: the replay is deterministic.
+void ProbeInWorker(const Suite& suite, size_t row_index, int episode, PluginRegistry& registry) {
+  std::optional<WorkerLoss> lost;
+  WorkerPoolOptions options;
+  options.task_timeout_s = suite.episode_timeout_s;
+  WorkerPoolCallbacks callbacks;
+  callbacks.run = [&](std::size_t) -> std::string {
+    try {
+      ReplayEpisode(suite, row_index, episode, registry, false, /*probe=*/false);
+    } catch (const std::exception&) {
+      // The replay in the caller's process throws the same, with its message.
+    }
+    return "done";
+  };
+  callbacks.done = [](std::size_t, const std::string&) { return true; };
+  callbacks.lost = [&](std::size_t, const WorkerLoss& loss) {
+    lost = loss;
+    return false;
+  };
+  RunInWorkerProcesses(1, options, callbacks);
+  if (!lost) return;
+  const std::string status =
+      lost->kind == WorkerLoss::Kind::kTimeout ? "policy_timeout" : "policy_crash";
+  throw std::runtime_error("episode " + std::to_string(episode) + " of row '" +
+                           suite.rows[row_index].label +
+                           "' cannot be replayed: a run records it as " + status +
+                           " (the worker process that replayed it here: " + lost->Describe() +
+                           "); pick another episode, or fix the plugin");
+}
+
+}  // namespace
+
 Replay ReplayEpisode(const Suite& suite, size_t row_index, int episode, PluginRegistry& registry,
-                     bool record_trajectory) {
+                     bool record_trajectory, bool probe) {
   if (row_index >= suite.rows.size()) {
     throw std::out_of_range("row " + std::to_string(row_index + 1) +
                             " does not exist; the suite has " + std::to_string(suite.rows.size()) +
                             " rows");
   }
   const RowSpec& row = suite.rows[row_index];
+  if (probe && ReplayIsolated(suite, row)) ProbeInWorker(suite, row_index, episode, registry);
   auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
   RowInstance instance(row, registry);
   Replay replay;

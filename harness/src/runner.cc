@@ -27,14 +27,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Every plugin a row's episodes call, with its role there.
-std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row) {
-  std::vector<std::pair<std::string, const PluginUse*>> uses = {
-      {"policy", &row.policy}, {"humans' policy", &row.humans.policy}, {"world", &row.world}};
-  for (const auto& s : row.sensors) uses.push_back({"sensor", &s});
-  return uses;
-}
-
 /// A row as its preflight built it: the world, the plugins and episode 0's scenario.
 struct PreflightedRow {
   std::shared_ptr<WorldSource> world;
@@ -77,11 +69,9 @@ PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& regist
 void CheckFirstStep(const Suite& suite, size_t r, PreflightedRow& built) {
   const RowSpec& row = suite.rows[r];
   const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
-  const auto uses = RowPlugins(row);
-  const bool own = std::all_of(uses.begin(), uses.end(), [](const auto& use) {
-    return PluginRegistry::IsHarnessPlugin(*use.second->loaded);
-  });
-  if (!own || suite.episode_timeout_s > 0 || suite.isolation == IsolationMode::kOn) return;
+  if (!AllHarnessPlugins(row) || suite.episode_timeout_s > 0 ||
+      suite.isolation == IsolationMode::kOn)
+    return;
   try {
     const Scenario& scenario = built.episode0;
     Episode episode(scenario, suite.sim, built.instance->Agents(scenario.humans.size()));
@@ -449,12 +439,7 @@ bool Isolated(const Suite& suite, const RunOptions& options) {
   }
   if (mode != IsolationMode::kAuto) return mode == IsolationMode::kOn;
   if (suite.episode_timeout_s > 0) return true;
-  for (const RowSpec& row : suite.rows) {
-    for (const auto& [role, use] : RowPlugins(row)) {
-      if (!PluginRegistry::IsHarnessPlugin(*use->loaded)) return true;
-    }
-  }
-  return false;
+  return !std::all_of(suite.rows.begin(), suite.rows.end(), AllHarnessPlugins);
 }
 
 /// A shard's files: its episodes in (row, episode) order and a manifest naming the shard; the

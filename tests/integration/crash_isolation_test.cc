@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "crowdsim/bench/results.h"
+#include "crowdsim/bench/row_instance.h"
 #include "crowdsim/bench/runner.h"
 #include "temp_dir.h"
 #include "test_paths.h"
@@ -132,6 +133,42 @@ TEST_F(CrashIsolationTest, CrashesAndHangsCostTheirEpisodeNotTheRun) {
   EXPECT_EQ(again.episodes_resumed, 24);
   EXPECT_EQ(ReadText(dir_.path() / "out" / "episodes.csv"), csv);
   EXPECT_DOUBLE_EQ(again.rows[0].metrics.policy_crash_rate, 0.25);
+}
+
+// render and report replay an episode in their own process: one a run recorded as
+// policy_crash or policy_timeout took the CLI down (exit 139) or hung it. A row that a run
+// isolates is first replayed in a worker process.
+TEST_F(CrashIsolationTest, AReplayThatCrashesOrHangsIsAnErrorNotTheEndOfTheCaller) {
+  const std::string plugin = (testing::FixturePluginDir() / "crowdsim_throwing_policy.so").string();
+  const Suite s = LoadOrDie(
+      "name: replayed\nepisodes: 2\nepisode_timeout_s: 1\n"
+      "world: {source: random_rect, obstacles: 1}\nhumans: {count: 2, policy: linear}\nrows:\n"
+      "  - {label: segv, policy: " +
+      plugin +
+      ", params: {mode: segfault, fail_after_steps: 1}}\n"
+      "  - {label: hang, policy: " +
+      plugin +
+      ", params: {mode: hang, fail_after_steps: 1}}\n"
+      "  - {label: good, policy: " +
+      plugin + ", params: {fail_after_steps: 1000}}\n");
+  auto replay_error = [&](size_t row) {
+    try {
+      ReplayEpisode(s, row, 1, registry_, true);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("replayed");
+  };
+  EXPECT_NE(replay_error(0).find("episode 1 of row 'segv' cannot be replayed: a run records it "
+                                 "as policy_crash (the worker process that replayed it here: "
+                                 "killed by signal SIGSEGV"),
+            std::string::npos)
+      << replay_error(0);
+  EXPECT_NE(replay_error(1).find("a run records it as policy_timeout (the worker process that "
+                                 "replayed it here: killed at the episode_timeout_s of 1 s)"),
+            std::string::npos)
+      << replay_error(1);
+  EXPECT_EQ(replay_error(2), "replayed");
 }
 
 TEST_F(CrashIsolationTest, IsolatedRunsGiveTheSameEpisodesAsThreads) {

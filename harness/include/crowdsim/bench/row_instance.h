@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "crowdsim/bench/episode.h"
@@ -46,13 +47,23 @@ ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const
 Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const WorldSource& world,
                              int episode, ScenarioRequest* request = nullptr);
 
+/// Every plugin a row's episodes call, with its role there ("policy", "humans' policy",
+/// "world", "sensor").
+std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row);
+/// Whether every plugin of the row is the harness's own (PluginRegistry::IsHarnessPlugin): a
+/// row `run` need not isolate.
+bool AllHarnessPlugins(const RowSpec& row);
+
 /// Re-simulates one episode of a suite exactly as `crowdsim-bench run` does, optionally
-/// recording the trajectory. Throws PluginError or std::out_of_range for a bad row index.
+/// recording the trajectory. Throws PluginError or std::out_of_range for a bad row index. A row
+/// that `run` would isolate (a plugin not the harness's own, a timeout, isolation: on) is first
+/// played in a worker process (`probe`): a plugin that crashes or hangs there is a
+/// std::runtime_error naming the episode, not the end of the caller.
 struct Replay {
   Scenario scenario;
   EpisodeResult result;
 };
 Replay ReplayEpisode(const Suite& suite, size_t row, int episode, PluginRegistry& registry,
-                     bool record_trajectory);
+                     bool record_trajectory, bool probe = true);
 
 }  // namespace crowdsim
