@@ -46,7 +46,9 @@ grep -q ",0.0000,5," "$work/run/table.csv" || fail "policy errors in $(cat "$wor
 # installed core library and plugins.
 if [[ -d "$build/python/crowdsim_bench" ]]; then
   py=$(sed -n 's/^CROWDSIM_PYTHON_EXECUTABLE:INTERNAL=//p' "$build/CMakeCache.txt")
-  PYTHONPATH="$work/prefix/lib/python3/dist-packages" "${py:-python3}" -c "
+  py_dir=$(sed -n 's/^CROWDSIM_PYTHON_INSTALL_DIR:INTERNAL=//p' "$build/CMakeCache.txt")
+  [[ -d "$work/prefix/$py_dir/crowdsim_bench" ]] || fail "no Python package in $work/prefix/$py_dir"
+  PYTHONPATH="$work/prefix/$py_dir" "${py:-python3}" -c "
 import crowdsim_bench as cb
 assert cb.__file__.startswith('$work/prefix'), cb.__file__
 env = cb.Env('$source/suites/quick.yaml', row='orca')

@@ -16,7 +16,8 @@ using crowdsim::random_rect::SetSpec;
 constexpr const char* kUsage =
     "usage: crowdsim-make-rect-worlds [--out DIR]\n"
     "         writes the four committed sets obstacles_{1,3}_{train,test}.yaml into DIR\n"
-    "         (default: the source folder worlds/random_rect)\n"
+    "         (default, for the build's own binary: the source folder worlds/random_rect;\n"
+    "         an installed copy needs --out)\n"
     "       crowdsim-make-rect-worlds --obstacles N [--split NAME] [--seed X] [--count K]\n"
     "           [--min-side M] [--max-side M] [--wall-margin M] [--obstacle-margin M] --out FILE\n"
     "         writes one custom set (sizes and margins in metres)\n";
@@ -29,6 +30,15 @@ void Report(const SetSpec& spec, const RectLayoutStats& s, const fs::path& path)
       100.0 * s.RejectionRate(), static_cast<long long>(s.rejected_placement),
       static_cast<long long>(s.rejected_disconnected), static_cast<long long>(s.rejected_no_pair),
       s.MeanSide());
+}
+
+/// Whether this is the build tree's binary (whose source folder is the default output), not an
+/// installed copy (which wrote into the source tree of the machine that built the package).
+bool RunsFromTheBuildTree() {
+  std::error_code ec;
+  const fs::path self = fs::canonical("/proc/self/exe", ec);
+  const fs::path bin = fs::weakly_canonical(CROWDSIM_BUILD_BIN_DIR, ec);
+  return !self.empty() && self.parent_path() == bin;
 }
 
 int Run(int argc, char** argv) {
@@ -82,6 +92,13 @@ int Run(int argc, char** argv) {
     }
   }
   if (!is_custom) {
+    if (!out_given && !RunsFromTheBuildTree()) {
+      std::fprintf(stderr,
+                   "crowdsim-make-rect-worlds: an installed copy has no source folder to write "
+                   "to: give --out DIR\n%s",
+                   kUsage);
+      return 2;
+    }
     for (const SetSpec& spec : crowdsim::random_rect::CommittedSets()) {
       const fs::path path = out / spec.FileName();
       Report(spec, WriteSet(spec, config, crowdsim::random_rect::kCommittedSetsCommand, path),
