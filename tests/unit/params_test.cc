@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -51,6 +52,26 @@ TEST_F(ResolvePathTest, AMissingFileResolvesIntoTheSuiteFolder) {
   EXPECT_EQ(Params({}, root_ / "suites").ResolvePath("runs/a2c.pt"),
             root_ / "suites" / "runs" / "a2c.pt");
   EXPECT_EQ(Params().ResolvePath("runs/a2c.pt"), fs::path("runs/a2c.pt"));  // no suite folder
+}
+
+TEST_F(ResolvePathTest, ThenTheDataRoot) {
+  // An installed suite names its shipped weights relative to the project's root
+  // (results/models/...): found in the data root (the install's share folder) from anywhere.
+  fs::create_directories(root_ / "data" / "results" / "models");
+  Touch(root_ / "data" / "results" / "models" / "best.pt");
+  const char* old = std::getenv("CROWDSIM_DATA_DIR");
+  const std::string kept = old ? old : "";
+  ::setenv("CROWDSIM_DATA_DIR", (root_ / "data").c_str(), 1);
+  const Params params({}, root_ / "suites");
+  EXPECT_EQ(params.ResolvePath("results/models/best.pt"),
+            root_ / "data" / "results" / "models" / "best.pt");
+  Touch(root_ / "cwd" / "best.pt");  // the working folder still comes first
+  EXPECT_EQ(params.ResolvePath("best.pt"), fs::path("best.pt"));
+  if (old) {
+    ::setenv("CROWDSIM_DATA_DIR", kept.c_str(), 1);
+  } else {
+    ::unsetenv("CROWDSIM_DATA_DIR");
+  }
 }
 
 }  // namespace

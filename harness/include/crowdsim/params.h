@@ -54,8 +54,9 @@ class Params {
 
   /// Folder that relative paths in the values are resolved against (the suite's folder).
   const std::filesystem::path& base_dir() const { return base_dir_; }
-  /// Resolves a path value: absolute as is, else against base_dir, then the working dir; when
-  /// neither holds the file, the base_dir path (what a "does not exist" error should name).
+  /// Resolves a path value: absolute as is, else against base_dir, then the working dir, then
+  /// DataRoot() (an installed suite's shipped weights); when none holds the file, the base_dir
+  /// path (what a "does not exist" error should name).
   std::filesystem::path ResolvePath(const std::string& value) const;
 
   /// Schema defaults only (for tests and tools).
