@@ -56,7 +56,11 @@ PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& regist
                      row.world.loaded->descriptor->name + "') cannot be made: " + e.what());
     }
     return built;
-  } catch (const PluginError& e) {
+  } catch (const RunError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // A plugin error, or a plugin's own exception from outside its factory (Needs()): the
+    // row named, and refused as nothing has run (a throwing Needs() said only its message).
     throw RunError(where + ": " + e.what());
   }
 }

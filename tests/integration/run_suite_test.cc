@@ -420,7 +420,9 @@ TEST_F(RunSuiteTest, DataFilesNoParameterNamesCountWithTheirContent) {
   EXPECT_NE(s.canonical.find("data:worlds/random_rect/obstacles_1_test.yaml#content:"),
             std::string::npos)
       << s.canonical;
-  EXPECT_NE(p.canonical.find("data:plans/mine.yaml#content:"), std::string::npos) << p.canonical;
+  // Found by its parameter in the data root (Params::ResolvePath), it counts as the file the
+  // parameter names, as it would from the suite's or the working folder.
+  EXPECT_NE(p.canonical.find("file=plans/mine.yaml#content:"), std::string::npos) << p.canonical;
   EXPECT_EQ(s.canonical.find(data.path().string()), std::string::npos) << s.canonical;
   Run(s, "out", 1);
   // The manifest lists the file with its content hash, as the config hash counts it.
@@ -688,6 +690,24 @@ rows:
     EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 3) << lines;
     EXPECT_EQ(lines.find("policy_error"), std::string::npos) << lines;
   }
+}
+
+TEST_F(RunSuiteTest, APolicyWhoseNeedsThrowsRefusesItsRowByName) {
+  // It said only the plugin's message, and exited 1 as if something had run.
+  const Suite s = LoadOrDie(R"(name: needs
+episodes: 2
+world: {source: random_rect, obstacles: 1}
+humans: {count: 2, policy: linear}
+rows:
+  - {label: n, policy: throwing_policy, params: {mode: needs_throw}}
+)");
+  try {
+    Run(s, "out", 1);
+    ADD_FAILURE() << "ran";
+  } catch (const RowsRefused& e) {
+    EXPECT_EQ(e.errors(), std::vector<std::string>{"row 'n' (rows[0]): Needs failure (fixture)"});
+  }
+  EXPECT_FALSE(fs::exists(dir_.path() / "out"));
 }
 
 TEST_F(RunSuiteTest, AFolderWithoutItsManifestIsRefusedSayingSo) {

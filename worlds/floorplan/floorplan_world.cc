@@ -35,22 +35,14 @@ ParamSchema Schema() {
   };
 }
 
-std::filesystem::path ResolveWorldPath(const Params& params, const std::string& value) {
-  std::filesystem::path p = params.ResolvePath(value);
-  std::error_code ec;
-  if (std::filesystem::path(value).is_absolute() || std::filesystem::exists(p, ec)) return p;
-  const std::filesystem::path in_data = DataRoot() / value;
-  return std::filesystem::exists(in_data, ec) ? in_data : p;
-}
-
 std::vector<std::filesystem::path> FloorplanWorld::DataFiles(const Params& params) {
-  return {ResolveWorldPath(params, params.GetString("file"))};
+  return {params.ResolvePath(params.GetString("file"))};
 }
 
 FloorplanWorld::FloorplanWorld(const Params& params)
     : split_(params.GetString("split")), passage_padding_(params.GetDouble("passage_padding")) {
   const std::string value = params.GetString("file");
-  const std::filesystem::path path = ResolveWorldPath(params, value);
+  const std::filesystem::path path = params.ResolvePath(value);  // suite, working, data folder
   if (!std::filesystem::exists(path)) {
     throw std::runtime_error("floorplan: world '" + value +
                              "' not found (looked in the suite's folder, the working folder and " +

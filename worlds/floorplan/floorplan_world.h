@@ -38,8 +38,4 @@ class FloorplanWorld final : public WorldSource {
 /// The plugin's parameters: world (path), split (train|test).
 ParamSchema Schema();
 
-/// Where a `world` value points: as given, else against the suite's folder
-/// (Params::ResolvePath), else against the data root (DataRoot()).
-std::filesystem::path ResolveWorldPath(const Params& params, const std::string& value);
-
 }  // namespace crowdsim::floorplan
