@@ -23,7 +23,7 @@ ParamSchema Schema() {
        0.0,
        10.0,
        {},
-       "m; a person ahead closer than this slows the robot down"},
+       "m; a person ahead closer than this slows the robot down (0: never slows)"},
       {"min_speed_factor",
        ParamType::kDouble,
        0.2,
@@ -62,8 +62,10 @@ class YieldingStraight final : public crowdsim::Policy {
         nearest_ahead = std::min(nearest_ahead, std::max(0.0, gap));
       }
     }
-    const double factor =
-        std::max(min_speed_factor_, nearest_ahead / std::max(slow_distance_, 1e-9));
+    // Full speed when nobody is closer than slow_distance (also when it is 0: never slows).
+    const double factor = nearest_ahead >= slow_distance_
+                              ? 1.0
+                              : std::max(min_speed_factor_, nearest_ahead / slow_distance_);
     double speed = factor * obs.self.v_pref;
     if (time_step_ > 0.0) speed = std::min(speed, dist / time_step_);  // stop on the goal
     return Action{to_goal / dist * speed};

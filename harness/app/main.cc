@@ -30,6 +30,8 @@ const std::vector<Command>& Commands() {
       (DIR defaults to runs/<suite name>/; the committed reference outputs under results/ are
       written only with an explicit --out); rerunning resumes finished episodes;
       --shard K/N runs only the K-th of N disjoint slices of the episodes (a cluster job array);
+      --quiet leaves out the progress line and the resume notes on stderr (errors, warnings and
+      the table still print);
       --set changes one key of the suite (humans.count=10, rows[orca].params.safety_space=0.1,
       robot.sensors[lidar2d].beams=90; recorded in manifest.json), as validate, render, train;
       --set isolation=on|off|auto runs episodes in worker processes (auto: when a plugin is

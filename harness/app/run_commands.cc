@@ -203,7 +203,11 @@ int RunCommand(const std::vector<std::string>& args) {
   ExplainInterruption(opt.out_dir.empty() ? DefaultRunDir(*suite) : opt.out_dir);
   try {
     RunSummary s = RunSuite(*suite, registry, opt);
-    PrintTable(*suite, s);
+    if (shard_count > 1) {
+      std::cout << s.table_markdown;  // a shard has no table: what it holds, how to join it
+    } else {
+      PrintTable(*suite, s);
+    }
     for (const std::string& note : s.policy_errors) std::cerr << "note: " << note << "\n";
     if (!s.policy_errors.empty()) {
       std::cerr << "note: every episode's message is in the error column of "

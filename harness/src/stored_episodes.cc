@@ -153,8 +153,9 @@ EpisodeLines StoredEpisodes(const Suite& suite,
       if (!kept.count(row.label)) rerun += (rerun.empty() ? "" : ", ") + row.label;
     }
     std::fprintf(stderr,
-                 "note: the suite changed since '%s' was written: %zu unchanged row(s) resume; "
-                 "new or changed rows run from scratch: %s\n",
+                 "note: the configuration changed since '%s' was written (the suite, a --set, "
+                 "or a file a row reads: weights, a world, a plugin of yours): %zu unchanged "
+                 "row(s) resume; new or changed rows run from scratch: %s\n",
                  out_dir.string().c_str(), kept.size(), rerun.empty() ? "none" : rerun.c_str());
   }
   if (!aside.empty() || !stored_lines.damaged_lines.empty()) {
