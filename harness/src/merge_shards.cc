@@ -227,7 +227,9 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     const std::string held_hash = ReadManifestField(held, "config_hash");
     const long held_episodes = ReadManifestInteger(held, "episodes");
     const bool held_shard = !ReadManifestField(held, "shard").empty();
-    const bool held_merge = ReadManifestBool(held, "merged").value_or(false);
+    // (A merge of a build before the marker: its manifest lists the shards' commits.)
+    const bool held_merge = ReadManifestBool(held, "merged").value_or(false) ||
+                            !ReadManifestStrings(held, "shard_commits").empty();
     if (held_hash != hash || held_shard || !held_merge ||
         (held_episodes >= 0 && held_episodes != episodes)) {
       throw RunRefused("'" + out_dir.string() + "' holds " +

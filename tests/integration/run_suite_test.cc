@@ -590,6 +590,13 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   EXPECT_NE(merge_into(o.out_dir).find("holds a shard"), std::string::npos);
   EXPECT_EQ(merge_into(dir_.path() / "merged"), "merged");  // again: the same merge
   EXPECT_EQ(ReadManifestBool(dir_.path() / "merged" / "manifest.json", "merged"), true);
+  {  // A merge written before the marker (its manifest lists the shards' commits): merged again.
+    auto manifest = nlohmann::json::parse(ReadText(dir_.path() / "merged" / "manifest.json"));
+    manifest.erase("merged");
+    ASSERT_TRUE(manifest.contains("shard_commits"));
+    std::ofstream(dir_.path() / "merged" / "manifest.json") << manifest.dump(2);
+    EXPECT_EQ(merge_into(dir_.path() / "merged"), "merged");
+  }
   // A merge cut short (only its first manifest written) is merged again, not refused.
   std::ofstream(dir_.path() / "merged" / "manifest.json")
       << "{\"config_hash\": \"" << s.ConfigHash() << "\", \"merged\": true}\n";
