@@ -14,9 +14,9 @@ class DecisionClock {
   /// A tick count; only differences of two readings mean something.
   static std::uint64_t Now();
   /// `ticks` (a difference of Now() readings) in microseconds. With the time-stamp counter,
-  /// its rate is measured against steady_clock over the time since the process first read
-  /// this clock (frozen once that span passes a second), so early conversions cost one
-  /// steady_clock read and carry the few nanoseconds of that read's jitter.
+  /// its rate is measured against steady_clock from the moment the core library was loaded
+  /// (each end read between two steady_clock reads, the tightest of five), and kept once
+  /// measured over a second; until then a conversion costs a few clock reads.
   static double Microseconds(std::uint64_t ticks);
 };
 

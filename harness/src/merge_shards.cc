@@ -234,6 +234,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
         (held_episodes >= 0 && held_episodes != episodes)) {
       throw RunRefused("'" + out_dir.string() + "' holds " +
                        (held_shard          ? std::string("a shard")
+                        : held_hash.empty() ? "results without a readable manifest.json"
                         : held_hash != hash ? "a run of another configuration"
                         : !held_merge       ? "a run of this configuration (not a merge)"
                                             : "a merge of another episode count") +
@@ -251,9 +252,11 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   if (!lock) throw RunRefused(refused);
   std::string text = EpisodeCsvHeader() + "\n";
   for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
-  WriteFileAtomically(out_dir / "episodes.csv", text);
+  // The manifest first: a merge cut short between the two writes is then still one (its
+  // episodes.csv alone read as a run of another configuration, which no merge replaced).
   WriteFileAtomically(out_dir / "manifest.json",
                       FormatJson(nlohmann::ordered_json{{"config_hash", hash}, {"merged", true}}));
+  WriteFileAtomically(out_dir / "episodes.csv", text);
   RunOptions options;
   options.out_dir = out_dir;
   options.episodes = static_cast<int>(episodes);

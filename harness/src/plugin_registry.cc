@@ -123,6 +123,7 @@ bool PluginRegistry::IsHarnessPlugin(const LoadedPlugin& p) {
   // One this build ships, by its name (a plugin of yours copied into the harness's folder was
   // taken for the harness's: a rebuild of it resumed the old build's episodes, unisolated).
   if (p.descriptor == nullptr || !IsShippedPluginName(p.descriptor->name)) return false;
+  if (p.path.filename() != kPrefix + std::string(p.descriptor->name) + kSuffix) return false;
   std::error_code ec;
   static const fs::path own = fs::weakly_canonical(HarnessPluginDir(), ec);
   return (p.folder.empty() ? fs::weakly_canonical(p.path, ec).parent_path() : p.folder) == own;

@@ -52,6 +52,11 @@ bool AllHarnessPlugins(const RowSpec& row) {
   });
 }
 
+bool RowNeedsIsolation(const Suite& suite, const RowSpec& row, IsolationMode mode) {
+  if (mode != IsolationMode::kAuto) return mode == IsolationMode::kOn;
+  return suite.episode_timeout_s > 0 || !AllHarnessPlugins(row);
+}
+
 ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const WorldSource& world,
                                    int episode) {
   ScenarioRequest req;
@@ -73,13 +78,6 @@ Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const World
 }
 
 namespace {
-
-/// Whether a replay of `row` runs first in a worker process: where `run` would isolate it (a
-/// plugin that is not the harness's own, a timeout, isolation: on).
-bool ReplayIsolated(const Suite& suite, const RowSpec& row) {
-  if (suite.isolation != IsolationMode::kAuto) return suite.isolation == IsolationMode::kOn;
-  return suite.episode_timeout_s > 0 || !AllHarnessPlugins(row);
-}
 
 /// Plays the episode once in a worker process (with the suite's episode_timeout_s): a plugin
 /// that crashes or hangs there ends the worker, and this throws saying so, where it took the
@@ -105,6 +103,13 @@ void ProbeInWorker(const Suite& suite, size_t row_index, int episode, PluginRegi
   };
   RunInWorkerProcesses(1, options, callbacks);
   if (!lost) return;
+  if (lost->Interrupted()) {
+    throw std::runtime_error("the replay of episode " + std::to_string(episode) + " of row '" +
+                             suite.rows[row_index].label +
+                             "' was stopped from outside (its "
+                             "worker process " +
+                             lost->Describe() + ")");
+  }
   const std::string status =
       lost->kind == WorkerLoss::Kind::kTimeout ? "policy_timeout" : "policy_crash";
   throw std::runtime_error("episode " + std::to_string(episode) + " of row '" +
@@ -124,7 +129,9 @@ Replay ReplayEpisode(const Suite& suite, size_t row_index, int episode, PluginRe
                             " rows");
   }
   const RowSpec& row = suite.rows[row_index];
-  if (probe && ReplayIsolated(suite, row)) ProbeInWorker(suite, row_index, episode, registry);
+  if (probe && RowNeedsIsolation(suite, row, suite.isolation)) {
+    ProbeInWorker(suite, row_index, episode, registry);
+  }
   auto world = registry.MakeWorld(*row.world.loaded, row.world.params);
   RowInstance instance(row, registry);
   Replay replay;

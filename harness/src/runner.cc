@@ -67,15 +67,14 @@ PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& regist
 
 /// The first step of episode 0, played as a run plays it: what fails on every step (a lidar
 /// whose beams do not fit a learned policy, a sensor that throws) fails before the run, not as
-/// a table of policy errors. Only in a row of the harness's own plugins without a timeout or
-/// isolation: the others run isolated, and their crash or hang would end this process. Throws
+/// a table of policy errors. Only in a row of the harness's own plugins that needs no
+/// isolation under `mode` (RowNeedsIsolation): the others run isolated, and their crash or hang
+/// would end this process; and a plugin of yours may fail at its first step on purpose. Throws
 /// RunError naming the row.
-void CheckFirstStep(const Suite& suite, size_t r, PreflightedRow& built) {
+void CheckFirstStep(const Suite& suite, size_t r, PreflightedRow& built, IsolationMode mode) {
   const RowSpec& row = suite.rows[r];
   const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
-  if (!AllHarnessPlugins(row) || suite.episode_timeout_s > 0 ||
-      suite.isolation == IsolationMode::kOn)
-    return;
+  if (!AllHarnessPlugins(row) || RowNeedsIsolation(suite, row, mode)) return;
   try {
     const Scenario& scenario = built.episode0;
     Episode episode(scenario, suite.sim, built.instance->Agents(scenario.humans.size()));
@@ -97,7 +96,7 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     try {
       PreflightedRow built = PreflightRow(suite, r, registry);
-      CheckFirstStep(suite, r, built);
+      CheckFirstStep(suite, r, built, suite.isolation);
     } catch (const RunError& e) {
       errors.push_back(e.what());
     } catch (const std::exception& e) {
@@ -161,7 +160,8 @@ fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
 /// Builds every row's objects once, so a bad parameter stops the run before any episode with
 /// the plugin's own message; returns the rows' worlds and records their identities.
 std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
-                                                        PluginRegistry& registry, RunFacts* facts) {
+                                                        PluginRegistry& registry, RunFacts* facts,
+                                                        IsolationMode mode) {
   // Every row is checked before any episode, and every row at fault is named (a suite of
   // three rows with missing weights said only the first); nothing is run then.
   std::vector<std::shared_ptr<WorldSource>> worlds;
@@ -169,7 +169,7 @@ std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     try {
       PreflightedRow built = PreflightRow(suite, r, registry);
-      CheckFirstStep(suite, r, built);
+      CheckFirstStep(suite, r, built, mode);
       worlds.push_back(built.world);
       facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
     } catch (const RunError& e) {
@@ -441,9 +441,8 @@ bool Isolated(const Suite& suite, const RunOptions& options) {
                    " but the run's isolation is off; a timeout needs isolated episodes: drop the "
                    "isolation override or the timeout");
   }
-  if (mode != IsolationMode::kAuto) return mode == IsolationMode::kOn;
-  if (suite.episode_timeout_s > 0) return true;
-  return !std::all_of(suite.rows.begin(), suite.rows.end(), AllHarnessPlugins);
+  return std::any_of(suite.rows.begin(), suite.rows.end(),
+                     [&](const RowSpec& row) { return RowNeedsIsolation(suite, row, mode); });
 }
 
 /// A shard's files: its episodes in (row, episode) order and a manifest naming the shard; the
@@ -507,7 +506,9 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
     facts.shard = std::to_string(scope.shard_index) + "/" + std::to_string(scope.shards);
 
   RunSummary summary;
-  const auto worlds = PreflightRows(suite, registry, &facts);  // before the folder is made
+  // Before the folder is made.
+  const auto worlds =
+      PreflightRows(suite, registry, &facts, options.isolation.value_or(suite.isolation));
   summary.out_dir = PrepareOutDir(suite, options);
   std::string refused;
   const auto lock = options.out_dir_claimed

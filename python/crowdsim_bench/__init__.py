@@ -304,8 +304,9 @@ def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
     KeyboardInterrupt / SystemExit from the policy) stops the evaluation: the finished episodes
     stay in `out`, and the exception is raised again here. `episodes`: None for the suite's
     count. `fresh=True` plays every episode again, replacing the results of an earlier
-    evaluation of this row and label in `out`; a folder holding anything else (a CLI run,
-    another row or label) is refused. `fresh=False` resumes stored episodes: only safe when the
+    evaluation in `out` of the same row, label and suite settings; a folder holding anything
+    else (a CLI run, another row or label, the suite or set= since changed) is refused: remove
+    it or give another `out`. `fresh=False` resumes stored episodes: only safe when the
     policy has not changed since."""
     return _core.evaluate(policy, str(suite), row, label, out, _episode_count(episodes), fresh,
                           _settings(set), progress)

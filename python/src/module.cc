@@ -191,7 +191,7 @@ py::tuple TimeFixedVelocitySteps(const std::string& suite_path, const py::object
 // A run's message in the package's words: the CLI's options are keyword arguments here.
 std::string InPythonTerms(std::string message) {
   for (const auto& [cli, python] : {std::pair<std::string, std::string>{"--fresh", "fresh=True"},
-                                    {"--out ", "out= "},
+                                    {"--out ", "out="},
                                     {"--episodes ", "episodes="}}) {
     for (auto at = message.find(cli); at != std::string::npos; at = message.find(cli, at)) {
       message.replace(at, cli.size(), python);
@@ -238,8 +238,8 @@ void RefuseOtherResults(const Suite& suite, const std::filesystem::path& out) {
       (held.empty() ? std::string("no readable manifest.json")
                     : "suite '" + held_suite + "', config hash " + held) +
       "; this evaluation's is " + suite.ConfigHash() +
-      "): evaluate() replaces only its own earlier results. Pass another out=, or remove the "
-      "folder first");
+      "): evaluate() replaces only its own earlier results of the same row, label and suite "
+      "settings. Pass another out=, or remove the folder first");
 }
 
 // A policy that raises ends its episode, not the run: say so once, with where the messages are.

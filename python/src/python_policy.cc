@@ -97,6 +97,7 @@ Vec2 VelocityOf(const py::handle& v, const char* what) {
 
 bool PythonStop::Requested() {
   if (stop_) return true;
+  if (std::this_thread::get_id() != owner_) return false;
   py::gil_scoped_acquire gil;
   if (PyErr_CheckSignals() == 0) return false;  // only the main thread runs the handlers
   Keep(py::error_already_set());

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "crowdsim/bench/plugin_registry.h"
@@ -22,6 +23,10 @@ namespace crowdsim::python {
 /// the run has stopped, with its traceback.
 class PythonStop {
  public:
+  /// Made by the thread that starts the run (with the GIL): the only one that checks for
+  /// Ctrl-C (Python runs signal handlers in the main thread alone; other workers taking the
+  /// GIL between episodes only queued for it).
+  PythonStop() : owner_(std::this_thread::get_id()) {}
   /// RunOptions::stop_requested (any thread, GIL not held).
   bool Requested();
   /// Keeps `error` as the reason (the first one kept wins); GIL held.
@@ -30,6 +35,7 @@ class PythonStop {
   void RaiseIfKept();
 
  private:
+  std::thread::id owner_;
   std::atomic<bool> stop_{false};
   std::mutex mutex_;
   std::optional<pybind11::error_already_set> error_;

@@ -25,7 +25,8 @@ void CheckResultsFolder(const fs::path& dir) {
                         "merge SHARD_DIR... --out DIR` and report DIR");
     }
     throw ReportError("'" + dir.string() +
-                      "' holds a run that has not finished (no table.csv yet): rerun the same "
+                      "' holds a run that has not finished (no table.csv, or a manifest without "
+                      "finished_utc): rerun the same "
                       "`crowdsim-bench run` command to finish it (it resumes), then report");
   }
   for (const char* f : {"manifest.json", "table.csv", "episodes.csv"}) {

@@ -139,7 +139,8 @@ TEST(ReportErrors, AShardOrAnUnfinishedRunSaysWhatToDo) {
   };
   std::ofstream(tmp.path() / "episodes.csv") << "row,episode\n";
   std::ofstream(tmp.path() / "manifest.json") << R"({"suite": "quick"})";
-  EXPECT_NE(error().find("holds a run that has not finished (no table.csv yet): rerun the same"),
+  EXPECT_NE(error().find("holds a run that has not finished (no table.csv, or a manifest without "
+                         "finished_utc): rerun the same"),
             std::string::npos)
       << error();
   std::ofstream(tmp.path() / "manifest.json") << R"({"suite": "quick", "shard": "2/3"})";

@@ -50,9 +50,13 @@ Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const World
 /// Every plugin a row's episodes call, with its role there ("policy", "humans' policy",
 /// "world", "sensor").
 std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row);
-/// Whether every plugin of the row is the harness's own (PluginRegistry::IsHarnessPlugin): a
-/// row `run` need not isolate.
+/// Whether every plugin of the row is the harness's own (PluginRegistry::IsHarnessPlugin).
 bool AllHarnessPlugins(const RowSpec& row);
+/// Whether the row's episodes must run in worker processes under isolation `mode` (the suite's,
+/// or a run's override): on; or auto with an episode_timeout_s or a plugin that is not the
+/// harness's own. What is not, the harness may step in its own process (validate's first step,
+/// a replay for render).
+bool RowNeedsIsolation(const Suite& suite, const RowSpec& row, IsolationMode mode);
 
 /// Re-simulates one episode of a suite exactly as `crowdsim-bench run` does, optionally
 /// recording the trajectory. Throws PluginError or std::out_of_range for a bad row index. A row
