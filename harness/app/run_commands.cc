@@ -67,11 +67,12 @@ extern "C" void OnRunInterrupted(int sig) {
   std::raise(sig);
 }
 
-void ExplainInterruption(const std::filesystem::path& out_dir) {
+/// `kept`: where the finished episodes are (OUT/episodes.csv; under MPI each rank's folder).
+void ExplainInterruption(const std::string& kept) {
   std::snprintf(g_interrupt_message, sizeof(g_interrupt_message),
-                "\ninterrupted: the finished episodes are kept in %s/episodes.csv; run the "
-                "command again without --fresh to resume\n",
-                out_dir.string().c_str());
+                "\ninterrupted: the finished episodes are kept in %s; run the command again "
+                "without --fresh to resume\n",
+                kept.c_str());
   std::signal(SIGINT, OnRunInterrupted);
   std::signal(SIGTERM, OnRunInterrupted);
   std::signal(SIGHUP, OnRunInterrupted);  // a closed terminal or ssh session
@@ -118,7 +119,10 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
   opt.shard_index = group.rank() + 1;
   opt.shard_count = group.size();
   opt.progress = opt.progress && group.rank() == 0;
-  if (group.rank() == 0) ExplainInterruption(out);
+  if (group.rank() == 0) {
+    ExplainInterruption(
+        (out / "ranks" / ("*of" + std::to_string(group.size())) / "episodes.csv").string());
+  }
   bool ok = true, refused = false;
   // One write per message: the ranks share stderr, and std::cerr writes each << at once, so
   // pieces of two ranks' lines interleaved.
@@ -200,7 +204,8 @@ int RunCommand(const std::vector<std::string>& args) {
       throw UsageError("--shard and an MPI launch both split the suite: give one of them");
     return RunOverRanks(*suite, registry, opt, group);
   }
-  ExplainInterruption(opt.out_dir.empty() ? DefaultRunDir(*suite) : opt.out_dir);
+  ExplainInterruption(
+      ((opt.out_dir.empty() ? DefaultRunDir(*suite) : opt.out_dir) / "episodes.csv").string());
   try {
     RunSummary s = RunSuite(*suite, registry, opt);
     if (shard_count > 1) {

@@ -171,10 +171,16 @@ void Trainer::Build() {
   try {
     world_ = registry_.MakeWorld(*row.world.loaded, row.world.params);
     row_ = std::make_unique<RowInstance>(row, registry_);
-    teacher_ = registry_.MakePolicy(*spec_.teacher.loaded, spec_.teacher.params);
     agents_ = row_->Agents(static_cast<size_t>(row.humans.count_max));
   } catch (const PluginError& e) {
     throw TrainRefused(e.what());
+  }
+  try {
+    teacher_ = registry_.MakePolicy(*spec_.teacher.loaded, spec_.teacher.params);
+  } catch (const PluginError& e) {
+    // Said as the teacher's: the learner's own missing weights read the same.
+    throw TrainRefused("the imitation teacher (training.il_policy '" + spec_.teacher.plugin +
+                       "' with training.il_params): " + e.what());
   }
   learner_policy_ = &row_->robot();
   learner_ = dynamic_cast<Trainable*>(learner_policy_);
@@ -408,8 +414,12 @@ ValidationResult Trainer::Validate(int rl_episode) {
   summary_.times.validation += Since(t0);
   std::ostringstream os;
   os << "validation after " << rl_episode << " RL episodes: success " << v.success << ", collision "
-     << v.collision << ", timeout " << v.timeout << ", nav time " << v.nav_time << ", probe value "
-     << v.probe_value;
+     << v.collision << ", timeout " << v.timeout << ", nav time " << v.nav_time << ", probe value ";
+  if (std::isfinite(v.probe_value)) {
+    os << v.probe_value;
+  } else {
+    os << "none (no probe state: nothing stored from imitation)";
+  }
   if (v.success > state_.best_success) {
     state_.best_success = v.success;
     state_.best_episode = rl_episode;
@@ -528,7 +538,8 @@ void Trainer::AcceptNewRlLength(const fs::path& dir) {
                        ", the training file with its --set and --seed options now " +
                        spec_.ConfigHash() + (differs.empty() ? "" : "; what differs: " + differs) +
                        "); resume with the file and --set options it was started with, or train "
-                       "into another --out (only training.rl_episodes may change between runs)");
+                       "into another --out (between runs only training.rl_episodes may change, and "
+                       "training.checkpoint_interval, which changes no result)");
   }
   if (state_.phase == TrainPhase::kReinforcement && t_.rl_episodes < state_.counter) {
     throw TrainRefused("--resume: training.rl_episodes is now " + std::to_string(t_.rl_episodes) +
@@ -625,10 +636,11 @@ void Trainer::WriteSummaryJson() const {
   j["memory_size"] = memory_.size();
   j["episodes_this_run"] = summary_.episodes_run;
   j["wall_seconds_this_run"] = summary_.wall_seconds;
-  j["seconds"] = {{"demonstrations", t.demonstrations}, {"imitation", t.imitation},
-                  {"rl_episodes", t.rl_episodes},       {"rl_targets", t.rl_targets},
-                  {"rl_updates", t.rl_updates},         {"validation", t.validation},
-                  {"checkpoints", t.checkpoints}};
+  // This run's (a resumed training's earlier runs are not in it), as the keys beside it.
+  j["seconds_this_run"] = {{"demonstrations", t.demonstrations}, {"imitation", t.imitation},
+                           {"rl_episodes", t.rl_episodes},       {"rl_targets", t.rl_targets},
+                           {"rl_updates", t.rl_updates},         {"validation", t.validation},
+                           {"checkpoints", t.checkpoints}};
   j["best_validation_success"] = std::max(0.0, state_.best_success);
   j["best_validation_episode"] = state_.best_episode;
   j["best_weights"] =

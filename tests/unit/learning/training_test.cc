@@ -309,5 +309,26 @@ TEST(TrainingTest, PolicyWithoutItsSensorIsRefused) {
   }
 }
 
+// A teacher whose weights are missing is named as the teacher: the learner's own missing
+// weights gave the same message, and the user could not tell which one failed.
+TEST(TrainingTest, AMissingTeacherIsNamedAsTheTeacher) {
+  TempDir dir;
+  TrainFile f;
+  f.training = std::string(kTiny).substr(0, std::string(kTiny).size() - 1) +
+               ", il_policy: cadrl, il_params: {sensors: person, weights: nope/missing.pt}}";
+  const auto file = WriteTrainFile(dir, f);
+  try {
+    Train(file, dir.path() / "out");
+    ADD_FAILURE() << "trained without its teacher";
+  } catch (const training::TrainRefused& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("the imitation teacher (training.il_policy 'cadrl' with "
+                                          "training.il_params): ",
+                                          0),
+              0u)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("missing.pt"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace crowdsim::testing
