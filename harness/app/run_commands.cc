@@ -270,7 +270,7 @@ int ValidateCommand(const std::vector<std::string>& args) {
         continue;
       }
       for (const auto& w : training::TrainSpecWarnings(*loaded.spec)) {
-        std::cerr << "warning: " << file << ": " << w << "\n";
+        std::cerr << "warning: " << SpecSource(file, a.All("--set")) << ": " << w << "\n";
       }
       std::cout << file << ": ok (training file: " << loaded.spec->row.policy.plugin << ")\n";
       continue;

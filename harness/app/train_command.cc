@@ -76,7 +76,7 @@ int Train(const TrainJob& job) {
     return 0;
   }
   for (const auto& w : training::TrainSpecWarnings(*loaded.spec)) {
-    std::cerr << "warning: " << job.file << ": " << w << "\n";
+    std::cerr << "warning: " << SpecSource(job.file, job.sets) << ": " << w << "\n";
   }
   options.resume = job.resume || (job.campaign && training::HasCheckpoint(options.out_dir));
   options.progress = !job.quiet;

@@ -57,6 +57,13 @@ std::optional<std::string> Args::Get(const std::string& name) const {
   return it->second;
 }
 
+std::string SpecSource(const std::string& file, const std::vector<std::string>& sets) {
+  std::string source = file;
+  for (std::size_t k = 0; k < sets.size(); ++k)
+    source += (k ? " --set " : " with --set ") + sets[k];
+  return source;
+}
+
 std::vector<std::string> Args::All(const std::string& name) const {
   auto it = repeated.find(name);
   return it == repeated.end() ? std::vector<std::string>{} : it->second;

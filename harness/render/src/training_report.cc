@@ -55,12 +55,36 @@ std::vector<Block> RlBlocks(const std::string& csv, int block_size) {
 }
 
 // The document head, the training's name and folder, and its learning curve.
+// A training that stopped before its end says so at the top (its summary.json's "finished":
+// false was the only sign, deep in the JSON at the bottom).
+std::string UnfinishedNote(const fs::path& dir) {
+  const fs::path summary = dir / "summary.json";
+  if (ReadManifestBool(summary, "finished").value_or(true)) return "";
+  // summary.json's phase and counter (training_checkpoint.h: 0 demonstrations, 1 imitation
+  // epochs, 2 RL episodes).
+  const long phase = ReadManifestInteger(summary, "phase");
+  const long done = ReadManifestInteger(summary, "counter");
+  const char* const kPhases[] = {"demonstrations", "imitation epochs", "RL episodes"};
+  std::string text = "Unfinished: the training stopped";
+  if (phase >= 0 && phase < 3 && done >= 0) {
+    text += " after " + std::to_string(done) + " " + kPhases[phase];
+    if (phase == 2) {
+      text += " of its " + std::to_string(ReadManifestInteger(summary, "/procedure/rl_episodes"));
+    }
+  }
+  return text + "; continue it with the same `crowdsim-bench train` command and --resume.";
+}
+
 void WriteHeader(std::ostream& html, const fs::path& dir, const std::string& name,
                  const std::string& episodes, const std::string& validation) {
   html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << XmlEscape(name)
        << " · crowdsim-bench training report</title>\n<style>" << ReportCss()
        << "</style></head><body>\n<h1>Training " << XmlEscape(name) << "</h1>\n<p class=\"meta\">"
-       << XmlEscape(dir.string()) << "</p>\n<h2>Learning curve</h2>\n<div class=\"figure\">"
+       << XmlEscape(dir.string()) << "</p>\n";
+  if (const std::string note = UnfinishedNote(dir); !note.empty()) {
+    html << "<p class=\"warn\">" << XmlEscape(note) << "</p>\n";
+  }
+  html << "<h2>Learning curve</h2>\n<div class=\"figure\">"
        << ToSvg(LearningCurveDrawing(episodes, validation, name), SvgOptions{.standalone = false})
        << "</div>\n";
 }

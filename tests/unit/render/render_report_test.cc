@@ -190,6 +190,23 @@ TEST(TrainingReport, ACommittedModelFolderReadsItsCompressedEpisodeLog) {
   EXPECT_EQ(html.find("no RL episode logged yet"), std::string::npos);
 }
 
+TEST(TrainingReport, AnUnfinishedTrainingSaysSoAtTheTop) {
+  // Its summary.json's "finished": false was the only sign, in the JSON at the bottom.
+  TempDir tmp;
+  std::ofstream(tmp.path() / "training_log.csv") << "rl_episode,success\n";
+  std::ofstream(tmp.path() / "summary.json")
+      << R"({"name": "t", "procedure": {"rl_episodes": 300}, "finished": false, "phase": 2,)"
+      << R"( "counter": 120})";
+  const std::string html = BuildTrainingReport(tmp.path());
+  EXPECT_NE(html.find("Unfinished: the training stopped after 120 RL episodes of its 300; "
+                      "continue it with the same `crowdsim-bench train` command and --resume."),
+            std::string::npos)
+      << html.substr(0, 2000);
+  std::ofstream(tmp.path() / "summary.json")
+      << R"({"name": "t", "procedure": {"rl_episodes": 300}, "finished": true})";
+  EXPECT_EQ(BuildTrainingReport(tmp.path()).find("Unfinished"), std::string::npos);
+}
+
 // Opens the report offline in headless Chromium and takes a screenshot.
 TEST_F(ReportTest, OpensInHeadlessChromium) {
   const fs::path chromium = "/usr/bin/chromium";

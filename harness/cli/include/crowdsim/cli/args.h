@@ -46,6 +46,10 @@ struct Args {
   double GetNumber(const std::string& name, double fallback) const;
 };
 
+/// Where a warning about a spec file comes from: "FILE", or "FILE with --set A --set B" when
+/// the values it names may be the options' (a warning blamed the file for a --set value).
+std::string SpecSource(const std::string& file, const std::vector<std::string>& sets);
+
 /// Creates the folder an output file goes in (as `run --out` creates its folder); throws
 /// UsageError naming the option, the folder and the reason when it cannot.
 void CreateFolderOf(const std::string& option, const std::string& file);
