@@ -27,6 +27,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// How preflight errors name row `r`: "row 'orca' (rows[1])".
+std::string RowPlace(const Suite& suite, size_t r) {
+  return "row '" + suite.rows[r].label + "' (rows[" + std::to_string(r) + "])";
+}
+
 /// A row as its preflight built it: the world, the plugins and episode 0's scenario.
 struct PreflightedRow {
   std::shared_ptr<WorldSource> world;
@@ -39,7 +44,7 @@ struct PreflightedRow {
 /// the row's humans fails here, in `validate` too). Throws RunError naming the row.
 PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& registry) {
   const RowSpec& row = suite.rows[r];
-  const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
+  const std::string where = RowPlace(suite, r);
   try {
     PreflightedRow built;
     built.world = registry.MakeWorld(*row.world.loaded, row.world.params);
@@ -73,7 +78,7 @@ PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& regist
 /// RunError naming the row.
 void CheckFirstStep(const Suite& suite, size_t r, PreflightedRow& built, IsolationMode mode) {
   const RowSpec& row = suite.rows[r];
-  const std::string where = "row '" + row.label + "' (rows[" + std::to_string(r) + "])";
+  const std::string where = RowPlace(suite, r);
   if (!AllHarnessPlugins(row) || RowNeedsIsolation(suite, row, mode)) return;
   try {
     const Scenario& scenario = built.episode0;
@@ -100,8 +105,7 @@ std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& regi
     } catch (const RunError& e) {
       errors.push_back(e.what());
     } catch (const std::exception& e) {
-      errors.push_back("row '" + suite.rows[r].label + "' (rows[" + std::to_string(r) +
-                       "]): episode 0 cannot start: " + e.what());
+      errors.push_back(RowPlace(suite, r) + ": episode 0 cannot start: " + e.what());
     }
   }
   return errors;

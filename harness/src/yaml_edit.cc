@@ -234,7 +234,6 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
     e.line = 0;
     e.column = 0;
   };
-  const auto related = PathContains;  // (a, b): b is a or lies under it
   std::vector<bool> placed(errors->size(), false);
   // First, by the path each override set (list items by index; a row a sweep expanded under
   // each of its new indices): errors about that value or under it, and, with no place in the
@@ -256,7 +255,7 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
       SuiteError& e = (*errors)[k];
       if (e.line > 1 || e.key_path.empty()) continue;
       for (const std::string& path : paths) {
-        if (related(path, e.key_path) || (e.line == 0 && related(e.key_path, path))) {
+        if (PathContains(path, e.key_path) || (e.line == 0 && PathContains(e.key_path, path))) {
           place(e, overrides[i]);
           placed[k] = true;
           break;
@@ -277,7 +276,7 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
     for (std::size_t k = 0; k < errors->size(); ++k) {
       SuiteError& e = (*errors)[k];
       if (placed[k] || e.line > 1) continue;
-      const bool under = (!exact.empty() && related(exact, e.key_path)) ||
+      const bool under = (!exact.empty() && PathContains(exact, e.key_path)) ||
                          (segments->back().selectors.empty() &&
                           (e.key_path == tail || e.key_path.ends_with("." + tail)));
       if (under) place(e, text);
