@@ -150,18 +150,20 @@ void AgentIndex::NearestOfFew(const Vec2& p, double range_sq, int max_count, int
     for (; j > 0 && d2 < slots[j - 1].d2; --j) slots[j] = slots[j - 1];
     slots[j] = {d2, i};
   }
-  for (int j = 0; j < n; ++j) out->push_back(slots[j].i);
+  out->resize(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) (*out)[static_cast<size_t>(j)] = slots[j].i;
 }
 
 void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude,
                          std::vector<int>* out) const {
-  out->clear();
-  if (agents_.empty() || max_count <= 0) return;
   const double range_sq = range * range;
-  if (position_.size() <= kScanAllUpTo) {
+  if (position_.size() <= kScanAllUpTo && max_count > 0) {
+    // Sized, not cleared first: a policy's vector mostly keeps its size from query to query.
     NearestOfFew(p, range_sq, max_count, exclude, out);
     return;
   }
+  out->clear();
+  if (agents_.empty() || max_count <= 0) return;
   // The querying agent's radius from its last query, when there is one: a disc that held its
   // k nearest a step ago most likely holds them now.
   const bool hinted =

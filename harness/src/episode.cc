@@ -91,11 +91,9 @@ std::string PolicyName(int human) {
                    : "human " + std::to_string(human) + "'s policy";
 }
 
-void CheckSpeed(const Vec2& velocity, double v_pref, int human) {
-  // Nearly every action is well below the limit: squares decide those without a square root
-  // (the margin covers the rounding of both squares); the exact test is kept for the rest.
+[[gnu::noinline, gnu::cold]] void CheckSpeedExactly(const Vec2& velocity, double v_pref,
+                                                    int human) {
   const double limit = kMaxSpeedFactor * v_pref;
-  if (velocity.squaredNorm() < 0.98 * limit * limit) return;
   const double speed = velocity.norm();
   if (speed > limit) {
     char buf[160];
@@ -107,28 +105,39 @@ void CheckSpeed(const Vec2& velocity, double v_pref, int human) {
   }
 }
 
+inline void CheckSpeed(const Vec2& velocity, double v_pref, int human) {
+  // Nearly every action is well below the limit: squares decide those without a square root
+  // (the margin covers the rounding of both squares); the exact test is kept for the rest.
+  const double limit = kMaxSpeedFactor * v_pref;
+  if (velocity.squaredNorm() < 0.98 * limit * limit) return;
+  CheckSpeedExactly(velocity, v_pref, human);
+}
+
 }  // namespace
 
 void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
-  const std::string where =
-      "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) + ": ";
+  // Spelled out only for an error (a string built per episode was a heap allocation).
+  const auto where = [&scenario] {
+    return "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) + ": ";
+  };
   auto text = [](const Vec2& p) {
     char buf[64];
     std::snprintf(buf, sizeof(buf), "(%.3f, %.3f)", p.x(), p.y());
     return std::string(buf);
   };
   if (!scenario.robot_start.allFinite() || !scenario.robot_goal.allFinite()) {
-    throw std::invalid_argument(where + "the robot's start or goal is not a finite point");
+    throw std::invalid_argument(where() + "the robot's start or goal is not a finite point");
   }
   if ((scenario.robot_goal - scenario.robot_start).norm() <= sim.goal_radius) {
     throw std::invalid_argument(
-        where + "the robot starts at its goal " + text(scenario.robot_goal) +
+        where() + "the robot starts at its goal " + text(scenario.robot_goal) +
         " (within goal_radius): the episode would be a success without a move");
   }
   if (!scenario.map) return;
   const StaticMap& map = *scenario.map;
   // A disc that starts in an obstacle collides at its first step, whatever its policy does.
-  auto overlap = [&](const Vec2& p, double radius, const std::string& who) {
+  // `human`: its index, or -1 for the robot (named only for an error).
+  auto overlap = [&](const Vec2& p, double radius, int human) {
     for (std::size_t k = 0; k < map.rectangles.size(); ++k) {
       const Rect& r = map.rectangles[k];
       const Vec2 gap(std::max({r.min.x() - p.x(), 0.0, p.x() - r.max.x()}),
@@ -138,7 +147,9 @@ void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
         char buf[96];
         std::snprintf(buf, sizeof(buf), " is %.3f m from obstacle %zu, less than its radius %.3f m",
                       distance, k, radius);
-        throw std::invalid_argument(where + who + " " + text(p) + buf +
+        const std::string who = human < 0 ? std::string("the robot's start")
+                                          : "human " + std::to_string(human) + "'s start";
+        throw std::invalid_argument(where() + who + " " + text(p) + buf +
                                     ": the world must start agents in free space");
       }
     }
@@ -146,21 +157,20 @@ void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
   for (const auto& [name, p] :
        {std::pair{"start", scenario.robot_start}, std::pair{"goal", scenario.robot_goal}}) {
     if (map.bounds.Area() > 0.0 && !map.bounds.Contains(p)) {
-      throw std::invalid_argument(where + "the robot's " + name + " " + text(p) +
+      throw std::invalid_argument(where() + "the robot's " + name + " " + text(p) +
                                   " lies outside the map");
     }
     for (std::size_t k = 0; k < map.rectangles.size(); ++k) {
       const Rect& r = map.rectangles[k];
       if (p.x() > r.min.x() && p.x() < r.max.x() && p.y() > r.min.y() && p.y() < r.max.y()) {
-        throw std::invalid_argument(where + "the robot's " + name + " " + text(p) +
+        throw std::invalid_argument(where() + "the robot's " + name + " " + text(p) +
                                     " lies inside obstacle " + std::to_string(k));
       }
     }
   }
-  overlap(scenario.robot_start, sim.robot_radius, "the robot's start");
+  overlap(scenario.robot_start, sim.robot_radius, -1);
   for (std::size_t i = 0; i < scenario.humans.size(); ++i) {
-    overlap(scenario.humans[i].start, scenario.humans[i].radius,
-            "human " + std::to_string(i) + "'s start");
+    overlap(scenario.humans[i].start, scenario.humans[i].radius, static_cast<int>(i));
   }
 }
 
@@ -269,7 +279,7 @@ void Episode::DecideHuman(int i) {
   // Next goal of a goal sequence once this one is reached.
   AgentState& h = humans_[i];
   const auto& goals = scenario_.humans[i].goals;
-  if ((h.position - h.goal).norm() < h.radius) {
+  if (NormBelow(h.position - h.goal, h.radius)) {
     human_reached_[i] = true;
     if (human_goal_index_[i] + 1 < goals.size()) h.goal = goals[++human_goal_index_[i]];
   }
@@ -407,7 +417,7 @@ void Episode::Finish(EpisodeStatus status) {
       step_index_ > 0 ? DecisionClock::Microseconds(decision_ticks_) / step_index_ : 0.0;
   int at_goal = 0;
   for (size_t i = 0; i < humans_.size(); ++i) {
-    if (human_reached_[i] || (humans_[i].position - humans_[i].goal).norm() < humans_[i].radius) {
+    if (human_reached_[i] || NormBelow(humans_[i].position - humans_[i].goal, humans_[i].radius)) {
       ++at_goal;
     }
   }

@@ -34,7 +34,7 @@ StepJudgement JudgeRobotMove(const SimConfig& sim, const CollisionWorld& world,
     hit_obstacle = hit.fraction <= 1.0;
     if (hit_obstacle) j.rect = hit.rect;
   }
-  const bool reached = (end - robot.goal).norm() < sim.goal_radius;
+  const bool reached = NormBelow(end - robot.goal, sim.goal_radius);
 
   if (hit_human) {
     j.event = StepEvent::kCollisionHuman;

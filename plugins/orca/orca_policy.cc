@@ -199,50 +199,54 @@ OrcaPolicy::Scratch& OrcaPolicy::ThreadScratch() {
 
 void OrcaPolicy::GatherNeighbours(const Observation& obs, Scratch* s) const {
   std::vector<OrcaAgent>& neighbours = s->neighbours;
-  neighbours.clear();
   const double padding = radius_padding_ + safety_space_;
   if (obs.agents != nullptr) {
     // Human: ground truth from the harness's grid, nearest first.
     obs.agents->Nearest(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index,
                         &s->neighbour_ids);
     const auto all = obs.agents->agents();
-    for (int id : s->neighbour_ids) {
-      const AgentState& a = all[id];
-      neighbours.push_back({a.position, a.velocity, a.radius + padding});
+    const std::vector<int>& ids = s->neighbour_ids;
+    neighbours.resize(ids.size());  // not cleared first: no construction when the size repeats
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      const AgentState& a = all[ids[k]];
+      neighbours[k] = {a.position, a.velocity, a.radius + padding};
     }
     return;
   }
   // Robot: the people its person sensor reports, in the sensor frame.
   const SensorReading* reading = obs.Reading("person");
-  if (reading == nullptr || max_neighbors_ <= 0) return;
+  if (reading == nullptr || max_neighbors_ <= 0) {
+    neighbours.clear();
+    return;
+  }
   // The max_neighbors_ nearest in range, nearest first, equal distances in the sensor's
-  // order: kept sorted while the people arrive (a handful of slots; no sort of everybody).
+  // order: kept sorted while the people arrive, each moved into place past the farther ones
+  // (a handful of slots; no sort of everybody, no vector insert).
   std::vector<Scratch::Seen>& seen = s->seen;
-  seen.clear();
   const auto max_seen = static_cast<std::size_t>(max_neighbors_);
+  if (seen.size() < max_seen + 1) seen.resize(max_seen + 1);  // a spare slot for the newcomer
+  std::size_t n = 0;
   const double range_sq = neighbor_dist_ * neighbor_dist_;
   for (const PersonObservation& person : reading->people) {
     const Vec2 position = obs.frame.origin + obs.frame.VectorToWorld(person.position);
     const double dist_sq = (position - obs.self.position).squaredNorm();
     if (dist_sq >= range_sq) continue;
-    if (seen.size() == max_seen) {
-      if (!(dist_sq < seen.back().dist_sq)) continue;
-      seen.pop_back();
-    }
-    const auto after_equals =
-        std::upper_bound(seen.begin(), seen.end(), dist_sq,
-                         [](double d, const Scratch::Seen& one) { return d < one.dist_sq; });
-    seen.insert(
-        after_equals,
-        {dist_sq, {position, obs.frame.VectorToWorld(person.velocity), person.radius + padding}});
+    if (n == max_seen && !(dist_sq < seen[n - 1].dist_sq)) continue;
+    std::size_t j = n;
+    for (; j > 0 && dist_sq < seen[j - 1].dist_sq; --j) seen[j] = seen[j - 1];
+    seen[j] = {dist_sq,
+               {position, obs.frame.VectorToWorld(person.velocity), person.radius + padding}};
+    if (n < max_seen) ++n;
   }
-  for (const Scratch::Seen& one : seen) neighbours.push_back(one.agent);
+  neighbours.resize(n);
+  for (std::size_t k = 0; k < n; ++k) neighbours[k] = seen[k].agent;
 }
 
 GuidanceTarget OrcaPolicy::Target(const Observation& obs, double radius, double time_step,
                                   Scratch* s) {
   const AgentState& self = obs.self;
-  if (!guidance_enabled_) return {self.goal, true};
+  // Without rectangles there is no roadmap: neither guidance nor yielding has anything to do.
+  if (!guidance_enabled_ || roadmap_ == nullptr) return {self.goal, true};
   // Jams happen in the narrow passages between rectangles; in the open plane ORCA alone is
   // CrowdNav's model and stays untouched. The robot (no ground truth) never yields.
   if (yield_enabled_ && roadmap_ != nullptr && obs.agents != nullptr &&

@@ -43,7 +43,9 @@ class OrcaPolicy final : public Policy {
     std::vector<Seen> seen;
     OrcaSolveScratch solve;
   };
-  static Scratch& ThreadScratch();
+  /// Not inlined: its caller keeps the address, where inlined code fetched it again (a
+  /// thread-local lookup is a call in a plugin).
+  [[gnu::noinline]] static Scratch& ThreadScratch();
 
   /// Fills s->neighbours from the ground-truth agents (humans) or the person sensor (robot).
   void GatherNeighbours(const Observation& obs, Scratch* s) const;

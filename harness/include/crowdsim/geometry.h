@@ -44,6 +44,18 @@ struct Circle {
 /// z of the 3D cross product of two plane vectors.
 inline double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+/// Exactly `d.norm() < limit`, decided on squares where they cannot disagree with it (2% from
+/// the limit is far more than the rounding of both squares), the square root only near it.
+inline bool NormBelow(const Vec2& d, double limit) {
+  if (limit > 0.0) {
+    const double sq = d.squaredNorm();
+    const double limit_sq = limit * limit;
+    if (sq < 0.98 * limit_sq) return true;
+    if (sq > 1.02 * limit_sq) return false;
+  }
+  return d.norm() < limit;
+}
+
 /// Distance from point p to segment a-b (CrowdNav's point_to_segment_dist).
 double PointToSegmentDistance(const Vec2& a, const Vec2& b, const Vec2& p);
 

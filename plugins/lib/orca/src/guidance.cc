@@ -2,14 +2,6 @@
 
 namespace crowdsim::orca {
 
-Vec2 PreferredVelocity(const Vec2& position, const GuidanceTarget& target, double v_pref) {
-  const Vec2 to_target = target.point - position;
-  const double dist = to_target.norm();
-  if (target.is_goal && dist <= 1.0) return to_target;
-  if (dist <= 0.0) return Vec2::Zero();
-  return to_target * (v_pref / dist);
-}
-
 void Guidance::Reset(std::shared_ptr<const Roadmap> roadmap) {
   roadmap_ = std::move(roadmap);
   Restart();

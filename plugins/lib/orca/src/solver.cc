@@ -36,7 +36,6 @@ OrcaLine ShiftedLine(const Vec2& point, const Vec2& direction, double offset) {
 void AddObstacleLines(const OrcaAgent& self, const OrcaObstacles& obstacles,
                       const OrcaParams& params, std::vector<ObstacleNeighbor>* near_scratch,
                       std::vector<OrcaLine>* lines) {
-  if (obstacles.empty()) return;
   std::vector<ObstacleNeighbor>& near = *near_scratch;
   obstacles.Query(self.position, ObstacleRange(params, self.radius), &near);
   if (near.empty()) return;
@@ -161,8 +160,9 @@ void AddObstacleLines(const OrcaAgent& self, const OrcaObstacles& obstacles,
   }
 }
 
+// One line per neighbour, written to out[0 .. neighbours.size()).
 void AddAgentLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
-                   const OrcaParams& params, double time_step, std::vector<OrcaLine>* lines) {
+                   const OrcaParams& params, double time_step, OrcaLine* out) {
   const double inv_tau = 1.0 / params.time_horizon;
   for (const OrcaAgent& other : neighbours) {
     const Vec2 p = other.position - self.position;
@@ -197,7 +197,7 @@ void AddAgentLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
       direction = Vec2(unit_w.y(), -unit_w.x());
       u = (combined * inv_dt - w_len) * unit_w;
     }
-    lines->push_back({self.velocity + 0.5 * u, direction});
+    *out++ = {self.velocity + 0.5 * u, direction};
   }
 }
 
@@ -205,10 +205,19 @@ void FillLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
                const OrcaObstacles& obstacles, const OrcaParams& params, double time_step,
                std::vector<ObstacleNeighbor>* near_scratch, std::vector<OrcaLine>* lines,
                std::size_t* num_obstacle_lines) {
+  if (obstacles.empty()) {
+    // Not cleared first: the size mostly repeats from decision to decision, so the resize
+    // rarely constructs lines only to have them overwritten.
+    lines->resize(neighbours.size());
+    *num_obstacle_lines = 0;
+    AddAgentLines(self, neighbours, params, time_step, lines->data());
+    return;
+  }
   lines->clear();
   AddObstacleLines(self, obstacles, params, near_scratch, lines);
   *num_obstacle_lines = lines->size();
-  AddAgentLines(self, neighbours, params, time_step, lines);
+  lines->resize(*num_obstacle_lines + neighbours.size());
+  AddAgentLines(self, neighbours, params, time_step, lines->data() + *num_obstacle_lines);
 }
 
 }  // namespace

@@ -20,7 +20,14 @@ struct GuidanceTarget {
 /// CrowdNav's preferred velocity towards `target`: v_pref (m/s) along the unit direction
 /// when the target is an intermediate waypoint or a goal farther than 1 m, else
 /// goal - position, so that the agent settles on its goal.
-Vec2 PreferredVelocity(const Vec2& position, const GuidanceTarget& target, double v_pref);
+/// (Inline: one call per decision of every ORCA agent.)
+inline Vec2 PreferredVelocity(const Vec2& position, const GuidanceTarget& target, double v_pref) {
+  const Vec2 to_target = target.point - position;
+  const double dist = to_target.norm();
+  if (target.is_goal && dist <= 1.0) return to_target;
+  if (dist <= 0.0) return Vec2::Zero();
+  return to_target * (v_pref / dist);
+}
 
 /// Path-following state of one agent (one per policy instance; not shared).
 class Guidance {
