@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <vector>
 
 namespace crowdsim {
 namespace {
@@ -26,6 +30,74 @@ TEST(PointToSegmentDistance, ClampsToTheEndpoints) {
 
 TEST(PointToSegmentDistance, DegenerateSegmentIsAPoint) {
   EXPECT_NEAR(PointToSegmentDistance(Vec2(1, 1), Vec2(1, 1), Vec2(4, 5)), 5.0, kEps);
+}
+
+// The definition the function shortens: u = clamp((p - a).ab / |ab|^2, 0, 1), the distance to
+// a + u ab. Bit for bit, not within a tolerance: the shortcut divides only strictly between the
+// ends and must give the same double everywhere.
+double SegmentDistanceByDefinition(const Vec2& a, const Vec2& b, const Vec2& p) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  if (len2 == 0.0) return (p - a).norm();
+  const double u = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
+  return (a + u * ab - p).norm();
+}
+
+TEST(PointToSegmentDistance, EqualsItsDefinitionBitForBit) {
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> coord(-6.0, 6.0);
+  std::uniform_real_distribution<double> small(-0.5, 0.5);
+  int interior = 0, ends = 0;
+  for (int k = 0; k < 200000; ++k) {
+    // Short segments near the point, as the swept robot-human test makes them, and long ones.
+    const Vec2 a(coord(rng), coord(rng));
+    const Vec2 b =
+        k % 2 == 0 ? Vec2(a + Vec2(small(rng), small(rng))) : Vec2(coord(rng), coord(rng));
+    const Vec2 p = k % 3 == 0 ? Vec2::Zero() : Vec2(coord(rng), coord(rng));
+    const double along = (p - a).dot(b - a);
+    (along > 0.0 && along < (b - a).squaredNorm() ? interior : ends) += 1;
+    ASSERT_EQ(PointToSegmentDistance(a, b, p), SegmentDistanceByDefinition(a, b, p))
+        << "a " << a.transpose() << " b " << b.transpose() << " p " << p.transpose();
+  }
+  EXPECT_GT(interior, 10000);  // both branches were exercised
+  EXPECT_GT(ends, 10000);
+  // Exactly at the ends, on the segment's line, and with signed zeros.
+  const std::vector<std::array<Vec2, 3>> cases = {{Vec2(0, 0), Vec2(4, 0), Vec2(0, 3)},
+                                                  {Vec2(0, 0), Vec2(4, 0), Vec2(4, 3)},
+                                                  {Vec2(0, 0), Vec2(4, 0), Vec2(2, 0)},
+                                                  {Vec2(1, 1), Vec2(3, 3), Vec2(3, 3)},
+                                                  {Vec2(-0.0, 0), Vec2(0, -2), Vec2(0, 0)},
+                                                  {Vec2(0.1, 0.2), Vec2(0.3, 0.7), Vec2(0.3, 0.7)},
+                                                  {Vec2(1e-300, 0), Vec2(2e-300, 0), Vec2(0, 0)}};
+  for (const auto& [a, b, p] : cases) {
+    EXPECT_EQ(PointToSegmentDistance(a, b, p), SegmentDistanceByDefinition(a, b, p))
+        << "a " << a.transpose() << " b " << b.transpose() << " p " << p.transpose();
+  }
+}
+
+TEST(NormBelow, EqualsTheSquareRootTestEverywhere) {
+  std::mt19937_64 rng(15);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_real_distribution<double> limit_of(0.0, 2.0);
+  for (int k = 0; k < 200000; ++k) {
+    const double limit = limit_of(rng);
+    // Half the vectors within a few ulps of the limit, where squares alone would misjudge.
+    Vec2 d(unit(rng), unit(rng));
+    if (k % 2 == 0 && d.norm() > 0.0) {
+      d *= limit / d.norm();
+      for (int u = k % 7 - 3; u != 0; u += u > 0 ? -1 : 1) {
+        d.x() = std::nextafter(d.x(), u > 0 ? kInfinity : -kInfinity);
+      }
+    }
+    ASSERT_EQ(NormBelow(d, limit), d.norm() < limit) << d.transpose() << " limit " << limit;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const double limit : {0.0, -1.0, 0.3, kInfinity, nan}) {
+    for (const Vec2& d : {Vec2(0, 0), Vec2(0.3, 0), Vec2(0, -0.3), Vec2(nan, 0), Vec2(kInfinity, 0),
+                          Vec2(1e200, 1e200), Vec2(1e-200, 0)}) {
+      EXPECT_EQ(NormBelow(d, limit), d.norm() < limit) << d.transpose() << " limit " << limit;
+    }
+  }
 }
 
 TEST(PointToRectDistance, InsideEdgeAndCorner) {
