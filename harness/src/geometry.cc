@@ -40,17 +40,7 @@ double Length(const Vec2& d) {
 }  // namespace
 
 double PointToSegmentDistance(const Vec2& a, const Vec2& b, const Vec2& p) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  if (len2 == 0.0) return (p - a).norm();
-  // u = clamp((p - a).ab / len2, 0, 1), divided only strictly between the ends: a numerator
-  // at or below 0 (at or above len2) gives a quotient the clamp takes to 0 (1) anyway. Most
-  // swept tests of a step end at an end of the segment.
-  const double along = (p - a).dot(ab);
-  if (along <= 0.0) return (a - p).norm();  // a + 0 * ab is a (up to the sign of a zero)
-  if (along >= len2) return (a + ab - p).norm();
-  const double u = along / len2;  // in [0, 1]: the clamp changes nothing here
-  return (a + u * ab - p).norm();
+  return PointToSegmentDistanceInline(a, b, p);
 }
 
 double PointToRectDistance(const Vec2& p, const Rect& r) { return Length(OutsideRect(p, r)); }

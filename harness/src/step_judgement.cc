@@ -19,7 +19,7 @@ StepJudgement JudgeRobotMove(const SimConfig& sim, const CollisionWorld& world,
     const AgentState& h = humans[i];
     const Vec2 p = h.position - robot.position;
     const Vec2 e = p + (h.velocity - robot_velocity) * dt;
-    const double d = PointToSegmentDistance(p, e, origin) - h.radius - robot.radius;
+    const double d = PointToSegmentDistanceInline(p, e, origin) - h.radius - robot.radius;
     if (d < j.min_human_distance) {
       j.min_human_distance = d;
       closest = static_cast<int>(i);
