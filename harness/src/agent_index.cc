@@ -156,14 +156,17 @@ void AgentIndex::NearestOfFew(const Vec2& p, double range_sq, int max_count, int
 
 void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude,
                          std::vector<int>* out) const {
+  if (agents_.empty() || max_count <= 0) {
+    out->clear();
+    return;
+  }
   const double range_sq = range * range;
-  if (position_.size() <= kScanAllUpTo && max_count > 0) {
+  if (position_.size() <= kScanAllUpTo) {
     // Sized, not cleared first: a policy's vector mostly keeps its size from query to query.
     NearestOfFew(p, range_sq, max_count, exclude, out);
     return;
   }
   out->clear();
-  if (agents_.empty() || max_count <= 0) return;
   // The querying agent's radius from its last query, when there is one: a disc that held its
   // k nearest a step ago most likely holds them now.
   const bool hinted =

@@ -245,12 +245,12 @@ void OrcaPolicy::GatherNeighbours(const Observation& obs, Scratch* s) const {
 GuidanceTarget OrcaPolicy::Target(const Observation& obs, double radius, double time_step,
                                   Scratch* s) {
   const AgentState& self = obs.self;
-  // Without rectangles there is no roadmap: neither guidance nor yielding has anything to do.
-  if (!guidance_enabled_ || roadmap_ == nullptr) return {self.goal, true};
+  // Without rectangles there is no roadmap: neither guidance nor yielding has anything to do
+  // (the guidance would return the goal itself).
+  if (!guidance_enabled_ || guidance_.roadmap() == nullptr) return {self.goal, true};
   // Jams happen in the narrow passages between rectangles; in the open plane ORCA alone is
   // CrowdNav's model and stays untouched. The robot (no ground truth) never yields.
-  if (yield_enabled_ && roadmap_ != nullptr && obs.agents != nullptr &&
-      yielding_.Observe(self.position)) {
+  if (yield_enabled_ && obs.agents != nullptr && yielding_.Observe(self.position)) {
     s->yield_neighbours.clear();
     const auto all = obs.agents->agents();
     for (std::size_t k = 0; k < s->neighbour_ids.size(); ++k) {

@@ -17,16 +17,21 @@ ParamSchema Schema() {
 PersonSensor::PersonSensor(const Params& params) : max_range_(params.GetDouble("max_range")) {}
 
 void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
-  // Sized for everybody, then cut to those in range: the reading is reused step after step,
-  // so this constructs nothing once it has held the crowd (a push_back per person did).
+  // The reading is reused step after step: its people are overwritten in place and only the
+  // ones beyond its last size are added (clearing and pushing every person cost more).
   std::vector<PersonObservation>& people = out->people;
-  people.resize(in.humans.size());
   std::size_t n = 0;
   const double range2 = max_range_ * max_range_;
   for (const AgentState& h : in.humans) {
     if (max_range_ > 0.0 && (h.position - in.frame.origin).squaredNorm() > range2) continue;
-    people[n++] = PersonObservation{in.frame.PointToLocal(h.position),
-                                    in.frame.VectorToLocal(h.velocity), h.radius};
+    const PersonObservation seen{in.frame.PointToLocal(h.position),
+                                 in.frame.VectorToLocal(h.velocity), h.radius};
+    if (n < people.size()) {
+      people[n] = seen;
+    } else {
+      people.push_back(seen);
+    }
+    ++n;
   }
   people.resize(n);
 }

@@ -21,7 +21,7 @@ void ExpectBruteForceAnswer(const std::vector<AgentState>& agents, const AgentIn
   }
   std::sort(brute.begin(), brute.end());
   if (static_cast<int>(brute.size()) > k) brute.resize(k);
-  std::vector<int> got;
+  std::vector<int> got(20, -7);  // a reused vector's old content must not survive the query
   index.Nearest(p, range, k, exclude, &got);
   ASSERT_EQ(got.size(), brute.size());
   for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], brute[i].second);

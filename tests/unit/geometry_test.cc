@@ -68,10 +68,19 @@ TEST(PointToSegmentDistance, EqualsItsDefinitionBitForBit) {
                                                   {Vec2(1, 1), Vec2(3, 3), Vec2(3, 3)},
                                                   {Vec2(-0.0, 0), Vec2(0, -2), Vec2(0, 0)},
                                                   {Vec2(0.1, 0.2), Vec2(0.3, 0.7), Vec2(0.3, 0.7)},
-                                                  {Vec2(1e-300, 0), Vec2(2e-300, 0), Vec2(0, 0)}};
+                                                  {Vec2(1e-300, 0), Vec2(2e-300, 0), Vec2(0, 0)},
+                                                  // Squares that overflow: the definition's NaN.
+                                                  {Vec2(0, 0), Vec2(1e200, 0), Vec2(1e200, 0)},
+                                                  {Vec2(0, 0), Vec2(2e154, 0), Vec2(3e154, 0)},
+                                                  {Vec2(0, 0), Vec2(1e154, 0), Vec2(-1e300, 0)},
+                                                  {Vec2(0, 0), Vec2(1, 0), Vec2(kInfinity, 0)},
+                                                  {Vec2(0, 0), Vec2(1, 0), Vec2(-kInfinity, 0)}};
   for (const auto& [a, b, p] : cases) {
-    EXPECT_EQ(PointToSegmentDistance(a, b, p), SegmentDistanceByDefinition(a, b, p))
-        << "a " << a.transpose() << " b " << b.transpose() << " p " << p.transpose();
+    const double got = PointToSegmentDistance(a, b, p);
+    const double want = SegmentDistanceByDefinition(a, b, p);
+    EXPECT_TRUE(got == want || (std::isnan(got) && std::isnan(want)))
+        << got << " against " << want << " for a " << a.transpose() << " b " << b.transpose()
+        << " p " << p.transpose();
   }
 }
 
@@ -92,6 +101,17 @@ TEST(NormBelow, EqualsTheSquareRootTestEverywhere) {
     ASSERT_EQ(NormBelow(d, limit), d.norm() < limit) << d.transpose() << " limit " << limit;
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  // Limits whose squares are subnormal or overflow, and a vector at each within an ulp or two.
+  for (const double limit : {1e-160, 1.5e154, 1e300}) {
+    for (int u = -2; u <= 2; ++u) {
+      Vec2 d(limit * 0.6, limit * 0.8);
+      d *= limit / d.norm();
+      for (int step = u; step != 0; step += step > 0 ? -1 : 1) {
+        d.y() = std::nextafter(d.y(), step > 0 ? kInfinity : -kInfinity);
+      }
+      EXPECT_EQ(NormBelow(d, limit), d.norm() < limit) << d.transpose() << " limit " << limit;
+    }
+  }
   for (const double limit : {0.0, -1.0, 0.3, kInfinity, nan}) {
     for (const Vec2& d : {Vec2(0, 0), Vec2(0.3, 0), Vec2(0, -0.3), Vec2(nan, 0), Vec2(kInfinity, 0),
                           Vec2(1e200, 1e200), Vec2(1e-200, 0)}) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <limits>
 
 namespace crowdsim {
@@ -65,13 +66,16 @@ inline double PointToSegmentDistanceInline(const Vec2& a, const Vec2& b, const V
   const Vec2 ab = b - a;
   const double len2 = ab.squaredNorm();
   if (len2 == 0.0) return (p - a).norm();
-  // u = clamp((p - a).ab / len2, 0, 1), divided only strictly between the ends: a numerator
-  // at or below 0 (at or above len2) gives a quotient the clamp takes to 0 (1) anyway. Most
-  // swept tests of a step end at an end of the segment.
+  // u = clamp((p - a).ab / len2, 0, 1), divided only strictly between the ends: with a finite
+  // len2, a numerator at or below 0 (at or above len2) gives a quotient the clamp takes to 0
+  // (1) anyway. Most swept tests of a step end at an end of the segment. An overflowing len2
+  // (or NaN) takes the definition itself, whose 0 * inf is NaN.
   const double along = (p - a).dot(ab);
-  if (along <= 0.0) return (a - p).norm();  // a + 0 * ab is a (up to the sign of a zero)
-  if (along >= len2) return (a + ab - p).norm();
-  const double u = along / len2;  // in [0, 1]: the clamp changes nothing here
+  if (len2 < kInfinity) {
+    if (along <= 0.0) return (a - p).norm();  // a + 0 * ab is a (up to the sign of a zero)
+    if (along >= len2) return (a + ab - p).norm();
+  }
+  const double u = std::clamp(along / len2, 0.0, 1.0);
   return (a + u * ab - p).norm();
 }
 

@@ -2,12 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/bench/plugin_registry.h"
 #include "orca/geometry.h"
+#include "orca/guidance.h"
+#include "orca/solver.h"
 #include "test_paths.h"
 
 namespace crowdsim {
@@ -119,6 +122,68 @@ TEST_F(OrcaPluginTest, RobotSeesPeopleThroughItsPersonSensor) {
   const Vec2 human_v = human->Decide(human_obs).velocity;
   EXPECT_NEAR((robot_v - human_v).norm(), 0.0, 1e-9);
   EXPECT_GT((robot_v - Vec2(0, 1)).norm(), 0.05) << "the robot ignored the person";
+}
+
+// The robot avoids its max_neighbors nearest people, nearest first, people at the same
+// distance in the sensor's order; a decision with fewer people after one with more keeps
+// nothing of the earlier one. Checked bit for bit against the solver on the expected list.
+TEST_F(OrcaPluginTest, RobotTakesItsNearestPeopleTiesInSensorOrder) {
+  params_.Set("max_neighbors", std::int64_t{2});
+  auto robot = Make();
+  StaticMap map;
+  EpisodeContext ctx;
+  ctx.map = &map;
+  robot->Reset(ctx);
+
+  const AgentState self = Human(Vec2(0, -3), Vec2(0, 4), Vec2(0, 0.5));
+  // Heading 0: the sensor frame's round trip is exact, so the tie below stays a tie.
+  const Frame frame = Frame::Make(self.position, 0.0);
+  struct Person {
+    Vec2 position, velocity;
+  };
+  // Two people 2 m away (A ahead, coming at the robot; B behind it, standing), one farther,
+  // and last a nearer one beside the robot. A must be avoided, B would not matter.
+  const std::vector<Person> people = {{Vec2(0, -1), Vec2(0, -1)},
+                                      {Vec2(0, -5), Vec2(0, 0)},
+                                      {Vec2(3, 1), Vec2(0, 0)},
+                                      {Vec2(-1.5, -3), Vec2(0, 0)}};
+  auto observe = [&](const std::vector<Person>& seen) {
+    Observation obs;
+    obs.self = self;
+    obs.frame = frame;
+    SensorReading reading;
+    reading.sensor = "person";
+    for (const Person& p : seen) {
+      reading.people.push_back(
+          {frame.PointToLocal(p.position), frame.VectorToLocal(p.velocity), 0.3});
+    }
+    obs.readings.push_back(reading);
+    return obs;
+  };
+  // What the plugin must solve: the people as it reads them back, its padding, its settings.
+  const double padding = 0.01;
+  auto solve = [&](const Observation& obs, std::vector<int> chosen) {
+    std::vector<orca::OrcaAgent> neighbours;
+    for (int k : chosen) {
+      const PersonObservation& p = obs.readings[0].people[static_cast<std::size_t>(k)];
+      neighbours.push_back({obs.frame.origin + obs.frame.VectorToWorld(p.position),
+                            obs.frame.VectorToWorld(p.velocity), p.radius + padding});
+    }
+    orca::OrcaParams params;
+    params.max_speed = self.v_pref;
+    const orca::OrcaAgent me{self.position, self.velocity, self.radius + padding};
+    const Vec2 pref = orca::PreferredVelocity(self.position, {self.goal, true}, self.v_pref);
+    return orca::ComputeOrcaVelocity(me, neighbours, orca::OrcaObstacles(), params, pref, 0.25);
+  };
+
+  const Observation all = observe(people);
+  const Vec2 got = robot->Decide(all).velocity;
+  EXPECT_EQ(got, solve(all, {3, 0})) << "the nearest, then the first of the tied pair";
+  ASSERT_NE(solve(all, {3, 0}), solve(all, {3, 1})) << "the tie would not show";
+
+  // Then two people only, on the same thread: the earlier decision's neighbours are gone.
+  const Observation two = observe({people[2], people[0]});
+  EXPECT_EQ(robot->Decide(two).velocity, solve(two, {1, 0}));
 }
 
 TEST_F(OrcaPluginTest, RejectsOthersPrefNonZero) {
