@@ -9,8 +9,9 @@ CMAKE_FLAGS ?=
 
 all: build
 
+# A build without libtorch (CMAKE_FLAGS=-DCROWDSIM_WITH_TORCH=OFF) does not install it either.
 deps:
-	@scripts/install_deps.sh
+	@scripts/install_deps.sh $(if $(findstring CROWDSIM_WITH_TORCH=OFF,$(CMAKE_FLAGS)),--no-torch)
 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)

@@ -17,11 +17,21 @@ the suite: `reset(seed=k)` (or `options={"episode": k}`) is episode k of the row
 from __future__ import annotations
 
 import math
+import sys
 from typing import Any, Callable, Sequence
 
-import numpy as np
+try:
+    import numpy as np
 
-from . import _core
+    from . import _core
+except ImportError as _error:  # another interpreter than the build's (pyenv, conda, a venv)
+    raise ImportError(
+        f"crowdsim_bench cannot be imported by {sys.executable} (Python "
+        f"{sys.version_info.major}.{sys.version_info.minor}): {_error}. The package is built for "
+        "the interpreter the build found, Debian's /usr/bin/python3 unless the build was "
+        "configured with -DPython3_EXECUTABLE=...; run e.g. `PYTHONPATH=build/python "
+        "/usr/bin/python3 your_script.py`"
+    ) from _error
 
 __version__ = _core.__version__
 

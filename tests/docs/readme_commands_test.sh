@@ -50,7 +50,7 @@ for c in "${commands[@]}"; do
       echo "SKIP (no Python package built): $c"
       continue
     fi
-    c="${c/ python3 / $python }"
+    c="${c/ \/usr\/bin\/python3 / $python }"
     if [[ "$c" == *_torch.py* ]] && ! "$python" -c "import torch" 2>/dev/null; then
       echo "SKIP (no python3-torch): $c"
       continue

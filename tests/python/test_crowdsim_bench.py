@@ -4,6 +4,8 @@ python/ folder on PYTHONPATH, from the source root."""
 import csv
 import math
 import os
+import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -374,6 +376,16 @@ class VectorEnvContract(unittest.TestCase):
 class UserMistakes(unittest.TestCase):
     """What a user gets wrong first: each a clear Python error, never a crash or a silent
     stand-in."""
+
+    def test_another_interpreter_is_told_which_one_the_package_needs(self):
+        # Stands in for an interpreter without the build's numpy (pyenv, conda): the import
+        # error names this interpreter and the one the package is built for.
+        code = "import sys; sys.modules['numpy'] = None; import crowdsim_bench"
+        done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                              env=dict(os.environ), check=False)
+        self.assertNotEqual(done.returncode, 0)
+        self.assertIn("crowdsim_bench cannot be imported by " + sys.executable, done.stderr)
+        self.assertIn("/usr/bin/python3", done.stderr)
 
     def test_stepping_before_reset_is_an_error(self):
         with self.assertRaisesRegex(ValueError, "before reset"):
