@@ -99,18 +99,32 @@ int MergeAndReport(const std::vector<std::filesystem::path>& dirs, const std::fi
   return 0;
 }
 
-/// The suite's title and table on stdout.
-void PrintTable(const Suite& suite, const RunSummary& s) {
+/// The suite's title on stdout; `this_run`: what the command line changed (--episodes,
+/// --set), said beside the description, which the file wrote for its own settings.
+void PrintTitle(const Suite& suite, const std::string& this_run) {
   std::cout << "## " << suite.name;
   if (!suite.description.empty()) std::cout << ": " << suite.description;
-  std::cout << "\n\n" << s.table_markdown << "\n";
+  if (!this_run.empty()) std::cout << " (this run: " << this_run << ")";
+  std::cout << "\n\n";
+}
+
+/// What the command line changed in the suite, as it was given.
+std::string ThisRun(const Args& a) {
+  std::string text;
+  if (auto episodes = a.Get("--episodes")) text = "--episodes " + *episodes;
+  for (const std::string& set : a.All("--set")) {
+    if (!text.empty()) text += ' ';
+    text += "--set ";
+    text += set;
+  }
+  return text;
 }
 
 /// `mpirun -n R crowdsim-bench run`: rank K runs shard K+1 of R into OUT/ranks/<K+1>of<R>/ (its
 /// own resumable folder) with its own --jobs threads; once every rank has finished, rank 0
 /// merges the shards into OUT exactly as `merge` does, so the tables equal a single run's.
 int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
-                 const ProcessGroup& group) {
+                 const ProcessGroup& group, const std::string& this_run) {
   const std::filesystem::path out = opt.out_dir.empty() ? DefaultRunDir(suite) : opt.out_dir;
   auto rank_dir = [&](int rank) {
     return out / "ranks" / (std::to_string(rank + 1) + "of" + std::to_string(group.size()));
@@ -162,8 +176,7 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
   if (group.rank() != 0) return 0;
   std::vector<std::filesystem::path> dirs;
   for (int r = 0; r < group.size(); ++r) dirs.push_back(rank_dir(r));
-  std::cout << "## " << suite.name << (suite.description.empty() ? "" : ": " + suite.description)
-            << "\n\n";
+  PrintTitle(suite, this_run);
   return MergeAndReport(dirs, out, suite.file, registry,
                         std::to_string(group.size()) + " MPI ranks");
 }
@@ -202,7 +215,7 @@ int RunCommand(const std::vector<std::string>& args) {
   if (group.size() > 1) {
     if (a.Has("--shard"))
       throw UsageError("--shard and an MPI launch both split the suite: give one of them");
-    return RunOverRanks(*suite, registry, opt, group);
+    return RunOverRanks(*suite, registry, opt, group, ThisRun(a));
   }
   ExplainInterruption(
       ((opt.out_dir.empty() ? DefaultRunDir(*suite) : opt.out_dir) / "episodes.csv").string());
@@ -211,7 +224,8 @@ int RunCommand(const std::vector<std::string>& args) {
     if (shard_count > 1) {
       std::cout << s.table_markdown;  // a shard has no table: what it holds, how to join it
     } else {
-      PrintTable(*suite, s);
+      PrintTitle(*suite, ThisRun(a));
+      std::cout << s.table_markdown << "\n";
     }
     for (const std::string& note : s.policy_errors) std::cerr << "note: " << note << "\n";
     if (!s.policy_errors.empty()) {

@@ -796,6 +796,8 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
       Shell(exe + " run " + suite.string() + " --episodes 2 --jobs 2 --quiet --out " + out);
   EXPECT_EQ(rc, 0) << text;
   EXPECT_NE(text.find("| 1 | linear |"), std::string::npos) << text;
+  // The title says what the command line changed beside the file's own description.
+  EXPECT_NE(text.find("(this run: --episodes 2)\n"), std::string::npos) << text;
   EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / "manifest.json"));
 
   auto [vrc, vtext] = Shell(exe + " validate " + suite.string());

@@ -32,6 +32,24 @@ bool IsNumber(const std::string& s) {
   return end != nullptr && *end == '\0';
 }
 
+// The episodes the table counts: the sum of its `episodes` column.
+std::size_t TableEpisodes(const ReportInputs& in) {
+  const size_t column = in.table.Column("episodes");
+  std::size_t total = 0;
+  for (const auto& row : in.table.rows) {
+    if (column < row.size())
+      total += static_cast<std::size_t>(std::strtoull(row[column].c_str(), nullptr, 10));
+  }
+  return total;
+}
+
+// The run's --set overrides as the command line gave them.
+std::string JoinOverrides(const std::vector<std::string>& overrides) {
+  std::string text;
+  for (const std::string& o : overrides) text += (text.empty() ? "--set " : " --set ") + o;
+  return text;
+}
+
 // The document head, the suite's name and description, and where the results come from.
 void WriteHeader(std::ostream& html, const ReportInputs& in) {
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
@@ -41,8 +59,15 @@ void WriteHeader(std::ostream& html, const ReportInputs& in) {
   if (!in.suite.description.empty())
     html << "<p class=\"meta\">" << XmlEscape(in.suite.description) << "</p>\n";
   html << "<p class=\"meta\">results: " << XmlEscape(in.dir.string())
-       << " · suite file: " << XmlEscape(in.suite_file.string()) << " · "
-       << in.episodes.lines.size() << " episodes recorded";
+       << " · suite file: " << XmlEscape(in.suite_file.string()) << " · " << TableEpisodes(in)
+       << " episodes in the table";
+  // A shorter run into a folder of a longer one keeps the longer run's episodes for a resume.
+  if (in.episodes.lines.size() > TableEpisodes(in)) {
+    html << " (episodes.csv holds " << in.episodes.lines.size()
+         << ", kept from a longer run for a resume)";
+  }
+  const std::string overrides = JoinOverrides(ReadManifestStrings(in.manifest, "overrides"));
+  if (!overrides.empty()) html << " · run with " << XmlEscape(overrides);
   for (const char* key : {"git_commit", "finished_utc", "config_hash"}) {
     const std::string v = ReadManifestField(in.manifest, key);
     if (!v.empty()) html << " · " << key << " " << XmlEscape(v);

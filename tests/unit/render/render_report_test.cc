@@ -87,6 +87,29 @@ TEST_F(ReportTest, IsOneSelfContainedPageWithTableChartsAndFigures) {
   EXPECT_EQ(html.find("url("), std::string::npos);
 }
 
+// A shorter run into the folder of a longer one: the table counts its own episodes, and the
+// page says what episodes.csv holds besides and which --set the run was given.
+TEST_F(ReportTest, CountsTheTablesEpisodesAndNamesTheRunsOverrides) {
+  TempDir dir;
+  PluginRegistry registry;
+  SuiteLoadResult loaded =
+      LoadSuite(crowdsim::testing::SourceDir() / "suites/quick.yaml", registry, {"humans.count=2"});
+  ASSERT_TRUE(loaded.suite);
+  RunOptions opt;
+  opt.out_dir = dir.path() / "q";
+  opt.jobs = 2;
+  opt.progress = false;
+  opt.episodes = 4;
+  RunSuite(*loaded.suite, registry, opt);
+  opt.episodes = 2;
+  RunSuite(*loaded.suite, registry, opt);
+  const std::string html = BuildReport(opt.out_dir, registry);
+  EXPECT_NE(html.find(" 4 episodes in the table (episodes.csv holds 8, kept from a longer run"),
+            std::string::npos)
+      << html.substr(0, 2000);
+  EXPECT_NE(html.find("run with --set humans.count=2"), std::string::npos);
+}
+
 TEST_F(ReportTest, ShowsTheFirstOfEachOutcome) {
   const auto lines = ReadEpisodesCsv(Results() / "episodes.csv");
   int first_success = -1;
