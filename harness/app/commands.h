@@ -15,10 +15,11 @@ namespace crowdsim::cli {
 enum class SpecFileKind { kUnknown, kSuite, kTraining };
 SpecFileKind KindOfSpecFile(const std::string& file);
 
-/// Loads a suite with its --set overrides, or prints every error (and, for a training file,
-/// what to do with it) and returns nothing.
+/// Loads a suite with its --set overrides, or prints every error (for a training file, instead,
+/// that it is one and to train it; `command` is the one that wanted a suite) and returns nothing.
 std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,
-                                  const std::vector<std::string>& overrides);
+                                  const std::vector<std::string>& overrides,
+                                  const std::string& command);
 
 int RunCommand(const std::vector<std::string>& args);
 int MergeCommand(const std::vector<std::string>& args);

@@ -81,7 +81,8 @@ int RenderCommand(const std::vector<std::string>& args) {
   if (a.Has("--sensors-at")) sensors_at = a.GetInt("--sensors-at", 0, 0, 1'000'000);
 
   PluginRegistry registry;
-  const std::optional<Suite> loaded = LoadOrReport(a.positional[0], registry, a.All("--set"));
+  const std::optional<Suite> loaded =
+      LoadOrReport(a.positional[0], registry, a.All("--set"), "render");
   if (!loaded) return 2;
   const Suite& suite = *loaded;
   size_t row = 0, compare_row = 0;

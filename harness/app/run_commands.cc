@@ -32,16 +32,21 @@ SpecFileKind KindOfSpecFile(const std::string& file) {
 }
 
 std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,
-                                  const std::vector<std::string>& overrides) {
+                                  const std::vector<std::string>& overrides,
+                                  const std::string& command) {
   SuiteLoadResult r = LoadSuite(file, registry, overrides);
   if (!r.suite) {
+    // A training file read as a suite gives an unknown key for each of its own keys (policy,
+    // params, sensors, training): what it is says more, as validate tells the two apart.
+    if (KindOfSpecFile(file) == SpecFileKind::kTraining) {
+      std::cerr << "error: " << file << " is a training file: train it with `crowdsim-bench train "
+                << file << "` (" << command
+                << " takes a suite, whose rows: list the policies to compare)\n";
+      return std::nullopt;
+    }
     for (const auto& e : r.errors) std::cerr << "error: " << e.Format() << "\n";
     std::cerr << r.errors.size() << " error" << (r.errors.size() == 1 ? "" : "s") << " in " << file
               << "\n";
-    if (KindOfSpecFile(file) == SpecFileKind::kTraining) {
-      std::cerr << "(" << file << " is a training file: train it with `crowdsim-bench train "
-                << file << "`; run takes a suite, whose rows: list the policies to compare)\n";
-    }
   }
   return std::move(r.suite);
 }
@@ -200,7 +205,7 @@ int RunCommand(const std::vector<std::string>& args) {
     }
   }
   PluginRegistry registry;
-  auto suite = LoadOrReport(a.positional[0], registry, a.All("--set"));
+  auto suite = LoadOrReport(a.positional[0], registry, a.All("--set"), "run");
   if (!suite) return 2;
   RunOptions opt;
   if (auto out = a.Get("--out")) opt.out_dir = *out;
@@ -289,7 +294,7 @@ int ValidateCommand(const std::vector<std::string>& args) {
       std::cout << file << ": ok (training file: " << loaded.spec->row.policy.plugin << ")\n";
       continue;
     }
-    auto suite = LoadOrReport(file, registry, a.All("--set"));
+    auto suite = LoadOrReport(file, registry, a.All("--set"), "validate");
     if (!suite) {
       status = 2;
       continue;

@@ -43,17 +43,30 @@ struct TrainJob {
   bool campaign = false;
 };
 
+/// The errors of a training file that did not load. A suite read as a training file gives an
+/// unknown key for each of its own keys (episodes, robot, rows): that it is a suite is said
+/// instead, as validate tells the two apart.
+void ReportTrainSpecErrors(const std::string& file, const std::string& command,
+                           const std::vector<SuiteError>& errors, bool count) {
+  if (KindOfSpecFile(file) == SpecFileKind::kSuite) {
+    std::cerr << "error: " << file << " is a suite: run it with `crowdsim-bench run " << file
+              << "` (" << command
+              << (command == "train" ? " takes a training file" : " takes training files")
+              << ", see suites/train/)\n";
+    return;
+  }
+  for (const auto& e : errors) std::cerr << "error: " << e.Format() << "\n";
+  if (count) {
+    std::cerr << errors.size() << " error" << (errors.size() == 1 ? "" : "s") << " in " << file
+              << "\n";
+  }
+}
+
 int Train(const TrainJob& job) {
   PluginRegistry registry;
   training::TrainSpecLoadResult loaded = training::LoadTrainSpec(job.file, registry, job.sets);
   if (!loaded.spec) {
-    for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
-    std::cerr << loaded.errors.size() << " error" << (loaded.errors.size() == 1 ? "" : "s")
-              << " in " << job.file << "\n";
-    if (KindOfSpecFile(job.file) == SpecFileKind::kSuite) {
-      std::cerr << "(" << job.file << " is a suite: run it with `crowdsim-bench run " << job.file
-                << "`; train takes a training file, see suites/train/)\n";
-    }
+    ReportTrainSpecErrors(job.file, job.campaign ? "train-all" : "train", loaded.errors, true);
     return 2;
   }
   training::TrainOptions options;
@@ -160,8 +173,10 @@ int TrainAllCommand(const std::vector<std::string>& args) {
     PluginRegistry registry;
     const training::TrainSpecLoadResult loaded =
         training::LoadTrainSpec(job.file, registry, job.sets);
-    for (const auto& e : loaded.errors) std::cerr << "error: " << e.Format() << "\n";
-    if (!loaded.spec) ++bad_files;
+    if (!loaded.spec) {
+      ReportTrainSpecErrors(job.file, "train-all", loaded.errors, false);
+      ++bad_files;
+    }
   }
   if (bad_files > 0) {
     std::cerr << "train-all: " << bad_files << " of " << jobs.size()

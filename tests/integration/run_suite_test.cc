@@ -900,15 +900,31 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   auto [crc, ctext] = Shell(exe + " validate " + crashing.string());
   EXPECT_EQ(crc, 0) << ctext;
 
-  // A training file given to run, a suite given to train: the other command is named.
+  // A training file given to run, a suite given to train: the other command is named, instead
+  // of an unknown key for each key of the other kind of file (policy, params, sensors,
+  // training; episodes, robot, rows).
   auto [wrc, wtext] = Shell(exe + " run " + untrainable.string() + " --quiet");
   EXPECT_EQ(wrc, 2) << wtext;
-  EXPECT_NE(wtext.find("is a training file: train it with `crowdsim-bench train "),
+  EXPECT_NE(wtext.find("error: " + untrainable.string() +
+                       " is a training file: train it with `crowdsim-bench train " +
+                       untrainable.string() + "`"),
             std::string::npos)
       << wtext;
+  EXPECT_EQ(wtext.find("unknown key"), std::string::npos) << wtext;
   auto [xrc, xtext] = Shell("timeout 120 " + exe + " train " + suite.string() + " --quiet");
   EXPECT_EQ(xrc, 2) << xtext;
-  EXPECT_NE(xtext.find("is a suite: run it with `crowdsim-bench run "), std::string::npos) << xtext;
+  EXPECT_NE(xtext.find("error: " + suite.string() +
+                       " is a suite: run it with `crowdsim-bench run " + suite.string() + "`"),
+            std::string::npos)
+      << xtext;
+  EXPECT_EQ(xtext.find("unknown key"), std::string::npos) << xtext;
+  auto [yrc, ytext] =
+      Shell("timeout 120 " + exe + " train-all " + train_file + " " + suite.string() + " --quiet");
+  EXPECT_EQ(yrc, 2) << ytext;
+  EXPECT_NE(ytext.find(suite.string() + " is a suite: run it with `crowdsim-bench run "),
+            std::string::npos)
+      << ytext;
+  EXPECT_EQ(ytext.find("unknown key"), std::string::npos) << ytext;
 
   // One kind of output per folder: a training does not write into a run's folder (`out`
   // holds the run above), nor a run into a training's (timeout: a failure must not train).
