@@ -135,7 +135,9 @@ void ReadRow(Reader& r, const YAML::Node& n, size_t index, const RowDefaults& d,
   if (!r.IsMap(n, path, "policy, sensors, ...")) return;
   std::vector<std::string> keys = {"label"};
   keys.insert(keys.end(), kRowSpecKeys.begin(), kRowSpecKeys.end());
-  keys.insert(keys.end(), {"info", "reference"});
+  // `sweep` is expanded into rows before they are read (ExpandSweeps), so no row read here has
+  // it; it is named among the valid keys for a misspelled one (`swep:`).
+  keys.insert(keys.end(), {"sweep", "info", "reference"});
   r.CheckKeys(n, path, keys);
   ReadRowSpec(r, n, path, d, kSuiteRowRules, base, row);
   row->label = n["label"] ? n["label"].Scalar() : row->policy.plugin;

@@ -394,6 +394,29 @@ TEST_F(SuiteValidation, RobotMapWithoutSensorsIsAnErrorNotACrash) {
   EXPECT_TRUE(empty.suite) << All(empty);
 }
 
+// A misspelled row key is told every key a row may have: `sweep` too (it is expanded into rows
+// before they are read, and the list left it out, so `swep:` was never told of it).
+TEST_F(SuiteValidation, AMisspelledRowKeyListsEveryRowKeySweepToo) {
+  auto r = Load(
+      "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "rows:\n  - {label: a, policy: linear, swep: {humans.count: [1, 2]}}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r,
+                 "suite.yaml:5:32: rows[0].swep: unknown key 'swep' (valid keys: label, policy, "
+                 "params, weights, sensors, world, humans, sweep, info, reference)"),
+            "")
+      << All(r);
+  // The other keys of that list are a row's (weights: WrongKindAndWeightsWithoutParameter): a
+  // row giving them all loads.
+  auto all = Load(
+      "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "rows:\n  - label: a\n    policy: linear\n    params: {speed_factor: 0.5}\n"
+      "    sensors: [person]\n    world: {source: random_rect, obstacles: 3, split: test}\n"
+      "    humans: {count: 2}\n    sweep: {humans.count: [1, 2]}\n    info: {m: x}\n"
+      "    reference: {success: 0.5}\n");
+  EXPECT_TRUE(all.suite) << All(all);
+}
+
 // Suites and training files share the row reader; a count range is a training file's (drawn
 // per episode), and a suite row that gives one is told what to write instead.
 TEST_F(SuiteValidation, AHumanCountRangeIsForTrainingFiles) {
