@@ -83,6 +83,21 @@ std::filesystem::path Params::ResolvePath(const std::string& value) const {
   return base_dir_ / p;
 }
 
+std::string Params::MissingFile(const std::string& value) const {
+  const std::filesystem::path p(value);
+  if (p.is_absolute()) return "'" + value + "' does not exist";
+  std::string places;
+  if (base_dir_.empty()) {
+    places = "the working folder";  // no suite folder: ResolvePath looks only there
+  } else if (base_dir_ == ".") {
+    places = "the suite's folder (the working folder) and " + DataRoot().string();
+  } else {
+    places = "the suite's folder " + base_dir_.string() + ", the working folder and " +
+             DataRoot().string();
+  }
+  return "'" + value + "' not found (looked in " + places + ")";
+}
+
 Params Params::Defaults(const ParamSchema& schema, std::filesystem::path base_dir) {
   std::map<std::string, ParamValue> values;
   for (const auto& spec : schema) values[spec.name] = spec.default_value;

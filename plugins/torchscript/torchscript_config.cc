@@ -1,5 +1,6 @@
 #include "torchscript_config.h"
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace crowdsim::torchscript {
@@ -97,6 +98,11 @@ TorchScriptConfig ConfigFromParams(const Params& params) {
         "(row key `weights: model.pt`, written by torch.jit.script(model).save('model.pt'))");
   }
   c.weights = params.ResolvePath(w).string();
+  if (!std::filesystem::exists(c.weights)) {  // named with every place ResolvePath looked in
+    throw std::runtime_error("torchscript: weights file " + params.MissingFile(w) +
+                             "; export the policy with torch.jit.script(model).save(path) and "
+                             "name that file in `weights`");
+  }
   c.sensors = params.GetString("sensors");
   c.humans = static_cast<int>(params.GetInt("humans"));
   c.lidar_beams = static_cast<int>(params.GetInt("lidar_beams"));

@@ -1066,6 +1066,28 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
             std::string::npos)
       << text;
   EXPECT_FALSE(fs::exists(out / "episodes.csv"));
+
+  // A relative weights file in none of the places a path is looked for: named as the row
+  // wrote it, with each of those places (it named only its path in the suite's folder,
+  // my/results/models/nothere/best.pt, as if that were the one place looked in).
+  fs::create_directories(dir_.path() / "my");
+  dir_.Write("my/x.yaml",
+             "name: x\nepisodes: 2\nseed: 1\nworld: {source: crowdnav, scenario: "
+             "circle_crossing}\nhumans: {count: 5, policy: orca}\nrobot: {sensors: [person]}\n"
+             "rows:\n  - {label: nothere, policy: cadrl, weights: results/models/nothere/best.pt, "
+             "params: " +
+                 cadrl_params + "}\n");
+  const char* data_dir = std::getenv("CROWDSIM_DATA_DIR");
+  const std::string data_root =
+      data_dir != nullptr && *data_dir != '\0' ? data_dir : testing::SourceDir().string();
+  auto [nrc, ntext] = Shell("cd " + dir_.path().string() + " && " + exe + " validate my/x.yaml");
+  EXPECT_EQ(nrc, 2) << ntext;
+  EXPECT_NE(ntext.find("row 'nothere' (rows[0]): "), std::string::npos) << ntext;
+  EXPECT_NE(ntext.find("weights file 'results/models/nothere/best.pt' not found (looked in the "
+                       "suite's folder my, the working folder and " +
+                       data_root + "); train one with `crowdsim-bench train`"),
+            std::string::npos)
+      << ntext;
 }
 
 TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include "crowdsim/data_root.h"
+
 namespace crowdsim {
 namespace {
 
@@ -72,6 +74,23 @@ TEST_F(ResolvePathTest, ThenTheDataRoot) {
   } else {
     ::unsetenv("CROWDSIM_DATA_DIR");
   }
+}
+
+TEST_F(ResolvePathTest, AMissingFileIsNamedWithEveryPlaceLookedIn) {
+  // As ResolvePath looks: the suite's folder, the working folder, the data root, in that order
+  // (the missing file's suite-folder path alone read as if that were the one place).
+  const std::string root = DataRoot().string();
+  EXPECT_EQ(Params({}, "my").MissingFile("results/models/nothere/best.pt"),
+            "'results/models/nothere/best.pt' not found (looked in the suite's folder my, the "
+            "working folder and " +
+                root + ")");
+  EXPECT_EQ(
+      Params({}, ".").MissingFile("a.pt"),
+      "'a.pt' not found (looked in the suite's folder (the working folder) and " + root + ")");
+  // No suite folder: ResolvePath looks in the working folder only.
+  EXPECT_EQ(Params().MissingFile("a.pt"), "'a.pt' not found (looked in the working folder)");
+  // An absolute path is looked for where it says.
+  EXPECT_EQ(Params({}, "my").MissingFile("/abs/a.pt"), "'/abs/a.pt' does not exist");
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "crowdsim/data_root.h"
 #include "crowdsim/human_placement.h"
 #include "crowdsim/rng.h"
 
@@ -44,10 +43,8 @@ FloorplanWorld::FloorplanWorld(const Params& params)
   const std::string value = params.GetString("file");
   const std::filesystem::path path = params.ResolvePath(value);  // suite, working, data folder
   if (!std::filesystem::exists(path)) {
-    throw std::runtime_error("floorplan: world '" + value +
-                             "' not found (looked in the suite's folder, the working folder and " +
-                             DataRoot().string() +
-                             "); import one with `crowdsim-bench floorplan import`");
+    throw std::runtime_error("floorplan: world " + params.MissingFile(value) +
+                             "; import one with `crowdsim-bench floorplan import`");
   }
   WorldFile world = ReadWorldFile(path);
   pairs_ = split_ == "train" ? world.train_pairs : world.test_pairs;

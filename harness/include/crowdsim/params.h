@@ -58,6 +58,11 @@ class Params {
   /// DataRoot() (an installed suite's shipped weights); when none holds the file, the base_dir
   /// path (what a "does not exist" error should name).
   std::filesystem::path ResolvePath(const std::string& value) const;
+  /// The error text for a path value ResolvePath found in none of its places, naming each place
+  /// it looked in, in its order: "'VALUE' not found (looked in the suite's folder DIR, the
+  /// working folder and DATA_ROOT)"; an absolute path: "'VALUE' does not exist". A plugin writes
+  /// "weights file " + MissingFile(value) + "; train one with ...".
+  std::string MissingFile(const std::string& value) const;
 
   /// Schema defaults only (for tests and tools).
   static Params Defaults(const ParamSchema& schema, std::filesystem::path base_dir = {});

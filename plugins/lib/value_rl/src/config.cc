@@ -1,5 +1,6 @@
 #include "value_rl/config.h"
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace crowdsim::value_rl {
@@ -164,7 +165,15 @@ ValueRlConfig ConfigFromParams(Model model, const Params& params) {
   c.init_seed = static_cast<std::uint64_t>(params.GetInt("init_seed"));
   c.torch_threads = static_cast<int>(params.GetInt("torch_threads"));
   const std::string& w = params.GetString("weights");
-  if (!w.empty()) c.weights = params.ResolvePath(w).string();
+  if (!w.empty()) {
+    c.weights = params.ResolvePath(w).string();
+    // Named with every place ResolvePath looked in (the missing path alone named only the
+    // suite's folder).
+    if (!std::filesystem::exists(c.weights)) {
+      throw std::runtime_error("weights file " + params.MissingFile(w) +
+                               "; train one with `crowdsim-bench train`");
+    }
+  }
   return c;
 }
 
