@@ -108,7 +108,13 @@ int Import(const std::vector<std::string>& args) {
                        (std::filesystem::path(*path) / "plan.yaml").string() + ")");
     }
   }
-  const ImportResult r = ImportFloorplan(a.positional[0], o);
+  const ImportResult r = [&] {
+    try {
+      return ImportFloorplan(a.positional[0], o);
+    } catch (const FloorplanOptionError& e) {
+      throw UsageError(e.what());  // an option missing (--resolution): exit 2, with the usage
+    }
+  }();
   if (mask_png) CreateFolderOf("--mask-png", *mask_png);
   CreateFolderOf("--out", *out);
   if (mask_png) WritePng(r.mask, *mask_png);

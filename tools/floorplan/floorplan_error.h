@@ -11,4 +11,11 @@ class FloorplanError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// An import that a missing command-line option stops (a plain image without --resolution):
+/// `floorplan import` reports it as a usage error, exit 2, as its help says of usage errors.
+class FloorplanOptionError : public FloorplanError {
+ public:
+  using FloorplanError::FloorplanError;
+};
+
 }  // namespace crowdsim::floorplan

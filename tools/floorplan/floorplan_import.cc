@@ -84,9 +84,11 @@ double ResolveResolution(const std::filesystem::path& image, const ImportOptions
   } else if (named_decimetre || kind == PlanKind::kNavmesh) {
     res = 0.1;
   } else {
-    Fail(image, "unknown resolution: pass --resolution M_PER_PX, or put maps_metadata/" +
-                    image.stem().string() +
-                    ".yaml (with 'scale: M_PER_PX') next to the maps folder");
+    throw FloorplanOptionError(image.string() +
+                               ": unknown resolution: pass --resolution M_PER_PX, or put "
+                               "maps_metadata/" +
+                               image.stem().string() +
+                               ".yaml (with 'scale: M_PER_PX') next to the maps folder");
   }
   if (!(res >= 0.005 && res <= 2.0 * o.cell_size)) {
     Fail(image, "resolution " + Num(res) + " m/px is out of range [0.005, " +

@@ -52,6 +52,17 @@ TEST(FloorplanCliTest, OptionsOutOfRangeAndOutputsAreUsageErrorsThatWriteNothing
                              "--min-distance -1", "--agent-radius 0"}) {
     EXPECT_EQ(Floorplan("import " + plan + " " + option + " --out " + out.string()), 2) << option;
   }
+  // A plain image needs its scale: without --resolution (and no maps_metadata, no _0.1m name)
+  // a usage error as the help says, with what to pass (it exited 1, as a failed import).
+  const auto bin = crowdsim::testing::BinaryDir() / "bin" / "crowdsim-bench";
+  auto [rc, text] = Shell(bin.string() + " floorplan import " +
+                          testing::WriteRoomPlan(dir.path()).string() + " --out " + out.string());
+  EXPECT_EQ(rc, 2) << text;
+  EXPECT_NE(text.find("room.pgm: unknown resolution: pass --resolution M_PER_PX"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("usage:"), std::string::npos) << text;
+  EXPECT_FALSE(std::filesystem::exists(out));
   // --out naming a folder: a usage error, no stray temporary file beside it.
   std::filesystem::create_directories(dir.path() / "folder");
   EXPECT_EQ(Floorplan("import " + plan + " --out " + (dir.path() / "folder").string()), 2);
