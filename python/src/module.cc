@@ -188,19 +188,6 @@ py::tuple TimeFixedVelocitySteps(const std::string& suite_path, const py::object
   return py::make_tuple(steps, wall.count());
 }
 
-// A run's message in the package's words: the CLI's options are keyword arguments here.
-std::string InPythonTerms(std::string message) {
-  for (const auto& [cli, python] : {std::pair<std::string, std::string>{"--fresh", "fresh=True"},
-                                    {"--out ", "out="},
-                                    {"--episodes ", "episodes="}}) {
-    for (auto at = message.find(cli); at != std::string::npos; at = message.find(cli, at)) {
-      message.replace(at, cli.size(), python);
-      at += python.size();
-    }
-  }
-  return message;
-}
-
 // RunSuite with the GIL released (a Python policy's Decide takes it back for each decision);
 // Ctrl-C stops it between episodes and is raised again here, with the episodes that finished
 // kept; its other errors become ValueError.

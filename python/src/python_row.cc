@@ -1,8 +1,24 @@
 #include "python_row.h"
 
+#include <utility>
+
 namespace py = pybind11;
 
 namespace crowdsim::python {
+
+std::string InPythonTerms(std::string message) {
+  for (const auto& [cli, python] : {std::pair<std::string, std::string>{"--fresh", "fresh=True"},
+                                    {"--out ", "out="},
+                                    {"--episodes ", "episodes="},
+                                    {"no --set", "no set="},  // a run's overrides (manifest)
+                                    {"--set ", "set="}}) {
+    for (auto at = message.find(cli); at != std::string::npos; at = message.find(cli, at)) {
+      message.replace(at, cli.size(), python);
+      at += python.size();
+    }
+  }
+  return message;
+}
 
 Suite LoadSuiteOrThrow(const std::string& path, PluginRegistry& registry,
                        const std::vector<std::string>& set) {
@@ -13,7 +29,7 @@ Suite LoadSuiteOrThrow(const std::string& path, PluginRegistry& registry,
       if (!msg.empty()) msg += '\n';
       msg += e.Format();  // appended: GCC 12 warned (-Wrestrict, falsely) on "\n" + text
     }
-    throw py::value_error(msg);
+    throw py::value_error(InPythonTerms(msg));
   }
   return std::move(*r.suite);
 }

@@ -14,7 +14,13 @@
 
 namespace crowdsim::python {
 
-/// Reads a suite file (with --set style overrides); its errors become ValueError.
+/// A message of the core in the package's words: the CLI's options are keyword arguments here
+/// (--set X: set=X, no --set: no set=, --out DIR: out=DIR, --episodes N: episodes=N, --fresh:
+/// fresh=True).
+std::string InPythonTerms(std::string message);
+
+/// Reads a suite file (with --set style overrides); its errors become ValueError, in the
+/// package's words (an override's error names set=, not --set).
 Suite LoadSuiteOrThrow(const std::string& path, PluginRegistry& registry,
                        const std::vector<std::string>& set);
 

@@ -419,6 +419,18 @@ class UserMistakes(unittest.TestCase):
         with self.assertRaisesRegex(TypeError, "key.path=value"):
             cb.Env(QUICK, row="orca", set=["humans.count=3", 4])
 
+    def test_a_bad_set_is_named_as_the_python_argument(self):
+        # It said "--set humans.cout=3: ...", the CLI's option, to a caller who wrote set=.
+        with tempfile.TemporaryDirectory() as out:
+            for call in (lambda: cb.run_suite(QUICK, out=out, episodes=1, set="humans.cout=3"),
+                         lambda: cb.Env(QUICK, row="orca", set=["humans.cout=3"])):
+                with self.assertRaises(ValueError) as caught:
+                    call()
+                msg = str(caught.exception)
+                self.assertIn("set=humans.cout=3: humans.cout: unknown key 'cout'", msg)
+                self.assertNotIn("--set", msg)
+            self.assertFalse(os.listdir(out))  # nothing ran
+
     def test_counts_out_of_range_are_refused_as_by_the_cli(self):
         with tempfile.TemporaryDirectory() as out:
             for episodes in (0, -5, 2.5, True):
