@@ -76,9 +76,10 @@ double ResolveResolution(const std::filesystem::path& image, const ImportOptions
   const bool named_decimetre = EndsWith(image.stem().string(), "_0.1m");
   double res = o.source_resolution;
   if (res > 0.0) {
-    if (named_decimetre && std::abs(res - 0.1) > 1e-9) {
-      Fail(image, "the file name says 0.1 m per pixel but --resolution is " + Num(res) +
-                      " (drop --resolution, or rename the file)");
+    if (named_decimetre && std::abs(res - 0.1) > 1e-9) {  // the option is wrong: exit 2
+      throw FloorplanOptionError(image.string() +
+                                 ": the file name says 0.1 m per pixel but --resolution is " +
+                                 Num(res) + " (drop --resolution, or rename the file)");
     }
   } else if ((res = MetadataResolution(image)) > 0.0) {
   } else if (named_decimetre || kind == PlanKind::kNavmesh) {
@@ -91,8 +92,12 @@ double ResolveResolution(const std::filesystem::path& image, const ImportOptions
                                ".yaml (with 'scale: M_PER_PX') next to the maps folder");
   }
   if (!(res >= 0.005 && res <= 2.0 * o.cell_size)) {
-    Fail(image, "resolution " + Num(res) + " m/px is out of range [0.005, " +
-                    Num(2.0 * o.cell_size) + "] (check --resolution: metres per pixel)");
+    const std::string what = "resolution " + Num(res) + " m/px is out of range [0.005, " +
+                             Num(2.0 * o.cell_size) + "] (check --resolution: metres per pixel)";
+    // Given as --resolution: the option is wrong (exit 2); read from the map's metadata: the
+    // import fails on its data (exit 1).
+    if (o.source_resolution > 0.0) throw FloorplanOptionError(image.string() + ": " + what);
+    Fail(image, what);
   }
   return res;
 }

@@ -63,6 +63,20 @@ TEST(FloorplanCliTest, OptionsOutOfRangeAndOutputsAreUsageErrorsThatWriteNothing
       << text;
   EXPECT_NE(text.find("usage:"), std::string::npos) << text;
   EXPECT_FALSE(std::filesystem::exists(out));
+  // A --resolution out of range, or one that contradicts a *_0.1m name: the option is
+  // wrong, a usage error too (both exited 1).
+  EXPECT_EQ(Floorplan("import " + testing::WriteRoomPlan(dir.path()).string() +
+                      " --resolution 50 --out " + out.string()),
+            2);
+  const auto decimetre = dir.path() / "flat_0.1m.pgm";
+  std::filesystem::copy_file(testing::WriteRoomPlan(dir.path()), decimetre);
+  auto [drc, dtext] = Shell(bin.string() + " floorplan import " + decimetre.string() +
+                            " --resolution 0.05 --out " + out.string());
+  EXPECT_EQ(drc, 2) << dtext;
+  EXPECT_NE(dtext.find("the file name says 0.1 m per pixel but --resolution is 0.05"),
+            std::string::npos)
+      << dtext;
+  EXPECT_FALSE(std::filesystem::exists(out));
   // --out naming a folder: a usage error, no stray temporary file beside it.
   std::filesystem::create_directories(dir.path() / "folder");
   EXPECT_EQ(Floorplan("import " + plan + " --out " + (dir.path() / "folder").string()), 2);
