@@ -94,6 +94,26 @@ TEST_F(PersonPlugin, MaxRangeDropsFarHumansAndKeepsOrder) {
   EXPECT_EQ(r.people[2].velocity, Vec2(1, 0));
 }
 
+// A limited sensor whose reuse of the reading grows it (more in range than it held) and shrinks
+// it again: everybody in range, in the crowd's order, nothing left over.
+TEST_F(PersonPlugin, ALimitedReadingGrowsAndShrinksWithTheCrowdInRange) {
+  auto sensor = Make(3.0);
+  std::vector<AgentState> humans;
+  for (int i = 0; i < 6; ++i) humans.push_back(Human(Vec2(0.4 * i, 0.1), Vec2(i, 0), 0.3));
+  AgentState robot;
+  const Frame frame = Frame::Make(Vec2::Zero(), 0.0);
+  SensorReading reading;
+  reading.people.resize(2);  // fewer than will be in range
+  sensor->Sense(SenseInput{robot, frame, humans, world_}, &reading);
+  ASSERT_EQ(reading.people.size(), 6u);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(reading.people[i].velocity, Vec2(i, 0)) << i;
+  humans[1].position = Vec2(5, 0);  // out of range now
+  sensor->Sense(SenseInput{robot, frame, humans, world_}, &reading);
+  ASSERT_EQ(reading.people.size(), 5u);
+  EXPECT_EQ(reading.people[1].velocity, Vec2(2, 0));
+  EXPECT_EQ(reading.people[4].velocity, Vec2(5, 0));
+}
+
 TEST_F(PersonPlugin, NoHumansNoPeople) {
   auto sensor = Make(0.0);
   const SensorReading r = Sense(*sensor, Vec2(0, 0), 0.0, {});
