@@ -11,6 +11,7 @@
 
 #include "commands.h"
 #include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/results.h"
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/bench/training/train_spec.h"
@@ -117,11 +118,9 @@ void PrintTitle(const Suite& suite, const std::string& this_run) {
 std::string ThisRun(const Args& a) {
   std::string text;
   if (auto episodes = a.Get("--episodes")) text = "--episodes " + *episodes;
-  for (const std::string& set : a.All("--set")) {
-    if (!text.empty()) text += ' ';
-    text += "--set ";
-    text += set;
-  }
+  const std::string sets = SetOptionsText(a.All("--set"));
+  if (!sets.empty() && !text.empty()) text += ' ';
+  text += sets;
   return text;
 }
 

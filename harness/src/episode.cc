@@ -91,26 +91,18 @@ std::string PolicyName(int human) {
                    : "human " + std::to_string(human) + "'s policy";
 }
 
-[[gnu::noinline, gnu::cold]] void CheckSpeedExactly(const Vec2& velocity, double v_pref,
-                                                    int human) {
-  const double limit = kMaxSpeedFactor * v_pref;
-  const double speed = velocity.norm();
-  if (speed > limit) {
-    char buf[160];
-    std::snprintf(buf, sizeof(buf),
-                  " returned %.4g m/s, more than %.0f x v_pref (%.4g m/s): an action is "
-                  "the velocity for the next step, in m/s",
-                  speed, kMaxSpeedFactor, kMaxSpeedFactor * v_pref);
-    throw std::runtime_error(PolicyName(human) + buf);
-  }
+[[gnu::noinline, gnu::cold]] void ThrowTooFast(const Vec2& velocity, double v_pref, int human) {
+  char buf[160];
+  std::snprintf(buf, sizeof(buf),
+                " returned %.4g m/s, more than %.0f x v_pref (%.4g m/s): an action is "
+                "the velocity for the next step, in m/s",
+                velocity.norm(), kMaxSpeedFactor, kMaxSpeedFactor * v_pref);
+  throw std::runtime_error(PolicyName(human) + buf);
 }
 
 inline void CheckSpeed(const Vec2& velocity, double v_pref, int human) {
-  // Nearly every action is well below the limit: squares decide those without a square root
-  // (the margin covers the rounding of both squares); the exact test is kept for the rest.
-  const double limit = kMaxSpeedFactor * v_pref;
-  if (velocity.squaredNorm() < 0.98 * limit * limit) return;
-  CheckSpeedExactly(velocity, v_pref, human);
+  // Nearly every action is well below the limit: squares decide those without a square root.
+  if (NormAbove(velocity, kMaxSpeedFactor * v_pref)) ThrowTooFast(velocity, v_pref, human);
 }
 
 }  // namespace

@@ -259,12 +259,17 @@ std::string DescribeRunInputsDifference(const std::string& suite_a,
     text += "; suite files " + suite_a + " and " + suite_b;
   }
   auto joined = [](const std::vector<std::string>& sets) {
-    std::string all;
-    for (const std::string& s : sets) all += (all.empty() ? "--set " : " --set ") + s;
+    const std::string all = SetOptionsText(sets);
     return all.empty() ? std::string("no --set") : all;
   };
   if (set_a != set_b) text += "; run with " + joined(set_a) + " and with " + joined(set_b);
   return text;
+}
+
+std::string SetOptionsText(const std::vector<std::string>& sets) {
+  std::string all;
+  for (const std::string& s : sets) all += (all.empty() ? "--set " : " --set ") + s;
+  return all;
 }
 
 std::string ShardName(const std::string& shard) {

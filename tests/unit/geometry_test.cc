@@ -99,6 +99,7 @@ TEST(NormBelow, EqualsTheSquareRootTestEverywhere) {
       }
     }
     ASSERT_EQ(NormBelow(d, limit), d.norm() < limit) << d.transpose() << " limit " << limit;
+    ASSERT_EQ(NormAbove(d, limit), d.norm() > limit) << d.transpose() << " limit " << limit;
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // Limits whose squares are subnormal or overflow, and a vector at each within an ulp or two.
@@ -110,12 +111,14 @@ TEST(NormBelow, EqualsTheSquareRootTestEverywhere) {
         d.y() = std::nextafter(d.y(), step > 0 ? kInfinity : -kInfinity);
       }
       EXPECT_EQ(NormBelow(d, limit), d.norm() < limit) << d.transpose() << " limit " << limit;
+      EXPECT_EQ(NormAbove(d, limit), d.norm() > limit) << d.transpose() << " limit " << limit;
     }
   }
   for (const double limit : {0.0, -1.0, 0.3, kInfinity, nan}) {
     for (const Vec2& d : {Vec2(0, 0), Vec2(0.3, 0), Vec2(0, -0.3), Vec2(nan, 0), Vec2(kInfinity, 0),
                           Vec2(1e200, 1e200), Vec2(1e-200, 0)}) {
       EXPECT_EQ(NormBelow(d, limit), d.norm() < limit) << d.transpose() << " limit " << limit;
+      EXPECT_EQ(NormAbove(d, limit), d.norm() > limit) << d.transpose() << " limit " << limit;
     }
   }
 }

@@ -45,16 +45,25 @@ struct Circle {
 /// z of the 3D cross product of two plane vectors.
 inline double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-/// Exactly `d.norm() < limit`, decided on squares where they cannot disagree with it (2% from
-/// the limit is far more than the rounding of both squares), the square root only near it.
+/// Where |d| lies against `limit` (> 0) as far as squares alone can tell: -1 below, +1 above, 0
+/// within 2% of it, where only the square root decides (2% is far more than the rounding of
+/// both squares).
+inline int NormSideBySquares(const Vec2& d, double limit) {
+  const double sq = d.squaredNorm();
+  const double limit_sq = limit * limit;
+  return sq < 0.98 * limit_sq ? -1 : (sq > 1.02 * limit_sq ? 1 : 0);
+}
+
+/// Exactly `d.norm() < limit`, the square root only near the limit.
 inline bool NormBelow(const Vec2& d, double limit) {
-  if (limit > 0.0) {
-    const double sq = d.squaredNorm();
-    const double limit_sq = limit * limit;
-    if (sq < 0.98 * limit_sq) return true;
-    if (sq > 1.02 * limit_sq) return false;
-  }
-  return d.norm() < limit;
+  const int side = limit > 0.0 ? NormSideBySquares(d, limit) : 0;
+  return side != 0 ? side < 0 : d.norm() < limit;
+}
+
+/// Exactly `d.norm() > limit`, the square root only near the limit.
+inline bool NormAbove(const Vec2& d, double limit) {
+  const int side = limit > 0.0 ? NormSideBySquares(d, limit) : 0;
+  return side != 0 ? side > 0 : d.norm() > limit;
 }
 
 /// Distance from point p to segment a-b (CrowdNav's point_to_segment_dist).

@@ -43,13 +43,6 @@ std::size_t TableEpisodes(const ReportInputs& in) {
   return total;
 }
 
-// The run's --set overrides as the command line gave them.
-std::string JoinOverrides(const std::vector<std::string>& overrides) {
-  std::string text;
-  for (const std::string& o : overrides) text += (text.empty() ? "--set " : " --set ") + o;
-  return text;
-}
-
 // The document head, the suite's name and description, and where the results come from.
 void WriteHeader(std::ostream& html, const ReportInputs& in) {
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
@@ -66,7 +59,7 @@ void WriteHeader(std::ostream& html, const ReportInputs& in) {
     html << " (episodes.csv holds " << in.episodes.lines.size()
          << ", kept from a longer run for a resume)";
   }
-  const std::string overrides = JoinOverrides(ReadManifestStrings(in.manifest, "overrides"));
+  const std::string overrides = SetOptionsText(ReadManifestStrings(in.manifest, "overrides"));
   if (!overrides.empty()) html << " · run with " << XmlEscape(overrides);
   for (const char* key : {"git_commit", "finished_utc", "config_hash"}) {
     const std::string v = ReadManifestField(in.manifest, key);

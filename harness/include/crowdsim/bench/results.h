@@ -74,6 +74,9 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
 
 /// A string field, e.g. "config_hash", "git_commit" ("" if absent).
 std::string ReadManifestField(const std::filesystem::path& path, const std::string& key);
+/// A run's overrides (the manifest's "overrides") as the command line gives them: "--set A
+/// --set B", "" for none.
+std::string SetOptionsText(const std::vector<std::string>& sets);
 /// A list of strings, e.g. "overrides" (empty if absent; non-strings in it are skipped).
 std::vector<std::string> ReadManifestStrings(const std::filesystem::path& path,
                                              const std::string& key);
