@@ -9,7 +9,7 @@ endif()
 
 if(CROWDSIM_BUILD_TESTS)
   foreach(test orca_solver_test orca_scenarios_test orca_guidance_test orca_plugin_test
-               orca_rect_index_test)
+               orca_rect_index_test orca_agent_lines_test)
     crowdsim_add_gtest(${test} unit
       SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/orca/${test}.cc
       LIBS crowdsim_orca_solver crowdsim_orca_test_sim)

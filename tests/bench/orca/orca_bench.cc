@@ -1,6 +1,6 @@
-// ORCA costs: one decision in a typical CrowdSim++ scene, the obstacle query, the roadmap's
-// path search, one step of RVO2's Blocks, and one decision of the loaded plugin (guidance
-// included).
+// ORCA costs: one decision in a typical CrowdSim++ scene, its agent lines (scalar and AVX2),
+// the obstacle query, the roadmap's path search, one step of RVO2's Blocks, and one decision of
+// the loaded plugin (guidance included).
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -12,6 +12,7 @@
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/bench/plugin_registry.h"
+#include "orca/agent_lines.h"
 #include "orca/geometry.h"
 #include "orca/obstacles.h"
 #include "orca/roadmap.h"
@@ -54,6 +55,35 @@ void BM_OrcaDecision5Neighbours7Rects(benchmark::State& state) {
   state.counters["obstacle_lines"] = static_cast<double>(info.num_obstacle_lines);
 }
 BENCHMARK(BM_OrcaDecision5Neighbours7Rects);
+
+// The agent lines alone (avx2: 0 one neighbour at a time, 1 four at a time in AVX2 lanes) for
+// the first 4 or all 5 neighbours above, or 10 (two copies): a CrowdNav human has 4, its robot
+// 5, a human of a larger crowd RVO2's 10.
+void BM_AgentLines(benchmark::State& state) {
+  const bool vector = state.range(0) == 1;
+  if (vector && !HaveAvx2()) {
+    state.SkipWithError("this processor runs no AVX2");
+    return;
+  }
+  const std::vector<OrcaAgent> five = FiveNeighbours();
+  std::vector<OrcaAgent> neighbours;
+  while (neighbours.size() < static_cast<std::size_t>(state.range(1))) {
+    neighbours.push_back(five[neighbours.size() % five.size()]);
+  }
+  const OrcaAgent self{Vec2::Zero(), Vec2(0.8, 0.2), 0.31};
+  const OrcaParams params{5.0, 5.0, 1.0};
+  std::vector<OrcaLine> lines(neighbours.size());
+  for (auto _ : state) {
+    if (vector) {
+      AddAgentLinesAvx2(self, neighbours, params, 0.25, lines.data());
+    } else {
+      AddAgentLinesScalar(self, neighbours, params, 0.25, lines.data());
+    }
+    benchmark::DoNotOptimize(lines.data());
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_AgentLines)->ArgNames({"avx2", "neighbours"})->ArgsProduct({{0, 1}, {4, 5, 10}});
 
 // `count` boxes with sides of 0.5-1.5 m at random places of the square [0, side]^2.
 std::vector<Rect> ScatteredBoxes(int count, double side, std::mt19937& rng) {

@@ -3,29 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "orca/agent_lines.h"
 #include "orca/geometry.h"
 
 namespace crowdsim::orca {
 namespace {
-
-// Unit vector along w, or a fixed direction when w vanishes (two agents on the same spot
-// with the same velocity), so that no NaN ever reaches the linear program.
-Vec2 UnitOr(const Vec2& w, double length) {
-  return length > 0.0 ? Vec2(w / length) : Vec2::UnitX();
-}
-
-// Left / right tangent directions from the origin to the disc of `radius` around `p`
-// (|p| > radius): the legs of a velocity obstacle.
-Vec2 LeftTangent(const Vec2& p, double radius) {
-  const double dist_sq = p.squaredNorm();
-  const double leg = std::sqrt(std::max(0.0, dist_sq - radius * radius));
-  return Vec2(p.x() * leg - p.y() * radius, p.x() * radius + p.y() * leg) / dist_sq;
-}
-Vec2 RightTangent(const Vec2& p, double radius) {
-  const double dist_sq = p.squaredNorm();
-  const double leg = std::sqrt(std::max(0.0, dist_sq - radius * radius));
-  return Vec2(p.x() * leg + p.y() * radius, -p.x() * radius + p.y() * leg) / dist_sq;
-}
 
 // Left normal: the feasible side of a line through `point` along `direction`, moved out by
 // `offset`.
@@ -157,47 +139,6 @@ void AddObstacleLines(const OrcaAgent& self, const OrcaObstacles& obstacles,
     } else {
       if (!right_foreign) lines->push_back(ShiftedLine(right_cutoff, -right_leg, r * inv_tau));
     }
-  }
-}
-
-// One line per neighbour, written to out[0 .. neighbours.size()).
-void AddAgentLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
-                   const OrcaParams& params, double time_step, OrcaLine* out) {
-  const double inv_tau = 1.0 / params.time_horizon;
-  for (const OrcaAgent& other : neighbours) {
-    const Vec2 p = other.position - self.position;
-    const Vec2 v_rel = self.velocity - other.velocity;
-    const double dist_sq = p.squaredNorm();
-    const double combined = self.radius + other.radius;
-    const double combined_sq = combined * combined;
-
-    Vec2 direction;
-    Vec2 u;  // smallest change of v_rel that leaves the velocity obstacle
-    if (dist_sq > combined_sq) {
-      const Vec2 w = v_rel - inv_tau * p;  // from the cut-off centre to v_rel
-      const double w_len_sq = w.squaredNorm();
-      const double dot = w.dot(p);
-      if (dot < 0.0 && dot * dot > combined_sq * w_len_sq) {
-        // Nearest boundary point is on the cut-off circle.
-        const double w_len = std::sqrt(w_len_sq);
-        const Vec2 unit_w = w / w_len;
-        direction = Vec2(unit_w.y(), -unit_w.x());
-        u = (combined * inv_tau - w_len) * unit_w;
-      } else {
-        // Nearest boundary point is on a leg.
-        direction = Det(p, w) > 0.0 ? LeftTangent(p, combined) : Vec2(-RightTangent(p, combined));
-        u = v_rel.dot(direction) * direction - v_rel;
-      }
-    } else {
-      // Already overlapping: separate within one time step.
-      const double inv_dt = 1.0 / time_step;
-      const Vec2 w = v_rel - inv_dt * p;
-      const double w_len = w.norm();
-      const Vec2 unit_w = UnitOr(w, w_len);
-      direction = Vec2(unit_w.y(), -unit_w.x());
-      u = (combined * inv_dt - w_len) * unit_w;
-    }
-    *out++ = {self.velocity + 0.5 * u, direction};
   }
 }
 

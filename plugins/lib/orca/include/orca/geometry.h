@@ -2,6 +2,8 @@
 // depends only on the core's types, not on the collision code.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <span>
 
 #include "crowdsim/geometry.h"
@@ -16,6 +18,25 @@ inline double Det(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() *
 
 /// Positive iff c lies left of the directed line a -> b (twice the signed triangle area).
 inline double LeftOf(const Vec2& a, const Vec2& b, const Vec2& c) { return Det(a - c, b - a); }
+
+/// Unit vector along w (of norm `length`), or a fixed direction when w vanishes (two agents on
+/// the same spot with the same velocity), so that no NaN ever reaches the linear program.
+inline Vec2 UnitOr(const Vec2& w, double length) {
+  return length > 0.0 ? Vec2(w / length) : Vec2::UnitX();
+}
+
+/// Left / right tangent directions from the origin to the disc of `radius` around `p`
+/// (|p| > radius): the legs of a velocity obstacle.
+inline Vec2 LeftTangent(const Vec2& p, double radius) {
+  const double dist_sq = p.squaredNorm();
+  const double leg = std::sqrt(std::max(0.0, dist_sq - radius * radius));
+  return Vec2(p.x() * leg - p.y() * radius, p.x() * radius + p.y() * leg) / dist_sq;
+}
+inline Vec2 RightTangent(const Vec2& p, double radius) {
+  const double dist_sq = p.squaredNorm();
+  const double leg = std::sqrt(std::max(0.0, dist_sq - radius * radius));
+  return Vec2(p.x() * leg + p.y() * radius, -p.x() * radius + p.y() * leg) / dist_sq;
+}
 
 /// Squared distance from p to the segment a-b (a point when a == b).
 double SegmentDistanceSq(const Vec2& a, const Vec2& b, const Vec2& p);
