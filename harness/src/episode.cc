@@ -193,6 +193,7 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
   robot_.radius = sim_.robot_radius;
   robot_.v_pref = sim_.robot_v_pref;
   robot_.heading = HeadingToGoal(robot_);
+  humans_.reserve(scenario_.humans.size());
   for (const auto& h : scenario_.humans) {
     AgentState s;
     s.position = h.start;

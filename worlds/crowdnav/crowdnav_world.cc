@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "crowdsim/geometry.h"
 #include "crowdsim/rng.h"
 
 namespace crowdsim::crowdnav {
@@ -73,7 +74,7 @@ void CircleHuman(double radius, const ScenarioRequest& request, int index,
     bool collide = false;
     for (const Placed& a : placed) {
       const double min_dist = r_h + a.radius + request.sim.discomfort_dist;
-      if ((p - a.position).norm() < min_dist || (p - a.goal).norm() < min_dist) {
+      if (NormBelow(p - a.position, min_dist) || NormBelow(p - a.goal, min_dist)) {
         collide = true;
         break;
       }
@@ -96,7 +97,7 @@ void SquareHuman(double width, const ScenarioRequest& request, int index,
   auto clear = [&](const Vec2& p, bool against_goals) {
     for (const Placed& a : placed) {
       const double min_dist = r_h + a.radius + request.sim.discomfort_dist;
-      if ((p - (against_goals ? a.goal : a.position)).norm() < min_dist) return false;
+      if (NormBelow(p - (against_goals ? a.goal : a.position), min_dist)) return false;
     }
     return true;
   };
@@ -169,7 +170,11 @@ Scenario CrowdNavWorld::Make(const ScenarioRequest& request) const {
   s.robot_goal = Vec2(0.0, circle_radius_);
 
   Rng rng(request.seed);
-  std::vector<Placed> placed{{s.robot_start, s.robot_goal, request.sim.robot_radius}};
+  // Sized once: growing them human by human was most of the allocations of an episode.
+  std::vector<Placed> placed;
+  placed.reserve(static_cast<std::size_t>(std::max(0, request.num_humans)) + 1);
+  placed.push_back({s.robot_start, s.robot_goal, request.sim.robot_radius});
+  s.humans.reserve(static_cast<std::size_t>(std::max(0, request.num_humans)));
   const int goals = request.goal_mode == HumanGoalMode::kNewGoal ? new_goal_count_ : 1;
   for (int i = 0; i < request.num_humans; ++i) {
     Vec2 start, goal;
@@ -185,6 +190,7 @@ Scenario CrowdNavWorld::Make(const ScenarioRequest& request) const {
     h.v_pref = request.sim.human_v_pref;
     // New goals alternate between the far side and the start, drawing nothing more, so the
     // first goal (and everything CrowdNav does) stays identical in both goal modes.
+    h.goals.reserve(static_cast<std::size_t>(goals));
     for (int k = 0; k < goals; ++k) h.goals.push_back(k % 2 == 0 ? goal : start);
     s.humans.push_back(std::move(h));
   }
