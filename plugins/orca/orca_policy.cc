@@ -193,7 +193,15 @@ void OrcaPolicy::UseMap(const StaticMap* map, double radius) {
 }
 
 OrcaPolicy::Scratch& OrcaPolicy::ThreadScratch() {
-  thread_local Scratch scratch;
+  // A plain pointer, set on the thread's first call: a thread-local object with a destructor
+  // would cost two lookups per call (its guard's and its own), this costs one.
+  thread_local Scratch* scratch = nullptr;
+  if (scratch == nullptr) scratch = &MakeThreadScratch();
+  return *scratch;
+}
+
+OrcaPolicy::Scratch& OrcaPolicy::MakeThreadScratch() {
+  thread_local Scratch scratch;  // destroyed at the thread's exit
   return scratch;
 }
 

@@ -43,9 +43,10 @@ class OrcaPolicy final : public Policy {
     std::vector<Seen> seen;
     OrcaSolveScratch solve;
   };
-  /// Not inlined: its caller keeps the address, where inlined code fetched it again (a
-  /// thread-local lookup is a call in a plugin).
-  [[gnu::noinline]] static Scratch& ThreadScratch();
+  /// The calling thread's scratch: one thread-local lookup (a call in a plugin) per decision.
+  static Scratch& ThreadScratch();
+  /// ThreadScratch's first call on a thread: makes the scratch, destroyed at the thread's exit.
+  [[gnu::noinline, gnu::cold]] static Scratch& MakeThreadScratch();
 
   /// Fills s->neighbours from the ground-truth agents (humans) or the person sensor (robot).
   void GatherNeighbours(const Observation& obs, Scratch* s) const;

@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <numbers>
+#include <thread>
 #include <vector>
 
 #include "crowdsim/agent_index.h"
@@ -82,6 +84,50 @@ TEST_F(OrcaPluginTest, HumanAvoidsAnotherHumanComingAtIt) {
   const Vec2 free = policy->Decide(obs).velocity;
   EXPECT_NEAR(free.norm(), 1.0, 1e-12);
   EXPECT_NEAR(free.y(), 0.05 / 6.0, 1e-3);
+}
+
+// One policy deciding on several threads at once (episodes on a pool's threads): each thread
+// has its own scratch, made by its first decision, so each gets this thread's answers.
+TEST_F(OrcaPluginTest, DecidesTheSameOnSeveralThreads) {
+  auto policy = Make();
+  StaticMap map;
+  EpisodeContext ctx;
+  ctx.map = &map;
+  ctx.role = AgentRole::kHuman;
+  policy->Reset(ctx);
+
+  // Two scenes with different numbers of neighbours: a shared scratch would mix them.
+  const std::vector<AgentState> pair = {Human(Vec2(0, 0), Vec2(6, 0.05)),
+                                        Human(Vec2(2, 0), Vec2(-6, 0), Vec2(-1, 0))};
+  const std::vector<AgentState> crowd = {
+      Human(Vec2(0, 0), Vec2(0, 6)), Human(Vec2(0.2, 1.5), Vec2(0, -6), Vec2(0, -1)),
+      Human(Vec2(-1, 1), Vec2(3, 1), Vec2(0.8, 0)), Human(Vec2(1, 2), Vec2(-3, 2))};
+  AgentIndex pair_index, crowd_index;
+  pair_index.Rebuild(pair);
+  crowd_index.Rebuild(crowd);
+  auto observe = [](const std::vector<AgentState>& agents, const AgentIndex& index) {
+    Observation obs;
+    obs.self = agents[0];
+    obs.agents = &index;
+    obs.self_index = 0;
+    return obs;
+  };
+  const Observation pair_obs = observe(pair, pair_index);
+  const Observation crowd_obs = observe(crowd, crowd_index);
+  const Vec2 pair_v = policy->Decide(pair_obs).velocity;
+  const Vec2 crowd_v = policy->Decide(crowd_obs).velocity;
+  ASSERT_NE(pair_v, crowd_v);
+
+  auto decide_often = [&](const Observation& obs, const Vec2& expected, int* wrong) {
+    for (int k = 0; k < 200; ++k) *wrong += policy->Decide(obs).velocity != expected;
+  };
+  int pair_wrong = 0, crowd_wrong = 0;
+  std::thread pair_thread(decide_often, std::cref(pair_obs), std::cref(pair_v), &pair_wrong);
+  std::thread crowd_thread(decide_often, std::cref(crowd_obs), std::cref(crowd_v), &crowd_wrong);
+  pair_thread.join();
+  crowd_thread.join();
+  EXPECT_EQ(pair_wrong, 0);
+  EXPECT_EQ(crowd_wrong, 0);
 }
 
 TEST_F(OrcaPluginTest, RobotSeesPeopleThroughItsPersonSensor) {
