@@ -66,6 +66,46 @@ inline void CellRange(double lo, double hi, int cells, int* first, int* last) {
   *last = hi < 0.0 ? -1 : static_cast<int>(std::min(hi, top));
 }
 
+// Nearest for a crowd small enough to have no grid (`range_sq`: range squared). A small crowd
+// (the paper's five humans and the robot): every agent is looked at, in index order (Rebuild
+// keeps that order for crowds this small), so an agent never passes one at the same distance
+// and the k best come out as the grid search would give them. The k best so far are kept
+// sorted with their indices straight in `out` (no copy at the end) and their distances squared
+// after a sentinel that no distance passes (the insertion needs no bound test).
+void NearestOfFew(std::span<const Vec2> positions, const Vec2& p, double range_sq, int max_count,
+                  int exclude, std::vector<int>* out) {
+  const int count = static_cast<int>(positions.size());
+  // At most the crowd less the agent left out: when all are in range, `out` is sized once.
+  const int k = std::min(max_count, count - static_cast<int>(exclude >= 0 && exclude < count));
+  // Sized, not cleared first: a policy's vector mostly keeps its size from query to query.
+  out->resize(static_cast<size_t>(k));
+  int* ids = out->data();
+  double sentinel_and_d2s[kScanAllUpTo + 1];
+  sentinel_and_d2s[0] = -kInfinity;
+  double* d2s = sentinel_and_d2s + 1;
+  int n = 0;
+  const auto offer = [&](int i) {
+    const double d2 = (positions[i] - p).squaredNorm();
+    if (d2 >= range_sq) return;
+    if (n == k) {
+      if (!(d2 < d2s[n - 1])) return;
+      --n;
+    }
+    int j = n++;
+    for (; d2 < d2s[j - 1]; --j) {
+      d2s[j] = d2s[j - 1];
+      ids[j] = ids[j - 1];
+    }
+    d2s[j] = d2;
+    ids[j] = i;
+  };
+  // The agents before and after the one left out: no test for it in the loops.
+  const int skipped = exclude >= 0 && exclude < count ? exclude : count;
+  for (int i = 0; i < skipped; ++i) offer(i);
+  for (int i = skipped + 1; i < count; ++i) offer(i);
+  out->resize(static_cast<size_t>(n));
+}
+
 }  // namespace
 
 void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
@@ -130,30 +170,6 @@ void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
   cell_start_[0] = 0;
 }
 
-void AgentIndex::NearestOfFew(const Vec2& p, double range_sq, int max_count, int exclude,
-                              std::vector<int>* out) const {
-  // A small crowd (the paper's five humans and the robot): every agent is looked at, in index
-  // order (Rebuild keeps that order for crowds this small), so an agent never passes one at
-  // the same distance and the k best come out as the grid search would give them.
-  Hit slots[kScanAllUpTo];
-  int n = 0;
-  const int k = std::min(max_count, static_cast<int>(kScanAllUpTo));
-  const int count = static_cast<int>(position_.size());
-  for (int i = 0; i < count; ++i) {
-    const double d2 = (position_[i] - p).squaredNorm();
-    if (d2 >= range_sq || i == exclude) continue;
-    if (n == k) {
-      if (!(d2 < slots[n - 1].d2)) continue;
-      --n;
-    }
-    int j = n++;
-    for (; j > 0 && d2 < slots[j - 1].d2; --j) slots[j] = slots[j - 1];
-    slots[j] = {d2, i};
-  }
-  out->resize(static_cast<size_t>(n));
-  for (int j = 0; j < n; ++j) (*out)[static_cast<size_t>(j)] = slots[j].i;
-}
-
 void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude,
                          std::vector<int>* out) const {
   if (agents_.empty() || max_count <= 0) {
@@ -162,8 +178,7 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
   }
   const double range_sq = range * range;
   if (position_.size() <= kScanAllUpTo) {
-    // Sized, not cleared first: a policy's vector mostly keeps its size from query to query.
-    NearestOfFew(p, range_sq, max_count, exclude, out);
+    NearestOfFew(position_, p, range_sq, max_count, exclude, out);
     return;
   }
   out->clear();

@@ -26,9 +26,6 @@ class AgentIndex {
                std::vector<int>* out) const;
 
  private:
-  /// Nearest for a crowd small enough to have no grid (`range_sq`: range squared).
-  void NearestOfFew(const Vec2& p, double range_sq, int max_count, int exclude,
-                    std::vector<int>* out) const;
   /// Nearest from the agents within `radius` (<= range) of p alone; false, leaving `out` to the
   /// caller, when that disc cannot decide (fewer than max_count agents in it while it does not
   /// cover the whole range, or more than its slots hold).
