@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -213,11 +214,15 @@ void OrcaPolicy::GatherNeighbours(const Observation& obs, Scratch* s) const {
     obs.agents->Nearest(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index,
                         &s->neighbour_ids);
     const auto all = obs.agents->agents();
-    const std::vector<int>& ids = s->neighbour_ids;
+    const std::span<const int> ids = s->neighbour_ids;
     neighbours.resize(ids.size());  // not cleared first: no construction when the size repeats
+    // Field by field: a braced OrcaAgent was built on the stack and then copied.
+    OrcaAgent* out = neighbours.data();
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const AgentState& a = all[ids[k]];
-      neighbours[k] = {a.position, a.velocity, a.radius + padding};
+      out[k].position = a.position;
+      out[k].velocity = a.velocity;
+      out[k].radius = a.radius + padding;
     }
     return;
   }
