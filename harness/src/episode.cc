@@ -241,13 +241,15 @@ Episode::~Episode() = default;
 
 void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
                     std::vector<SensorReading>* out) const {
-  out->resize(agents_.sensors.size());
+  const std::span<const MountedSensor> sensors = agents_.sensors;
+  out->resize(sensors.size());
   const SenseInput input{robot, frame, humans, world_};
-  for (size_t s = 0; s < agents_.sensors.size(); ++s) {
+  for (size_t s = 0; s < sensors.size(); ++s) {
     SensorReading& r = (*out)[s];
-    r.sensor = agents_.sensors[s].name;
+    // The readings are reused step after step: most already carry the name (a copy was a call).
+    if (r.sensor != sensors[s].name) r.sensor = sensors[s].name;
     try {
-      agents_.sensors[s].sensor->Sense(input, &r);
+      sensors[s].sensor->Sense(input, &r);
     } catch (const AbortRun&) {
       throw;
     } catch (const std::exception& e) {
@@ -265,7 +267,9 @@ void Episode::DecideHumans() {
   human_index_.Rebuild(human_view_);
   human_obs_.time = time_;
   human_obs_.agents = &human_index_;
-  for (int i = 0; i < static_cast<int>(humans_.size()); ++i) DecideHuman(i);
+  // The count read once: DecideHuman changes no size, but the compiler cannot know that.
+  const int count = static_cast<int>(humans_.size());
+  for (int i = 0; i < count; ++i) DecideHuman(i);
 }
 
 void Episode::DecideHuman(int i) {
