@@ -1,6 +1,7 @@
 #include "process_group.h"
 
 #include <cstdlib>
+#include <initializer_list>
 
 #ifdef CROWDSIM_HAVE_MPI
 #include <mpi.h>
