@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <random>
 #include <string>
@@ -136,6 +137,22 @@ TEST(AgentLinesDispatch, AddAgentLinesGivesTheScalarLinesOnEveryProcessor) {
   AddAgentLinesScalar(self, neighbours, kParams, kDt, scalar.data());
   AddAgentLines(self, neighbours, kParams, kDt, chosen.data());
   ExpectSameLines(scalar, chosen, "five neighbours");
+}
+
+TEST(AgentLinesDispatch, CrowdsimSimdOffAloneDisablesTheVectorPath) {
+  const char* before = std::getenv("CROWDSIM_SIMD");
+  const std::string saved = before != nullptr ? before : "";
+  unsetenv("CROWDSIM_SIMD");
+  EXPECT_FALSE(SimdDisabled());
+  setenv("CROWDSIM_SIMD", "on", 1);
+  EXPECT_FALSE(SimdDisabled());
+  setenv("CROWDSIM_SIMD", "off", 1);
+  EXPECT_TRUE(SimdDisabled());
+  if (before != nullptr) {
+    setenv("CROWDSIM_SIMD", saved.c_str(), 1);
+  } else {
+    unsetenv("CROWDSIM_SIMD");
+  }
 }
 
 }  // namespace

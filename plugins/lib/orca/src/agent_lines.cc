@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
+#include <string_view>
 
 #include "orca/geometry.h"
 
@@ -203,13 +205,19 @@ void AddAgentLinesAvx2(const OrcaAgent& self, std::span<const OrcaAgent> neighbo
 
 #endif
 
+bool SimdDisabled() {
+  const char* simd = std::getenv("CROWDSIM_SIMD");
+  return simd != nullptr && std::string_view(simd) == "off";
+}
+
 void AddAgentLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
                    const OrcaParams& params, double time_step, OrcaLine* out) {
   // Chosen at the first call, then called through: a processor test per call (inlining the
   // scalar path beside it) cost more than the call itself.
   using AgentLinesFn =
       void(const OrcaAgent&, std::span<const OrcaAgent>, const OrcaParams&, double, OrcaLine*);
-  static AgentLinesFn* const fastest = HaveAvx2() ? &AddAgentLinesAvx2 : &AddAgentLinesScalar;
+  static AgentLinesFn* const fastest =
+      HaveAvx2() && !SimdDisabled() ? &AddAgentLinesAvx2 : &AddAgentLinesScalar;
   fastest(self, neighbours, params, time_step, out);
 }
 
