@@ -8,14 +8,12 @@
 // libtorch) and must not link libtorch itself: OpenBLAS would be loaded before the pin.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
-#include <sstream>
 #include <string>
 
 #include "blas_kernel.h"
-#include "crowdsim/bench/episode_columns.h"
-#include "crowdsim/bench/results.h"
-#include "crowdsim/bench/runner.h"
+#include "committed_rows.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -23,20 +21,7 @@ namespace crowdsim {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::ReadText;
 using testing::TempDir;
-
-// The header line and the lines of `row` of an episodes.csv text.
-std::string LinesOfRow(const std::string& csv, const std::string& row) {
-  std::istringstream in(csv);
-  std::string line, out;
-  std::getline(in, line);
-  out = line + "\n";
-  while (std::getline(in, line)) {
-    if (line.rfind(row + ",", 0) == 0) out += line + "\n";
-  }
-  return out;
-}
 
 class CommittedLearnedRowsTest : public ::testing::Test {
  protected:
@@ -55,26 +40,11 @@ class CommittedLearnedRowsTest : public ::testing::Test {
 
   // Reruns `row` of suites/<suite>.yaml alone and compares its episodes with results/<suite>/.
   void ExpectRowReruns(const std::string& suite_name, const std::string& row) {
-    const SuiteLoadResult loaded =
-        LoadSuite(testing::SourceDir() / "suites" / (suite_name + ".yaml"), registry_);
-    ASSERT_TRUE(loaded.suite) << suite_name;
-    Suite suite = *loaded.suite;
-    std::erase_if(suite.rows, [&](const RowSpec& r) { return r.label != row; });
-    suite.summaries.clear();
-    ASSERT_EQ(suite.rows.size(), 1u) << "no row " << row << " in " << suite_name;
-    RunOptions o;
-    o.out_dir = dir_.path() / row;
-    o.jobs = 2;
-    o.progress = false;
-    RunSuite(suite, registry_, o);
-    const std::string ours = WithoutTimingColumns(ReadText(o.out_dir / "episodes.csv"));
-    const std::string committed =
-        LinesOfRow(WithoutTimingColumns(
-                       ReadText(testing::SourceDir() / "results" / suite_name / "episodes.csv")),
-                   row);
-    EXPECT_EQ(std::count(committed.begin(), committed.end(), '\n'), 1 + 500);
-    EXPECT_EQ(ours, committed) << row << " of " << suite_name << " differs from results/"
-                               << suite_name << " with OPENBLAS_CORETYPE=" << BlasCoreType();
+    const testing::RowRerun r =
+        testing::RerunCommittedRow(registry_, dir_.path() / row, suite_name, row);
+    EXPECT_EQ(std::count(r.committed.begin(), r.committed.end(), '\n'), 1 + 500);
+    EXPECT_EQ(r.rerun, r.committed) << row << " of " << suite_name << " differs from results/"
+                                    << suite_name << " with OPENBLAS_CORETYPE=" << BlasCoreType();
   }
 
   TempDir dir_;

@@ -25,8 +25,18 @@ class OrcaPluginTest : public ::testing::Test {
     params_ = Params::Defaults(plugin_->schema);
   }
   std::shared_ptr<Policy> Make() { return registry_.MakePolicy(*plugin_, params_); }
+  /// A new policy reset as a human of an empty map (kept by the fixture).
+  std::shared_ptr<Policy> MakeHuman() {
+    auto policy = Make();
+    EpisodeContext ctx;
+    ctx.map = &empty_map_;
+    ctx.role = AgentRole::kHuman;
+    policy->Reset(ctx);
+    return policy;
+  }
 
   PluginRegistry registry_{{crowdsim::testing::PluginDir()}};
+  StaticMap empty_map_;
   const LoadedPlugin* plugin_ = nullptr;
   Params params_;
 };
@@ -58,12 +68,7 @@ TEST_F(OrcaPluginTest, DeclaresCrowdNavDefaultsAndNeedsTheMap) {
 }
 
 TEST_F(OrcaPluginTest, HumanAvoidsAnotherHumanComingAtIt) {
-  auto policy = Make();
-  StaticMap map;
-  EpisodeContext ctx;
-  ctx.map = &map;
-  ctx.role = AgentRole::kHuman;
-  policy->Reset(ctx);
+  auto policy = MakeHuman();
 
   std::vector<AgentState> agents = {Human(Vec2(0, 0), Vec2(6, 0.05)),
                                     Human(Vec2(2, 0), Vec2(-6, 0), Vec2(-1, 0))};
@@ -89,12 +94,7 @@ TEST_F(OrcaPluginTest, HumanAvoidsAnotherHumanComingAtIt) {
 // One policy deciding on several threads at once (episodes on a pool's threads): each thread
 // has its own scratch, made by its first decision, so each gets this thread's answers.
 TEST_F(OrcaPluginTest, DecidesTheSameOnSeveralThreads) {
-  auto policy = Make();
-  StaticMap map;
-  EpisodeContext ctx;
-  ctx.map = &map;
-  ctx.role = AgentRole::kHuman;
-  policy->Reset(ctx);
+  auto policy = MakeHuman();
 
   // Two scenes with different numbers of neighbours: a shared scratch would mix them.
   const std::vector<AgentState> pair = {Human(Vec2(0, 0), Vec2(6, 0.05)),
