@@ -171,10 +171,11 @@ Scenario CrowdNavWorld::Make(const ScenarioRequest& request) const {
 
   Rng rng(request.seed);
   // Sized once: growing them human by human was most of the allocations of an episode.
+  const auto num_humans = static_cast<std::size_t>(std::max(0, request.num_humans));
   std::vector<Placed> placed;
-  placed.reserve(static_cast<std::size_t>(std::max(0, request.num_humans)) + 1);
+  placed.reserve(num_humans + 1);
   placed.push_back({s.robot_start, s.robot_goal, request.sim.robot_radius});
-  s.humans.reserve(static_cast<std::size_t>(std::max(0, request.num_humans)));
+  s.humans.reserve(num_humans);
   const int goals = request.goal_mode == HumanGoalMode::kNewGoal ? new_goal_count_ : 1;
   for (int i = 0; i < request.num_humans; ++i) {
     Vec2 start, goal;
