@@ -841,6 +841,15 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   auto [urc, utext] = Shell(exe + " run " + suite.string() + " --jobz 2");
   EXPECT_EQ(urc, 2) << utext;
   EXPECT_NE(utext.find("unknown option '--jobz'"), std::string::npos) << utext;
+  // A short option was taken for a second suite file ("run needs exactly one suite file").
+  auto [jrc, jtext] = Shell(exe + " run " + suite.string() + " -j 2");
+  EXPECT_EQ(jrc, 2) << jtext;
+  EXPECT_NE(jtext.find("unknown option '-j': options are long, with two dashes (valid: --out"),
+            std::string::npos)
+      << jtext;
+  auto [hrc, htext] = Shell(exe + " run " + suite.string() + " -h");
+  EXPECT_EQ(hrc, 0) << htext;
+  EXPECT_NE(htext.find("crowdsim-bench run SUITE.yaml"), std::string::npos) << htext;
   // An option of one value given twice: the last one silently won.
   auto [drc, dtext] = Shell(exe + " run " + suite.string() + " --out a --out b");
   EXPECT_EQ(drc, 2) << dtext;

@@ -7,9 +7,21 @@ namespace crowdsim::cli {
 
 Args Args::Parse(const std::vector<std::string>& args, const std::vector<std::string>& with_value,
                  const std::vector<std::string>& flags) {
+  auto valid = [&] {
+    std::string names;
+    for (const auto& o : with_value) names += " " + o;
+    for (const auto& o : flags) names += " " + o;
+    return "(valid:" + (names.empty() ? std::string(" none") : names) + ")";
+  };
   Args a;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& s = args[i];
+    // A short option (-j 2, -o DIR) was taken for a file name ("run needs exactly one suite
+    // file"); -h asks for the usage as --help does. A lone "-" stays a positional argument.
+    if (s == "-h") throw HelpRequested();
+    if (s.size() > 1 && s[0] == '-' && s[1] != '-') {
+      throw UsageError("unknown option '" + s + "': options are long, with two dashes " + valid());
+    }
     if (!s.starts_with("--")) {
       a.positional.push_back(s);
       continue;
@@ -33,11 +45,7 @@ Args Args::Parse(const std::vector<std::string>& args, const std::vector<std::st
       a.options[name] = value;
       a.repeated[name].push_back(value);
     } else {
-      std::string valid;
-      for (const auto& o : with_value) valid += " " + o;
-      for (const auto& o : flags) valid += " " + o;
-      throw UsageError("unknown option '" + name + "' (valid:" + (valid.empty() ? " none" : valid) +
-                       ")");
+      throw UsageError("unknown option '" + name + "' " + valid());
     }
   }
   return a;
