@@ -9,8 +9,11 @@ namespace {
 // The folder exists and holds the three files `crowdsim-bench run` writes.
 void CheckResultsFolder(const fs::path& dir) {
   if (!fs::is_directory(dir)) {
-    throw ReportError("results folder '" + dir.string() +
-                      "' does not exist (give the --out folder of `crowdsim-bench run`)");
+    // A file (the suite, its table.md) was said not to exist.
+    std::error_code ec;
+    throw ReportError("results folder '" + dir.string() + "' " +
+                      (fs::exists(dir, ec) ? "is a file, not a folder" : "does not exist") +
+                      " (give the --out folder of `crowdsim-bench run`, e.g. runs/quick)");
   }
   // A folder of `run` without its tables: a shard (merge first) or a run that did not finish.
   // (Builds before 2026-11-26 left an earlier run's tables in place while a rerun went on: an

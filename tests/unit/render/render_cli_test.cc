@@ -94,6 +94,12 @@ TEST(ReportCli, WritesTheReportAndRejectsBadFolders) {
   EXPECT_NE(mtext.find("results folder '" + (tmp.path() / "missing").string() + "' does not exist"),
             std::string::npos)
       << mtext;
+  // A file given for the folder (the suite, a table.md) was said not to exist.
+  auto [src, stext] = Shell(Exe() + " report " + Quick() + " --out " + html.string());
+  EXPECT_EQ(src, 2) << stext;
+  EXPECT_NE(stext.find("results folder '" + Quick() + "' is a file, not a folder"),
+            std::string::npos)
+      << stext;
   auto [erc, etext] = Shell(Exe() + " report " + tmp.path().string() + " --out " + html.string());
   EXPECT_EQ(erc, 2) << etext;
   EXPECT_NE(etext.find("has no manifest.json"), std::string::npos) << etext;
