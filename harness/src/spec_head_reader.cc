@@ -8,7 +8,10 @@ namespace crowdsim::suite_internal {
 SpecHead ReadSpecHead(Reader& r, const YAML::Node& root, const std::string& folder) {
   SpecHead head;
   head.name = r.Name(root, folder);
-  if (Present(root["description"])) head.description = root["description"].Scalar();
+  if (Present(root["description"])) {
+    // A list or a map read as "": the description was dropped without a word.
+    if (auto text = r.String(root["description"], "description")) head.description = *text;
+  }
   if (root["seed"]) {
     if (auto v = r.Integer(root["seed"], "seed", 0, std::numeric_limits<std::int64_t>::max())) {
       head.seed = static_cast<std::uint64_t>(*v);

@@ -140,8 +140,13 @@ void ReadRow(Reader& r, const YAML::Node& n, size_t index, const RowDefaults& d,
   keys.insert(keys.end(), {"sweep", "info", "reference"});
   r.CheckKeys(n, path, keys);
   ReadRowSpec(r, n, path, d, kSuiteRowRules, base, row);
-  row->label = n["label"] ? n["label"].Scalar() : row->policy.plugin;
-  if (n["label"]) CheckLabel(r, n["label"], Reader::Child(path, "label"));
+  row->label = row->policy.plugin;
+  if (n["label"]) {
+    // A label that is not text (a list, a map) read as "" and was called blank.
+    const auto label = r.String(n["label"], Reader::Child(path, "label"));
+    row->label = label.value_or("");
+    if (label) CheckLabel(r, n["label"], Reader::Child(path, "label"));
+  }
   if (const auto info = n["info"]) ReadInfo(r, info, Reader::Child(path, "info"), &row->info);
   if (const auto ref = n["reference"])
     row->reference = ReadReference(r, ref, Reader::Child(path, "reference"));

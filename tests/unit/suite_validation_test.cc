@@ -190,6 +190,18 @@ TEST_F(SuiteValidation, DuplicateLabels) {
   EXPECT_NE(Find(r, "label 'linear' is used by an earlier row"), "") << All(r);
 }
 
+// A label or description that is not text (a list, a map) read as "": the label was called
+// blank, the description dropped without a word.
+TEST_F(SuiteValidation, ALabelOrDescriptionThatIsNotTextIsNamedAsSuch) {
+  auto r =
+      Load(std::string("description: [a, b]\n") + kGood + "  - {label: [x, y], policy: linear}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "suite.yaml:1:14: description: must be a text value, found a list"), "")
+      << All(r);
+  EXPECT_NE(Find(r, "rows[2].label: must be a text value, found a list"), "") << All(r);
+  EXPECT_EQ(Find(r, "must not be empty or blank"), "") << All(r);
+}
+
 /// kGood with its last row in block style, so keys can be added to it.
 std::string GoodWithOpenLastRow() {
   std::string yaml = kGood;
