@@ -267,11 +267,22 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
       if (robot["sensors"]) d.sensors = robot["sensors"];
     }
   }
-  if (const auto cols = root["columns"]) {
+  const YAML::Node cols = root["columns"];
+  if (cols) {
     if (!cols.IsSequence()) {
       r.Error(cols, "columns", "must be a list of info column names");
     } else {
-      for (const auto& c : cols) s.info_columns.push_back(c.Scalar());
+      for (size_t i = 0; i < cols.size(); ++i) {
+        const auto name = r.String(cols[i], Reader::Index("columns", i));
+        if (!name) continue;
+        if (std::find(s.info_columns.begin(), s.info_columns.end(), *name) !=
+            s.info_columns.end()) {
+          r.Error(cols[i], Reader::Index("columns", i),
+                  "'" + *name + "' is named twice; the table would show the column twice");
+          continue;
+        }
+        s.info_columns.push_back(*name);
+      }
     }
   }
   if (!root["rows"] || !root["rows"].IsSequence() || root["rows"].size() == 0) {
@@ -302,6 +313,26 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
           s.info_columns.push_back(k);
         }
       }
+    }
+  }
+  // A column is filled from the rows' (and summaries') info: one that none of them gives is a
+  // misspelt key, which showed as an empty column beside the real one.
+  if (cols && cols.IsSequence()) {
+    std::set<std::string> given;
+    for (const RowSpec& row : s.rows) {
+      for (const auto& [k, v] : row.info) given.insert(k);
+    }
+    for (const SummarySpec& summary : s.summaries) {
+      for (const auto& [k, v] : summary.info) given.insert(k);
+    }
+    for (size_t i = 0; i < cols.size(); ++i) {
+      if (!cols[i].IsScalar() || given.count(cols[i].Scalar())) continue;
+      std::string keys;
+      for (const std::string& k : given) keys += (keys.empty() ? "" : ", ") + k;
+      r.Error(cols[i], Reader::Index("columns", i),
+              "no row's info gives '" + cols[i].Scalar() +
+                  "' (their info keys: " + (keys.empty() ? std::string("none") : keys) +
+                  "); a column is filled from each row's info: {" + cols[i].Scalar() + ": ...}");
     }
   }
   if (!r.errors.empty()) {
