@@ -1,5 +1,8 @@
 #include "crowdsim/bench/runner.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -158,6 +161,17 @@ fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
     throw RunError("cannot create the output folder '" + dir.string() + "': " + ec.message() +
                    ". Choose another with --out.");
   }
+  // A folder that takes no file (on a read-only disk, a system folder such as /sys) failed
+  // later, at the first table written, naming a temporary file and not --out. A file of its
+  // own is the test: access() lets root pass where the disk or the file system refuses.
+  const fs::path probe = dir / ".crowdsim-bench.write-test";
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw RunError("cannot write in the output folder '" + dir.string() +
+                   "': " + std::strerror(errno) + ". Choose another with --out.");
+  }
+  ::close(fd);
+  fs::remove(probe, ec);
   return dir;
 }
 

@@ -855,6 +855,14 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_EQ(drc, 2) << dtext;
   EXPECT_NE(dtext.find("--out is given 2 times ('a', 'b'): give it once"), std::string::npos)
       << dtext;
+  // A folder that takes no file (sysfs refuses one even to root; a read-only disk alike)
+  // failed only at the first table, naming a temporary file and not --out.
+  if (fs::is_directory("/sys")) {
+    auto [wrc, wtext] = Shell(exe + " run " + suite.string() + " --episodes 2 --quiet --out /sys");
+    EXPECT_EQ(wrc, 1) << wtext;
+    EXPECT_NE(wtext.find("cannot write in the output folder '/sys': "), std::string::npos) << wtext;
+    EXPECT_NE(wtext.find("Choose another with --out."), std::string::npos) << wtext;
+  }
   auto [mrc, mtext] = Shell(exe + " run /nonexistent/suite.yaml");
   EXPECT_EQ(mrc, 2) << mtext;
   EXPECT_NE(mtext.find("suite file does not exist"), std::string::npos) << mtext;
