@@ -187,7 +187,10 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
               "must be a non-empty list of row labels to average (valid: " + valid + ")");
     } else {
       for (size_t k = 0; k < members.size(); ++k) {
-        const std::string label = members[k].Scalar();
+        // A member that is not text (a map, a list) read as "": "no row is labelled ''".
+        const auto text = r.String(members[k], Reader::Index(Reader::Child(path, "rows"), k));
+        if (!text) continue;
+        const std::string& label = *text;
         const bool found = std::any_of(rows.begin(), rows.end(),
                                        [&](const RowSpec& row) { return row.label == label; });
         if (!found) {

@@ -360,7 +360,8 @@ TEST_F(SuiteValidation, BadReferencesAndSummariesAreNamed) {
                 "  - {label: avg, rows: [a, c]}\n"
                 "  - {label: a, rows: []}\n"
                 "  - {rows: [b, b]}\n"
-                "  - {label: x, rows: [a], reference: {source: only}}\n");
+                "  - {label: x, rows: [a], reference: {source: only}}\n"
+                "  - {label: y, rows: [a, {b: 1}]}\n");
   ASSERT_FALSE(r.suite);
   EXPECT_NE(Find(r, "rows[1].reference.success"), "") << All(r);
   EXPECT_NE(Find(r, "unknown key 'colision'"), "") << All(r);
@@ -370,6 +371,9 @@ TEST_F(SuiteValidation, BadReferencesAndSummariesAreNamed) {
   EXPECT_NE(Find(r, "summaries[2]: missing key 'label'"), "") << All(r);
   EXPECT_NE(Find(r, "summaries[2].rows[1]: row 'b' is named twice"), "") << All(r);
   EXPECT_NE(Find(r, "summaries[3].reference: gives no value"), "") << All(r);
+  // A member that is not a label was read as "" and called "no row is labelled ''".
+  EXPECT_NE(Find(r, "summaries[4].rows[1]: must be a text value, found a map"), "") << All(r);
+  EXPECT_EQ(Find(r, "no row is labelled ''"), "") << All(r);
 }
 
 TEST_F(SuiteValidation, DuplicateKeysAreErrorsNotSilentChoices) {
