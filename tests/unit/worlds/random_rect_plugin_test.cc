@@ -174,6 +174,9 @@ TEST_F(RandomRectPlugin, MissingOrMalformedFilesAreClearErrors) {
     EXPECT_NE(std::string(e.what()).find("crowdsim-make-rect-worlds --obstacles 2"),
               std::string::npos)
         << e.what();
+    // The tool is on PATH once installed; in a build tree it sits beside crowdsim-bench.
+    EXPECT_NE(std::string(e.what()).find("build/bin/crowdsim-make-rect-worlds"), std::string::npos)
+        << e.what();
   }
 }
 
