@@ -318,26 +318,6 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
       }
     }
   }
-  // A column is filled from the rows' (and summaries') info: one that none of them gives is a
-  // misspelt key, which showed as an empty column beside the real one.
-  if (cols && cols.IsSequence()) {
-    std::set<std::string> given;
-    for (const RowSpec& row : s.rows) {
-      for (const auto& [k, v] : row.info) given.insert(k);
-    }
-    for (const SummarySpec& summary : s.summaries) {
-      for (const auto& [k, v] : summary.info) given.insert(k);
-    }
-    for (size_t i = 0; i < cols.size(); ++i) {
-      if (!cols[i].IsScalar() || given.count(cols[i].Scalar())) continue;
-      std::string keys;
-      for (const std::string& k : given) keys += (keys.empty() ? "" : ", ") + k;
-      r.Error(cols[i], Reader::Index("columns", i),
-              "no row's info gives '" + cols[i].Scalar() +
-                  "' (their info keys: " + (keys.empty() ? std::string("none") : keys) +
-                  "); a column is filled from each row's info: {" + cols[i].Scalar() + ": ...}");
-    }
-  }
   if (!r.errors.empty()) {
     // Suite-level sections (world, humans, robot sensors) are read once per row: report each
     // problem once.

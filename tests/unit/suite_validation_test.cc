@@ -203,27 +203,23 @@ TEST_F(SuiteValidation, ALabelOrDescriptionThatIsNotTextIsNamedAsSuch) {
 }
 
 // `columns:` names info keys: an item that is not text became a column without a name, one
-// named twice a second copy, a misspelt one an empty column beside the real one.
-TEST_F(SuiteValidation, ColumnsNamedTwiceNotTextOrFilledByNoRowAreErrors) {
+// named twice a second copy. A name no row fills stays valid: a suite copied with its own rows
+// (quick.yaml's `columns: [model]`, rows without info) shows an empty column, not an error.
+TEST_F(SuiteValidation, ColumnsNamedTwiceOrNotTextAreErrors) {
   const std::string rows =
       "rows:\n  - {label: a, policy: linear, info: {model: A}}\n"
       "  - {label: b, policy: linear, info: {model: B, seed: 1}}\n";
   const std::string head =
       "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n";
-  auto good = Load(head + "columns: [seed, model]\n" + rows);
+  auto good = Load(head + "columns: [seed, model, note]\n" + rows);
   ASSERT_TRUE(good.suite) << All(good);
-  EXPECT_EQ(good.suite->info_columns, (std::vector<std::string>{"seed", "model"}));
-  auto r = Load(head + "columns: [modle, {a: b}, seed, seed]\n" + rows);
+  EXPECT_EQ(good.suite->info_columns, (std::vector<std::string>{"seed", "model", "note"}));
+  auto r = Load(head + "columns: [model, {a: b}, seed, seed]\n" + rows);
   ASSERT_FALSE(r.suite);
-  EXPECT_NE(Find(r,
-                 "suite.yaml:4:11: columns[0]: no row's info gives 'modle' (their info keys: "
-                 "model, seed)"),
-            "")
-      << All(r);
   EXPECT_NE(Find(r, "suite.yaml:4:18: columns[1]: must be a text value, found a map"), "")
       << All(r);
   EXPECT_NE(Find(r, "suite.yaml:4:32: columns[3]: 'seed' is named twice"), "") << All(r);
-  EXPECT_EQ(r.errors.size(), 3u) << All(r);
+  EXPECT_EQ(r.errors.size(), 2u) << All(r);
 }
 
 /// kGood with its last row in block style, so keys can be added to it.
