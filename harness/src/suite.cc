@@ -270,8 +270,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
       if (robot["sensors"]) d.sensors = robot["sensors"];
     }
   }
-  const YAML::Node cols = root["columns"];
-  if (cols) {
+  if (const auto cols = root["columns"]) {
     if (!cols.IsSequence()) {
       r.Error(cols, "columns", "must be a list of info column names");
     } else {
