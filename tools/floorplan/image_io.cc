@@ -31,6 +31,11 @@ void CheckSize(const std::filesystem::path& path, std::uint64_t width, std::uint
 
 std::vector<unsigned char> ReadBytes(const std::filesystem::path& path) {
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    Fail(path,
+         "is a folder, not an image: give one PNG or PGM file of it (`floorplan dataset "
+         "--source DIR` imports a folder of Gibson and HM3D plans)");
+  }
   if (!std::filesystem::is_regular_file(path, ec)) {
     Fail(path, "no such image file (check the path)");
   }

@@ -172,6 +172,8 @@ TEST(ImportTest, BadInputsSayWhatToFix) {
   TempDir dir;
   ImportOptions o = Small();
   ExpectImportError(dir.path() / "missing.png", o, "no such image");
+  // A folder exists: "no such image file" sent the user looking for a typo in its path.
+  ExpectImportError(dir.path(), o, "is a folder, not an image");
   ExpectImportError(dir.Write("text.png", "hello, not an image\n"), o, "not a PNG or PGM");
   ExpectImportError(dir.Write("empty.png", ""), o, "empty");
   ExpectImportError(dir.Write("trunc.pgm", "P5\n10 10\n255\n\x01\x02"), o, "truncated");
