@@ -74,6 +74,12 @@ const std::array<LoadedPlugin, kSlots>& SlotPlugins() {
 }
 
 Vec2 VelocityOf(const py::handle& v, const char* what) {
+  // None (a policy without `return`) reads as one NaN: "got 1 numbers" hid the missing return.
+  if (v.is_none()) {
+    throw std::invalid_argument(std::string(what) +
+                                " must be a velocity (vx, vy) in m/s, world frame: 2 numbers "
+                                "(got None: does the policy `return` its velocity?)");
+  }
   // Any array-like of two numbers: (2,), (1, 2) as Env.step takes it, a list, a tensor.
   using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
   const Array a = Array::ensure(v);  // null, with Python's error cleared, when it cannot be
@@ -86,7 +92,7 @@ Vec2 VelocityOf(const py::handle& v, const char* what) {
     }
   }
   if (!a || a.size() != 2) {
-    if (a) why = " (got " + std::to_string(a.size()) + " numbers)";
+    if (a) why = " (got " + std::to_string(a.size()) + (a.size() == 1 ? " number)" : " numbers)");
     throw std::invalid_argument(
         std::string(what) + " must be a velocity (vx, vy) in m/s, world frame: 2 numbers" + why);
   }

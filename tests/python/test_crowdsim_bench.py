@@ -186,6 +186,24 @@ class Evaluate(unittest.TestCase):
                 errors = [e["error"] for e in csv.DictReader(f)]
             self.assertTrue(all("my bug" in e for e in errors), errors)
 
+    def test_a_policy_returning_none_is_told_to_return_its_velocity(self):
+        # None read as one NaN: "got 1 numbers" hid the missing `return`.
+        def no_return(obs):
+            straight_to_goal(obs)
+
+        with tempfile.TemporaryDirectory() as out:
+            with self.assertWarns(RuntimeWarning):
+                cb.evaluate(no_return, QUICK, row="linear", out=out, episodes=1)
+            with open(os.path.join(out, "episodes.csv"), newline="") as f:
+                error = next(csv.DictReader(f))["error"]
+            self.assertIn("2 numbers (got None: does the policy `return` its velocity?)", error)
+        with tempfile.TemporaryDirectory() as out:
+            with self.assertWarns(RuntimeWarning):
+                cb.evaluate(lambda obs: 0.5, QUICK, row="linear", out=out, episodes=1)
+            with open(os.path.join(out, "episodes.csv"), newline="") as f:
+                error = next(csv.DictReader(f))["error"]
+            self.assertIn("2 numbers (got 1 number)", error)
+
     def test_evaluate_never_replaces_another_configurations_results(self):
         # evaluate() plays every episode again (fresh=True): it wiped a CLI run's folder.
         with tempfile.TemporaryDirectory() as out:
