@@ -229,16 +229,26 @@ void RefuseOtherResults(const Suite& suite, const std::filesystem::path& out) {
       "settings. Pass another out=, or remove the folder first");
 }
 
-// A policy that raises ends its episode, not the run: say so once, with where the messages are.
+// A policy that raises ends its episode, not the run: say so once, with the first episode's
+// message (as the CLI does: without it a user had to open episodes.csv to see what was wrong)
+// and where the others are.
 void WarnOfPolicyErrors(const RunSummary& summary) {
   for (const TableRow& r : summary.rows) {
     const RowMetrics& m = r.metrics;
     if (m.policy_error_rate <= 0.0) continue;
     const auto failed = static_cast<long>(std::lround(m.policy_error_rate * m.episodes));
+    // summary.policy_errors: "row 'LABEL': N of M episodes ended in policy_error; episode K: ..."
+    std::string first;
+    const std::string prefix = "row '" + r.Label() + "': ";
+    for (const std::string& note : summary.policy_errors) {
+      const auto at = note.find("; episode ");
+      if (note.starts_with(prefix) && at != std::string::npos) first = note.substr(at + 2);
+    }
     const std::string message =
         std::to_string(failed) + " of " + std::to_string(m.episodes) + " episodes of row '" +
-        r.Label() + "' ended as policy_error (the policy raised or returned a bad velocity); " +
-        "the messages are in the error column of " + (summary.out_dir / "episodes.csv").string();
+        r.Label() + "' ended as policy_error (the policy raised or returned a bad velocity)" +
+        (first.empty() ? std::string() : "; " + first) +
+        "\nthe messages are in the error column of " + (summary.out_dir / "episodes.csv").string();
     // Level 2: the warning points at the user's call of crowdsim_bench.evaluate, not at it.
     if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 2) != 0) throw py::error_already_set();
   }

@@ -186,6 +186,16 @@ class Evaluate(unittest.TestCase):
                 errors = [e["error"] for e in csv.DictReader(f)]
             self.assertTrue(all("my bug" in e for e in errors), errors)
 
+    def test_the_warning_gives_the_first_episodes_message(self):
+        # It only said that the messages were in episodes.csv: the user had to open it.
+        def broken(obs):
+            raise RuntimeError("my bug")
+
+        with tempfile.TemporaryDirectory() as out:
+            with self.assertWarnsRegex(RuntimeWarning, "episode 0: python policy raised "
+                                                       "RuntimeError: my bug"):
+                cb.evaluate(broken, QUICK, row=1, out=out, episodes=2)
+
     def test_a_policy_returning_none_is_told_to_return_its_velocity(self):
         # None read as one NaN: "got 1 numbers" hid the missing `return`.
         def no_return(obs):
