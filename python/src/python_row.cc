@@ -24,6 +24,17 @@ Suite LoadSuiteOrThrow(const std::string& path, PluginRegistry& registry,
                        const std::vector<std::string>& set) {
   SuiteLoadResult r = LoadSuite(path, registry, set);
   if (!r.suite) {
+    // A training file read as a suite gives an unknown key for each of its own top-level keys
+    // (policy, params, sensors, training) and a missing rows list: say what it is instead, as
+    // `crowdsim-bench run` does.
+    for (const SuiteError& e : r.errors) {
+      if (e.key_path == "training" && e.message.starts_with("unknown key")) {
+        throw py::value_error(
+            path + " is a training file (train it with `crowdsim-bench train " + path +
+            "`); Env, VectorEnv, evaluate() and run_suite() take a suite, whose rows: list the "
+            "policies (e.g. suites/quick.yaml)");
+      }
+    }
     std::string msg;
     for (const auto& e : r.errors) {
       if (!msg.empty()) msg += '\n';

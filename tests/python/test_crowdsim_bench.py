@@ -214,6 +214,14 @@ class Evaluate(unittest.TestCase):
                 error = next(csv.DictReader(f))["error"]
             self.assertIn("2 numbers (got 1 number)", error)
 
+    def test_a_training_file_is_named_as_one(self):
+        # It gave an unknown-key error for each of the training file's own keys.
+        train = "suites/train/cadrl_crowdnav.yaml"
+        for call in (lambda: cb.Env(train), lambda: cb.run_suite(train),
+                     lambda: cb.evaluate(straight_to_goal, train)):
+            with self.assertRaisesRegex(ValueError, "is a training file .*crowdsim-bench train"):
+                call()
+
     def test_evaluate_never_replaces_another_configurations_results(self):
         # evaluate() plays every episode again (fresh=True): it wiped a CLI run's folder.
         with tempfile.TemporaryDirectory() as out:
