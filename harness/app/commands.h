@@ -6,14 +6,10 @@
 #include <vector>
 
 #include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/spec_file_kind.h"
 #include "crowdsim/bench/suite.h"
 
 namespace crowdsim::cli {
-
-/// What a YAML file is, by its first top-level `training:`/`policy:` (a training file) or
-/// `rows:` (a suite) key.
-enum class SpecFileKind { kUnknown, kSuite, kTraining };
-SpecFileKind KindOfSpecFile(const std::string& file);
 
 /// Loads a suite with its --set overrides, or prints every error (for a training file, instead,
 /// that it is one and to train it; `command` is the one that wanted a suite) and returns nothing.

@@ -21,17 +21,6 @@
 
 namespace crowdsim::cli {
 
-SpecFileKind KindOfSpecFile(const std::string& file) {
-  std::ifstream f(file);
-  std::string line;
-  while (std::getline(f, line)) {
-    if (line.starts_with("training:") || line.starts_with("policy:"))
-      return SpecFileKind::kTraining;
-    if (line.starts_with("rows:")) return SpecFileKind::kSuite;
-  }
-  return SpecFileKind::kUnknown;
-}
-
 std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& registry,
                                   const std::vector<std::string>& overrides,
                                   const std::string& command) {

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "crowdsim/bench/spec_file_kind.h"
+
 namespace py = pybind11;
 
 namespace crowdsim::python {
@@ -27,13 +29,11 @@ Suite LoadSuiteOrThrow(const std::string& path, PluginRegistry& registry,
     // A training file read as a suite gives an unknown key for each of its own top-level keys
     // (policy, params, sensors, training) and a missing rows list: say what it is instead, as
     // `crowdsim-bench run` does.
-    for (const SuiteError& e : r.errors) {
-      if (e.key_path == "training" && e.message.starts_with("unknown key")) {
-        throw py::value_error(
-            path + " is a training file (train it with `crowdsim-bench train " + path +
-            "`); Env, VectorEnv, evaluate() and run_suite() take a suite, whose rows: list the "
-            "policies (e.g. suites/quick.yaml)");
-      }
+    if (KindOfSpecFile(path) == SpecFileKind::kTraining) {
+      throw py::value_error(
+          path + " is a training file (train it with `crowdsim-bench train " + path +
+          "`); Env, VectorEnv, evaluate() and run_suite() take a suite, whose rows: list the "
+          "policies (e.g. suites/quick.yaml)");
     }
     std::string msg;
     for (const auto& e : r.errors) {

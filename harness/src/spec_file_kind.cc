@@ -1,0 +1,20 @@
+#include "crowdsim/bench/spec_file_kind.h"
+
+#include <fstream>
+#include <string>
+
+namespace crowdsim {
+
+SpecFileKind KindOfSpecFile(const std::filesystem::path& file) {
+  std::ifstream f(file);
+  std::string line;
+  while (std::getline(f, line)) {
+    if (line.starts_with("training:") || line.starts_with("policy:")) {
+      return SpecFileKind::kTraining;
+    }
+    if (line.starts_with("rows:")) return SpecFileKind::kSuite;
+  }
+  return SpecFileKind::kUnknown;
+}
+
+}  // namespace crowdsim
