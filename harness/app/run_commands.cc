@@ -220,7 +220,9 @@ int RunCommand(const std::vector<std::string>& args) {
       PrintTitle(*suite, ThisRun(a));
       std::cout << s.table_markdown << "\n";
     }
-    for (const std::string& note : s.policy_errors) std::cerr << "note: " << note << "\n";
+    for (const PolicyErrorNote& note : s.policy_errors) {
+      std::cerr << "note: " << note.Format() << "\n";
+    }
     if (!s.policy_errors.empty()) {
       std::cerr << "note: every episode's message is in the error column of "
                 << (s.out_dir / "episodes.csv").string() << "\n";

@@ -124,6 +124,12 @@ RowsRefused::RowsRefused(std::vector<std::string> errors)
 
 fs::path DefaultRunDir(const Suite& suite) { return fs::path("runs") / suite.name; }
 
+std::string PolicyErrorNote::Format() const {
+  return "row '" + row + "': " + std::to_string(errors) + " of " + std::to_string(episodes) +
+         " episodes ended in policy_error; episode " + std::to_string(first_episode) + ": " +
+         first_error;
+}
+
 namespace {
 
 /// Which (row, episode) pairs a run covers: the first `episodes` of every row, or the shard's
@@ -228,22 +234,23 @@ std::vector<Task> PendingTasks(const Suite& suite, const RunScope& scope, const 
 }
 
 /// Per row with policy_error episodes among `done`: their count and the first one's message.
-std::vector<std::string> PolicyErrorNotes(const Suite& suite, const EpisodeLines& done) {
-  std::vector<std::string> notes;
+std::vector<PolicyErrorNote> PolicyErrorNotes(const Suite& suite, const EpisodeLines& done) {
+  std::vector<PolicyErrorNote> notes;
   for (const RowSpec& row : suite.rows) {
-    int total = 0, errors = 0;
+    PolicyErrorNote note;
+    note.row = row.label;
     const EpisodeLine* first = nullptr;
     for (auto it = done.lower_bound({row.label, 0});
          it != done.end() && it->first.first == row.label; ++it) {
-      ++total;
+      ++note.episodes;
       if (it->second.outcome.status != EpisodeStatus::kPolicyError) continue;
-      ++errors;
+      ++note.errors;
       if (first == nullptr) first = &it->second;
     }
     if (first == nullptr) continue;
-    notes.push_back("row '" + row.label + "': " + std::to_string(errors) + " of " +
-                    std::to_string(total) + " episodes ended in policy_error; episode " +
-                    std::to_string(first->episode) + ": " + first->outcome.error);
+    note.first_episode = first->episode;
+    note.first_error = first->outcome.error;
+    notes.push_back(std::move(note));
   }
   return notes;
 }

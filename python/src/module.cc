@@ -237,12 +237,11 @@ void WarnOfPolicyErrors(const RunSummary& summary) {
     const RowMetrics& m = r.metrics;
     if (m.policy_error_rate <= 0.0) continue;
     const auto failed = static_cast<long>(std::lround(m.policy_error_rate * m.episodes));
-    // summary.policy_errors: "row 'LABEL': N of M episodes ended in policy_error; episode K: ..."
     std::string first;
-    const std::string prefix = "row '" + r.Label() + "': ";
-    for (const std::string& note : summary.policy_errors) {
-      const auto at = note.find("; episode ");
-      if (note.starts_with(prefix) && at != std::string::npos) first = note.substr(at + 2);
+    for (const PolicyErrorNote& note : summary.policy_errors) {
+      if (note.row == r.Label()) {
+        first = "episode " + std::to_string(note.first_episode) + ": " + note.first_error;
+      }
     }
     const std::string message =
         std::to_string(failed) + " of " + std::to_string(m.episodes) + " episodes of row '" +

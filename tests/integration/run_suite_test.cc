@@ -763,7 +763,9 @@ rows:
   EXPECT_NE(csv.find("deliberate failure (fixture)"), std::string::npos);
   EXPECT_NE(csv.find("human 0's policy failed: deliberate failure (fixture)"), std::string::npos);
   // The run says so (the CLI prints these): an error is not only a column of the table.
-  EXPECT_EQ(r.policy_errors,
+  std::vector<std::string> notes;
+  for (const PolicyErrorNote& note : r.policy_errors) notes.push_back(note.Format());
+  EXPECT_EQ(notes,
             (std::vector<std::string>{
                 "row 'bad': 3 of 3 episodes ended in policy_error; episode 0: deliberate failure "
                 "(fixture)",

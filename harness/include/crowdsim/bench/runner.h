@@ -69,6 +69,17 @@ struct RunOptions {
   std::function<bool()> stop_requested;
 };
 
+/// A row's episodes that ended in policy_error (run or resumed) and the first one's message.
+struct PolicyErrorNote {
+  std::string row;
+  int errors = 0;
+  int episodes = 0;
+  int first_episode = 0;
+  std::string first_error;
+  /// "row 'a': 20 of 20 episodes ended in policy_error; episode 0: MESSAGE"
+  std::string Format() const;
+};
+
 struct RunSummary {
   std::vector<TableRow> rows;
   std::string table_markdown;
@@ -76,9 +87,9 @@ struct RunSummary {
   int episodes_resumed = 0;  ///< found on disk
   std::filesystem::path out_dir;
   /// Per row whose episodes (run or resumed) ended in policy_error: how many and the first
-  /// one's message ("row 'a': 20 of 20 episodes ended in policy_error; episode 0: ..."), for
-  /// the CLI to say; an error is otherwise only a column of the table.
-  std::vector<std::string> policy_errors;
+  /// one's message, for the CLI and the Python package to say; an error is otherwise only a
+  /// column of the table.
+  std::vector<PolicyErrorNote> policy_errors;
 };
 
 /// Joins the output folders of the shards of one suite run into `out_dir` and writes the tables
