@@ -1,5 +1,6 @@
 // `crowdsim-bench merge`: the shards of one suite run, checked and joined into the output a
 // single run writes (the tables are made by the runner's own resume of the joined episodes).
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <string>
@@ -48,6 +49,55 @@ std::string ShardCount(const std::string& shard) {
   return slash == std::string::npos ? std::string() : shard.substr(slash + 1);
 }
 
+// For an episode that no folder holds: which shard of N it belongs to (the runner's slice,
+// row-major position modulo N), and whether that shard's folder is missing or unfinished, with
+// every other shard that is missing or unfinished too. "" when the folders are not shards.
+std::string WhichShardLacks(const Suite& suite, long episodes, const std::string& count,
+                            const std::map<std::string, fs::path>& shard_dirs,
+                            const std::map<fs::path, long>& lines_in, size_t row, long episode) {
+  char* end = nullptr;
+  const long n = std::strtol(count.c_str(), &end, 10);
+  if (count.empty() || *end != '\0' || n < 1 || n > 1000000) return "";
+  // Each shard's share of the (row, episode) pairs.
+  std::vector<long> expected(static_cast<size_t>(n), 0);
+  const long pairs = static_cast<long>(suite.rows.size()) * episodes;
+  for (long p = 0; p < pairs; ++p) ++expected[static_cast<size_t>(p % n)];
+  auto name = [&](long k) { return std::to_string(k) + "/" + count; };
+  std::vector<std::string> missing, unfinished;
+  for (long k = 1; k <= n; ++k) {
+    const auto it = shard_dirs.find(name(k));
+    if (it == shard_dirs.end()) {
+      missing.push_back(name(k));
+      continue;
+    }
+    const long held = lines_in.count(it->second) ? lines_in.at(it->second) : 0;
+    if (held < expected[static_cast<size_t>(k - 1)]) {
+      unfinished.push_back("'" + it->second.string() + "' (shard " + name(k) + ") holds " +
+                           std::to_string(held) + " of its " +
+                           std::to_string(expected[static_cast<size_t>(k - 1)]) + " episodes");
+    }
+  }
+  const std::string owner = name((static_cast<long>(row) * episodes + episode) % n + 1);
+  std::string msg = "it belongs to shard " + owner + ".";
+  if (!missing.empty()) {
+    msg += " Missing: shard";
+    msg += missing.size() > 1 ? "s " : " ";
+    for (size_t i = 0; i < missing.size(); ++i) msg += (i ? ", " : "") + missing[i];
+    msg += missing.size() > 1
+               ? " (no folder given holds them: add their folders, or run each with --shard K/" +
+                     count + ")"
+               : " (no folder given holds it: add its folder, or run it with --shard " +
+                     missing.front() + ")";
+    msg += unfinished.empty() ? "." : ";";
+  }
+  if (!unfinished.empty()) {
+    msg += " Unfinished: ";
+    for (size_t i = 0; i < unfinished.size(); ++i) msg += (i ? ", " : "") + unfinished[i];
+    msg += " (rerun that shard's command: its finished episodes resume).";
+  }
+  return msg + " Then merge again";
+}
+
 // What the manifests of two folders of one suite record differently.
 std::string HowTheyDiffer(const fs::path& a, const fs::path& b) {
   const fs::path ma = a / "manifest.json", mb = b / "manifest.json";
@@ -65,6 +115,8 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   std::string hash, episodes_text, manifest_suite;
   std::map<std::pair<std::string, int>, std::pair<EpisodeLine, fs::path>> lines;
   std::set<std::string> shards_seen;
+  std::map<std::string, fs::path> shard_dir;  // "K/N" -> its folder
+  std::map<fs::path, long> lines_in;          // episodes each folder holds
   // The build that made each shard (COMMIT, SHARD or its folder): episodes of different code
   // are not one run, even when the configuration is the same.
   std::vector<std::pair<std::string, std::string>> shard_commits;
@@ -94,6 +146,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     if (!shard.empty() && !shards_seen.insert(shard).second) {
       throw RunRefused("shard " + shard + " is given twice ('" + dir.string() + "')");
     }
+    if (!shard.empty()) shard_dir[shard] = dir;
     // A shard's slice depends on the episode count (--episodes): other counts, other slices.
     if (const long n = ReadManifestInteger(manifest, "episodes"),
         first = ReadManifestInteger(shard_dirs.front() / "manifest.json", "episodes");
@@ -139,6 +192,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
                  : "in both '" + it->second.second.string() + "' and '" + dir.string() + "'"));
       }
       lines.emplace(key, std::make_pair(std::move(line), dir));
+      ++lines_in[dir];
     }
   }
   const fs::path file = suite_file.empty() ? fs::path(manifest_suite) : suite_file;
@@ -172,7 +226,10 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   }
   // Every (row, episode) exactly once, with the seed the suite gives it, nothing else.
   std::set<std::string> labels;
-  for (const RowSpec& row : suite.rows) {
+  const std::string shard_count =
+      ShardCount(ReadManifestField(shard_dirs.front() / "manifest.json", "shard"));
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    const RowSpec& row = suite.rows[r];
     labels.insert(row.label);
     std::shared_ptr<WorldSource> world;
     try {
@@ -193,10 +250,13 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
         }
       }
       if (!lines.count({row.label, k})) {
+        const std::string which =
+            WhichShardLacks(suite, episodes, shard_count, shard_dir, lines_in, r, k);
         throw RunRefused("episode " + std::to_string(k) + " of row '" + row.label +
-                         "' is in none of the " + std::to_string(shard_dirs.size()) +
-                         " folders: a shard is missing or unfinished "
-                         "(rerun it; finished episodes resume)");
+                         "' is in none of the " + std::to_string(shard_dirs.size()) + " folders: " +
+                         (which.empty() ? "a shard is missing or unfinished "
+                                          "(rerun it; finished episodes resume)"
+                                        : which));
       }
     }
   }

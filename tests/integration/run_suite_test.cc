@@ -494,6 +494,25 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   };
   EXPECT_NE(merge_error({shards[0], shards[1]}).find("is in none of the 2 folders"),
             std::string::npos);
+  // Which shard: missing, or unfinished (a shard cut short), named with its folder and count
+  // (the message said only "a shard is missing or unfinished", whichever it was).
+  EXPECT_NE(merge_error({shards[0], shards[1]})
+                .find("belongs to shard 3/3. Missing: shard 3/3 (no folder given holds it"),
+            std::string::npos)
+      << merge_error({shards[0], shards[1]});
+  EXPECT_NE(merge_error({shards[1]}).find("Missing: shards 1/3, 3/3"), std::string::npos)
+      << merge_error({shards[1]});
+  fs::copy(shards[2], dir_.path() / "cut");
+  {
+    const std::string csv = ReadText(shards[2] / "episodes.csv");
+    const size_t second_line = csv.find('\n', csv.find('\n') + 1) + 1;
+    std::ofstream(dir_.path() / "cut" / "episodes.csv") << csv.substr(0, second_line);
+  }
+  EXPECT_NE(merge_error({shards[0], shards[1], dir_.path() / "cut"})
+                .find("Unfinished: '" + (dir_.path() / "cut").string() +
+                      "' (shard 3/3) holds 1 of its 8 episodes (rerun that shard's command"),
+            std::string::npos)
+      << merge_error({shards[0], shards[1], dir_.path() / "cut"});
   EXPECT_NE(merge_error({shards[0], shards[1], shards[1]}).find("shard 2/3 is given twice"),
             std::string::npos);
   // A whole run's folder among shards; an episode in two shards (a shard's folder edited).
