@@ -30,9 +30,10 @@ run: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 900
 
-# Runs every Google Benchmark (one core each, one after another).
+# Runs every Google Benchmark (one core each, one after another); stops at one that fails.
+# build/bench/ also holds rvo2_overlap_stats, a helper of tests/bench/orca/overlap_stats.sh.
 bench: build
-	@for b in $(BUILD)/bench/*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
+	@for b in $(BUILD)/bench/*_bench; do echo "== $$b"; $$b --benchmark_min_time=0.2 || exit 1; done
 	@if [ -d $(BUILD)/python/crowdsim_bench ]; then echo "== tests/bench/python/env_bench.py"; \
 	  PYTHONPATH=$(BUILD)/python /usr/bin/python3 tests/bench/python/env_bench.py; fi
 
