@@ -250,9 +250,18 @@ int MergeCommand(const std::vector<std::string>& args) {
   const auto out = a.Get("--out");
   if (!out) throw UsageError("merge needs --out DIR (the folder of the joined results)");
   std::vector<std::filesystem::path> dirs(a.positional.begin(), a.positional.end());
-  PluginRegistry registry;
-  return MergeAndReport(dirs, *out, a.Get("--suite").value_or(""), registry,
-                        std::to_string(dirs.size()) + " folders", a.Has("--allow-mixed-commits"));
+  // Started by mpirun or srun with several ranks (a merge step in an MPI job script): rank 0
+  // merges and its exit status is the launch's; the others wait for it and exit 0 (every rank
+  // merged, and all but one were refused by the output folder's lock, which failed the launch).
+  const ProcessGroup group;
+  int code = 0;
+  if (group.rank() == 0) {
+    PluginRegistry registry;
+    code = MergeAndReport(dirs, *out, a.Get("--suite").value_or(""), registry,
+                          std::to_string(dirs.size()) + " folders", a.Has("--allow-mixed-commits"));
+  }
+  group.AllOk(code == 0);  // the others leave once rank 0 has finished
+  return code;
 }
 
 int ValidateCommand(const std::vector<std::string>& args) {

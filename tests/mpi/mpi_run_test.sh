@@ -16,6 +16,12 @@ diff <(cut -d, -f1-15,17- "$work/single/table.csv") <(cut -d, -f1-15,17- "$work/
 "$mpiexec" "${mpi_flags[@]}" -n 2 "$bin" run suites/baselines.yaml --episodes 25 --jobs 1 --out "$work/mpi" \
   > "$work/again.log" 2>&1 || { cat "$work/again.log"; fail "second mpirun"; }
 diff <(strip "$work/single/episodes.csv") <(strip "$work/mpi/episodes.csv") || fail "episodes differ after resuming"
+# merge started by mpirun (a merge step in an MPI job script): one merge, exit 0 (every rank
+# merged into the folder and all but one were refused by its lock: exit 2).
+"$mpiexec" "${mpi_flags[@]}" -n 2 "$bin" merge "$work/mpi/ranks/1of2" "$work/mpi/ranks/2of2" \
+  --out "$work/merged" > "$work/merge.log" 2>&1 || { cat "$work/merge.log"; fail "mpirun -n 2 merge"; }
+[[ $(grep -c "^wrote " "$work/merge.log") -eq 1 ]] || { cat "$work/merge.log"; fail "not one merge"; }
+diff <(strip "$work/single/episodes.csv") <(strip "$work/merged/episodes.csv") || fail "merged episodes differ"
 # A rank whose run fails (here its episodes.csv cannot be written) must not leave the others
 # waiting in a collective call: the launch ends with exit 1 and says so.
 mkdir -p "$work/broken/ranks/2of2/episodes.csv.tmp"
