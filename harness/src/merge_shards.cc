@@ -52,16 +52,19 @@ std::string ShardCount(const std::string& shard) {
 // For an episode that no folder holds: which shard of N it belongs to (the runner's slice,
 // row-major position modulo N), and whether that shard's folder is missing or unfinished, with
 // every other shard that is missing or unfinished too. "" when the folders are not shards.
-std::string WhichShardLacks(const Suite& suite, long episodes, const std::string& count,
+std::string WhichShardLacks(const Suite& suite, int episodes, const std::string& count,
                             const std::map<std::string, fs::path>& shard_dirs,
-                            const std::map<fs::path, long>& lines_in, size_t row, long episode) {
+                            const std::map<fs::path, long>& lines_in, size_t row, int episode) {
   char* end = nullptr;
   const long n = std::strtol(count.c_str(), &end, 10);
   if (count.empty() || *end != '\0' || n < 1 || n > 1000000) return "";
-  // Each shard's share of the (row, episode) pairs.
+  // Each shard's share of the (row, episode) pairs, as the runner slices them.
   std::vector<long> expected(static_cast<size_t>(n), 0);
-  const long pairs = static_cast<long>(suite.rows.size()) * episodes;
-  for (long p = 0; p < pairs; ++p) ++expected[static_cast<size_t>(p % n)];
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    for (int k = 0; k < episodes; ++k) {
+      ++expected[static_cast<size_t>(ShardOfEpisode(r, k, episodes, static_cast<int>(n)) - 1)];
+    }
+  }
   auto name = [&](long k) { return std::to_string(k) + "/" + count; };
   std::vector<std::string> missing, unfinished;
   for (long k = 1; k <= n; ++k) {
@@ -77,7 +80,7 @@ std::string WhichShardLacks(const Suite& suite, long episodes, const std::string
                            std::to_string(expected[static_cast<size_t>(k - 1)]) + " episodes");
     }
   }
-  const std::string owner = name((static_cast<long>(row) * episodes + episode) % n + 1);
+  const std::string owner = name(ShardOfEpisode(row, episode, episodes, static_cast<int>(n)));
   std::string msg = "it belongs to shard " + owner + ".";
   if (!missing.empty()) {
     msg += " Missing: shard";
@@ -250,8 +253,8 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
         }
       }
       if (!lines.count({row.label, k})) {
-        const std::string which =
-            WhichShardLacks(suite, episodes, shard_count, shard_dir, lines_in, r, k);
+        const std::string which = WhichShardLacks(suite, static_cast<int>(episodes), shard_count,
+                                                  shard_dir, lines_in, r, k);
         throw RunRefused("episode " + std::to_string(k) + " of row '" + row.label +
                          "' is in none of the " + std::to_string(shard_dirs.size()) + " folders: " +
                          (which.empty() ? "a shard is missing or unfinished "

@@ -124,6 +124,13 @@ RowsRefused::RowsRefused(std::vector<std::string> errors)
 
 fs::path DefaultRunDir(const Suite& suite) { return fs::path("runs") / suite.name; }
 
+int ShardOfEpisode(std::size_t row, int episode, int episodes, int shards) {
+  return static_cast<int>(
+             (row * static_cast<std::size_t>(episodes) + static_cast<std::size_t>(episode)) %
+             static_cast<std::size_t>(shards)) +
+         1;
+}
+
 std::string PolicyErrorNote::Format() const {
   return "row '" + row + "': " + std::to_string(errors) + " of " + std::to_string(episodes) +
          " episodes ended in policy_error; episode " + std::to_string(first_episode) + ": " +
@@ -140,9 +147,7 @@ struct RunScope {
   int shards = 1;
 
   bool Covers(size_t row, int k) const {
-    return (row * static_cast<size_t>(episodes) + static_cast<size_t>(k)) %
-               static_cast<size_t>(shards) ==
-           static_cast<size_t>(shard_index - 1);
+    return ShardOfEpisode(row, k, episodes, shards) == shard_index;
   }
 };
 

@@ -69,6 +69,10 @@ struct RunOptions {
   std::function<bool()> stop_requested;
 };
 
+/// The shard (1-based, of `shards`) that runs episode `episode` of row `row` when every row runs
+/// `episodes`: its position in row-major order modulo the shard count (RunOptions::shard_index).
+int ShardOfEpisode(std::size_t row, int episode, int episodes, int shards);
+
 /// A row's episodes that ended in policy_error (run or resumed) and the first one's message.
 struct PolicyErrorNote {
   std::string row;
