@@ -250,15 +250,28 @@ int MergeCommand(const std::vector<std::string>& args) {
   const auto out = a.Get("--out");
   if (!out) throw UsageError("merge needs --out DIR (the folder of the joined results)");
   std::vector<std::filesystem::path> dirs(a.positional.begin(), a.positional.end());
+  // Every option read before the ranks part: a usage error is then every rank's, not rank 0's
+  // alone while the others wait for it.
+  const std::string suite_file = a.Get("--suite").value_or("");
+  const bool allow_mixed_commits = a.Has("--allow-mixed-commits");
   // Started by mpirun or srun with several ranks (a merge step in an MPI job script): rank 0
-  // merges and its exit status is the launch's; the others wait for it and exit 0 (every rank
-  // merged, and all but one were refused by the output folder's lock, which failed the launch).
+  // merges and its exit status is the launch's; the others wait for it and exit 0. (Each rank
+  // merging, all but one refused by the output folder's lock, failed the launch.)
   const ProcessGroup group;
   int code = 0;
   if (group.rank() == 0) {
-    PluginRegistry registry;
-    code = MergeAndReport(dirs, *out, a.Get("--suite").value_or(""), registry,
-                          std::to_string(dirs.size()) + " folders", a.Has("--allow-mixed-commits"));
+    // Whatever rank 0 meets, it reaches the collective call below: the others wait in it.
+    try {
+      PluginRegistry registry;
+      code = MergeAndReport(dirs, *out, suite_file, registry,
+                            std::to_string(dirs.size()) + " folders", allow_mixed_commits);
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      code = 1;
+    } catch (...) {
+      std::cerr << "error: merge failed with a non-standard exception\n";
+      code = 1;
+    }
   }
   group.AllOk(code == 0);  // the others leave once rank 0 has finished
   return code;
