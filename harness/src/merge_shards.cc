@@ -1,5 +1,6 @@
 // `crowdsim-bench merge`: the shards of one suite run, checked and joined into the output a
 // single run writes (the tables are made by the runner's own resume of the joined episodes).
+#include <algorithm>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -70,7 +71,8 @@ std::string WhichShardLacks(const Suite& suite, int episodes, const std::string&
   for (long k = 1; k <= n; ++k) {
     const auto it = shard_dirs.find(name(k));
     if (it == shard_dirs.end()) {
-      missing.push_back(name(k));
+      // A shard of no episode (more shards than episodes) is not missing.
+      if (expected[static_cast<size_t>(k - 1)] > 0) missing.push_back(name(k));
       continue;
     }
     const long held = lines_in.count(it->second) ? lines_in.at(it->second) : 0;
@@ -82,10 +84,18 @@ std::string WhichShardLacks(const Suite& suite, int episodes, const std::string&
   }
   const std::string owner = name(ShardOfEpisode(row, episode, episodes, static_cast<int>(n)));
   std::string msg = "it belongs to shard " + owner + ".";
+  // At most ten names of a list, then how many more (a million shards made megabytes).
+  const auto listed = [](const std::vector<std::string>& names) {
+    constexpr size_t kShown = 10;
+    std::string text;
+    for (size_t i = 0; i < std::min(names.size(), kShown); ++i) text += (i ? ", " : "") + names[i];
+    if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
+    return text;
+  };
   if (!missing.empty()) {
     msg += " Missing: shard";
     msg += missing.size() > 1 ? "s " : " ";
-    for (size_t i = 0; i < missing.size(); ++i) msg += (i ? ", " : "") + missing[i];
+    msg += listed(missing);
     msg += missing.size() > 1
                ? " (no folder given holds them: add their folders, or run each with --shard K/" +
                      count + ")"
@@ -95,7 +105,7 @@ std::string WhichShardLacks(const Suite& suite, int episodes, const std::string&
   }
   if (!unfinished.empty()) {
     msg += " Unfinished: ";
-    for (size_t i = 0; i < unfinished.size(); ++i) msg += (i ? ", " : "") + unfinished[i];
+    msg += listed(unfinished);
     msg += " (rerun that shard's command: its finished episodes resume).";
   }
   return msg + " Then merge again";

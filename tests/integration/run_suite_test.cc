@@ -502,6 +502,24 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
       << merge_error({shards[0], shards[1]});
   EXPECT_NE(merge_error({shards[1]}).find("Missing: shards 1/3, 3/3"), std::string::npos)
       << merge_error({shards[1]});
+  // More shards than episodes (24 here): those of no episode are not missing, and a long list
+  // is cut after ten names (a million shards made a message of megabytes).
+  std::vector<std::filesystem::path> of_thirty;
+  for (int k = 1; k <= 2; ++k) {
+    RunOptions o;
+    o.out_dir = dir_.path() / ("of30_" + std::to_string(k));
+    o.shard_index = k;
+    o.shard_count = 30;
+    o.progress = false;
+    RunSuite(s, registry_, o);
+    of_thirty.push_back(o.out_dir);
+  }
+  const std::string thirty = merge_error(of_thirty);
+  EXPECT_NE(thirty.find("Missing: shards 3/30, 4/30, 5/30, 6/30, 7/30, 8/30, 9/30, 10/30, 11/30, "
+                        "12/30 and 12 more (no folder given"),
+            std::string::npos)
+      << thirty;
+  EXPECT_EQ(thirty.find("25/30"), std::string::npos) << thirty;
   fs::copy(shards[2], dir_.path() / "cut");
   {
     const std::string csv = ReadText(shards[2] / "episodes.csv");
