@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -142,8 +143,10 @@ void ReadRow(Reader& r, const YAML::Node& n, size_t index, const RowDefaults& d,
   ReadRowSpec(r, n, path, d, kSuiteRowRules, base, row);
   row->label = row->policy.plugin;
   if (n["label"]) {
-    // A label that is not text (a list, a map) read as "" and was called blank.
-    const auto label = r.String(n["label"], Reader::Child(path, "label"));
+    // A label that is not text (a list, a map) read as "" and was called blank; an empty one
+    // (`label:`) is blank.
+    const auto label = n["label"].IsNull() ? std::optional<std::string>("")
+                                           : r.String(n["label"], Reader::Child(path, "label"));
     row->label = label.value_or("");
     if (label) CheckLabel(r, n["label"], Reader::Child(path, "label"));
   }

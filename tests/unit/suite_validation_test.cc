@@ -200,6 +200,10 @@ TEST_F(SuiteValidation, ALabelOrDescriptionThatIsNotTextIsNamedAsSuch) {
       << All(r);
   EXPECT_NE(Find(r, "rows[2].label: must be a text value, found a list"), "") << All(r);
   EXPECT_EQ(Find(r, "must not be empty or blank"), "") << All(r);
+  // `label:` with no value is an empty label, as before, not "found nothing".
+  auto empty = Load(kGood + std::string("  - {label: , policy: linear}\n"));
+  ASSERT_FALSE(empty.suite);
+  EXPECT_NE(Find(empty, "rows[2].label: must not be empty or blank"), "") << All(empty);
 }
 
 // `columns:` names info keys: an item that is not text became a column without a name, one
