@@ -30,8 +30,9 @@ std::shared_ptr<OutputFolderLock> OutputFolderLock::Acquire(const fs::path& dir,
   }
   const fs::path file = dir / ".crowdsim-bench.lock";
   const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  // A folder we cannot open a file in is one we cannot write either: the writes say why. A
-  // file system without locks (errors other than "held") runs unlocked.
+  // A folder we cannot open a file in is one we cannot write either: a run has said so before
+  // (PrepareOutDir's write test), elsewhere the first write says why. A file system without
+  // locks (errors other than "held") runs unlocked.
   if (fd >= 0) {
     struct flock request {};
     request.l_type = F_WRLCK;

@@ -133,8 +133,11 @@ int ShardOfEpisode(std::size_t row, int episode, int episodes, int shards) {
 
 std::string PolicyErrorNote::Format() const {
   return "row '" + row + "': " + std::to_string(errors) + " of " + std::to_string(episodes) +
-         " episodes ended in policy_error; episode " + std::to_string(first_episode) + ": " +
-         first_error;
+         " episodes ended in policy_error; " + First();
+}
+
+std::string PolicyErrorNote::First() const {
+  return "episode " + std::to_string(first_episode) + ": " + first_error;
 }
 
 namespace {

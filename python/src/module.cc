@@ -233,20 +233,11 @@ void RefuseOtherResults(const Suite& suite, const std::filesystem::path& out) {
 // message (as the CLI does: without it a user had to open episodes.csv to see what was wrong)
 // and where the others are.
 void WarnOfPolicyErrors(const RunSummary& summary) {
-  for (const TableRow& r : summary.rows) {
-    const RowMetrics& m = r.metrics;
-    if (m.policy_error_rate <= 0.0) continue;
-    const auto failed = static_cast<long>(std::lround(m.policy_error_rate * m.episodes));
-    std::string first;
-    for (const PolicyErrorNote& note : summary.policy_errors) {
-      if (note.row == r.Label()) {
-        first = "episode " + std::to_string(note.first_episode) + ": " + note.first_error;
-      }
-    }
+  for (const PolicyErrorNote& note : summary.policy_errors) {
     const std::string message =
-        std::to_string(failed) + " of " + std::to_string(m.episodes) + " episodes of row '" +
-        r.Label() + "' ended as policy_error (the policy raised or returned a bad velocity)" +
-        (first.empty() ? std::string() : "; " + first) +
+        std::to_string(note.errors) + " of " + std::to_string(note.episodes) +
+        " episodes of row '" + note.row +
+        "' ended as policy_error (the policy raised or returned a bad velocity); " + note.First() +
         "\nthe messages are in the error column of " + (summary.out_dir / "episodes.csv").string();
     // Level 2: the warning points at the user's call of crowdsim_bench.evaluate, not at it.
     if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 2) != 0) throw py::error_already_set();

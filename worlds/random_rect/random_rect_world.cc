@@ -130,7 +130,8 @@ RandomRectWorld::RandomRectWorld(const Params& params) : options_(OptionsFrom(pa
         path, "the frozen sets ship with 1 and 3 obstacles; for " + std::to_string(obstacles) +
                   " run `crowdsim-make-rect-worlds --obstacles " + std::to_string(obstacles) +
                   " --split " + split + " --out " + path.string() +
-                  "` (in a build tree: build/bin/crowdsim-make-rect-worlds), or set "
+                  "` (in a build tree it is in the build folder's bin/, e.g. "
+                  "build/bin/crowdsim-make-rect-worlds), or set "
                   "CROWDSIM_DATA_DIR to the project's root folder");
     for (const WorldFile& w : layouts) {
       if (static_cast<int>(w.rectangles.size()) != kWallCount + obstacles) {

@@ -71,6 +71,7 @@ struct RunOptions {
 
 /// The shard (1-based, of `shards`) that runs episode `episode` of row `row` when every row runs
 /// `episodes`: its position in row-major order modulo the shard count (RunOptions::shard_index).
+/// `shards` >= 1.
 int ShardOfEpisode(std::size_t row, int episode, int episodes, int shards);
 
 /// A row's episodes that ended in policy_error (run or resumed) and the first one's message.
@@ -82,6 +83,8 @@ struct PolicyErrorNote {
   std::string first_error;
   /// "row 'a': 20 of 20 episodes ended in policy_error; episode 0: MESSAGE"
   std::string Format() const;
+  /// Its last part: "episode 0: MESSAGE".
+  std::string First() const;
 };
 
 struct RunSummary {
