@@ -457,20 +457,24 @@ TEST_F(RunSuiteTest, DataFilesNoParameterNamesCountWithTheirContent) {
 TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   const Suite s = LoadOrDie(kSuite);
   Run(s, "whole", 2);
+  // Shard k of n into `folder`; the episodes it ran.
+  auto run_shard = [&](int k, int n, const fs::path& folder) {
+    RunOptions o;
+    o.out_dir = folder;
+    o.shard_index = k;
+    o.shard_count = n;
+    o.progress = false;
+    return RunSuite(s, registry_, o).episodes_run;
+  };
   std::vector<std::filesystem::path> shards;
   int episodes = 0;
   for (int k = 1; k <= 3; ++k) {
-    RunOptions o;
-    o.out_dir = dir_.path() / ("shard" + std::to_string(k));
-    o.shard_index = k;
-    o.shard_count = 3;
-    o.progress = false;
-    episodes += RunSuite(s, registry_, o).episodes_run;
-    EXPECT_FALSE(std::filesystem::exists(o.out_dir / "table.md"));
-    EXPECT_NE(
-        ReadText(o.out_dir / "manifest.json").find("\"shard\": \"" + std::to_string(k) + "/3\""),
-        std::string::npos);
-    shards.push_back(o.out_dir);
+    const fs::path folder = dir_.path() / ("shard" + std::to_string(k));
+    episodes += run_shard(k, 3, folder);
+    EXPECT_FALSE(std::filesystem::exists(folder / "table.md"));
+    EXPECT_NE(ReadText(folder / "manifest.json").find("\"shard\": \"" + std::to_string(k) + "/3\""),
+              std::string::npos);
+    shards.push_back(folder);
   }
   EXPECT_EQ(episodes, 2 * 12);  // disjoint slices that cover the suite
   const fs::path suite_file = dir_.path() / "suite.yaml";
@@ -506,13 +510,8 @@ TEST_F(RunSuiteTest, ShardsMergeIntoTheSingleRun) {
   // is cut after ten names (a million shards made a message of megabytes).
   std::vector<std::filesystem::path> of_thirty;
   for (int k = 1; k <= 2; ++k) {
-    RunOptions o;
-    o.out_dir = dir_.path() / ("of30_" + std::to_string(k));
-    o.shard_index = k;
-    o.shard_count = 30;
-    o.progress = false;
-    RunSuite(s, registry_, o);
-    of_thirty.push_back(o.out_dir);
+    of_thirty.push_back(dir_.path() / ("of30_" + std::to_string(k)));
+    run_shard(k, 30, of_thirty.back());
   }
   const std::string thirty = merge_error(of_thirty);
   EXPECT_NE(thirty.find("Missing: shards 3/30, 4/30, 5/30, 6/30, 7/30, 8/30, 9/30, 10/30, 11/30, "
