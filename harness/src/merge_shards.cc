@@ -50,12 +50,15 @@ std::string ShardCount(const std::string& shard) {
   return slash == std::string::npos ? std::string() : shard.substr(slash + 1);
 }
 
+// The episodes the folders hold, by (row label, episode), each with the folder it came from.
+using EpisodesByKey = std::map<std::pair<std::string, int>, std::pair<EpisodeLine, fs::path>>;
+
 // For an episode that no folder holds: which shard of N it belongs to (the runner's slice,
 // row-major position modulo N), and whether that shard's folder is missing or unfinished, with
 // every other shard that is missing or unfinished too. "" when the folders are not shards.
 std::string WhichShardLacks(const Suite& suite, int episodes, const std::string& count,
                             const std::map<std::string, fs::path>& shard_dirs,
-                            const std::map<fs::path, long>& lines_in, size_t row, int episode) {
+                            const EpisodesByKey& lines, size_t row, int episode) {
   char* end = nullptr;
   const long n = std::strtol(count.c_str(), &end, 10);
   if (count.empty() || *end != '\0' || n < 1 || n > 1000000) return "";
@@ -75,7 +78,9 @@ std::string WhichShardLacks(const Suite& suite, int episodes, const std::string&
       if (expected[static_cast<size_t>(k - 1)] > 0) missing.push_back(name(k));
       continue;
     }
-    const long held = lines_in.count(it->second) ? lines_in.at(it->second) : 0;
+    const long held = std::count_if(lines.begin(), lines.end(), [&](const auto& held_line) {
+      return held_line.second.second == it->second;
+    });
     if (held < expected[static_cast<size_t>(k - 1)]) {
       unfinished.push_back("'" + it->second.string() + "' (shard " + name(k) + ") holds " +
                            std::to_string(held) + " of its " +
@@ -126,10 +131,8 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
                        bool allow_mixed_commits) {
   if (shard_dirs.empty()) throw RunRefused("merge needs the output folders of the shards");
   std::string hash, episodes_text, manifest_suite;
-  std::map<std::pair<std::string, int>, std::pair<EpisodeLine, fs::path>> lines;
-  std::set<std::string> shards_seen;
+  EpisodesByKey lines;
   std::map<std::string, fs::path> shard_dir;  // "K/N" -> its folder
-  std::map<fs::path, long> lines_in;          // episodes each folder holds
   // The build that made each shard (COMMIT, SHARD or its folder): episodes of different code
   // are not one run, even when the configuration is the same.
   std::vector<std::pair<std::string, std::string>> shard_commits;
@@ -156,10 +159,9 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
                        dir.string() + "' " + ShardName(shard) +
                        ": the shards of one run are K/N with one N");
     }
-    if (!shard.empty() && !shards_seen.insert(shard).second) {
+    if (!shard.empty() && !shard_dir.emplace(shard, dir).second) {
       throw RunRefused("shard " + shard + " is given twice ('" + dir.string() + "')");
     }
-    if (!shard.empty()) shard_dir[shard] = dir;
     // A shard's slice depends on the episode count (--episodes): other counts, other slices.
     if (const long n = ReadManifestInteger(manifest, "episodes"),
         first = ReadManifestInteger(shard_dirs.front() / "manifest.json", "episodes");
@@ -205,7 +207,6 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
                  : "in both '" + it->second.second.string() + "' and '" + dir.string() + "'"));
       }
       lines.emplace(key, std::make_pair(std::move(line), dir));
-      ++lines_in[dir];
     }
   }
   const fs::path file = suite_file.empty() ? fs::path(manifest_suite) : suite_file;
@@ -263,8 +264,8 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
         }
       }
       if (!lines.count({row.label, k})) {
-        const std::string which = WhichShardLacks(suite, static_cast<int>(episodes), shard_count,
-                                                  shard_dir, lines_in, r, k);
+        const std::string which =
+            WhichShardLacks(suite, static_cast<int>(episodes), shard_count, shard_dir, lines, r, k);
         throw RunRefused("episode " + std::to_string(k) + " of row '" + row.label +
                          "' is in none of the " + std::to_string(shard_dirs.size()) + " folders: " +
                          (which.empty() ? "a shard is missing or unfinished "
