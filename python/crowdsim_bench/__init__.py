@@ -17,6 +17,7 @@ the suite: `reset(seed=k)` (or `options={"episode": k}`) is episode k of the row
 from __future__ import annotations
 
 import math
+import os
 import sys
 from typing import Any, Callable, Sequence
 
@@ -292,6 +293,18 @@ class _DiscreteSpace:
         return _is_whole(x) and 0 <= int(x) < self.n
 
 
+def _out_folder(out) -> str:
+    """evaluate's and run_suite's `out`: a folder as a str or os.PathLike (pathlib.Path), or
+    None (or "") for the default folder under runs/."""
+    if out is None:
+        return ""
+    try:
+        return os.fspath(out)
+    except TypeError:
+        raise TypeError(f"out must be a folder path (a str or pathlib.Path), or None for the "
+                        f"default folder under runs/; got {out!r}") from None
+
+
 def _episode_count(episodes) -> int:
     """evaluate's and run_suite's `episodes`: None (or -1) for the suite's own count."""
     if episodes is None or (_is_whole(episodes) and episodes == -1):
@@ -303,8 +316,8 @@ def _episode_count(episodes) -> int:
 
 
 def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
-             label: str = "python", out: str = "", episodes: int | None = None,
-             fresh: bool = True, set: Sequence[str] | str = (),
+             label: str = "python", out: str | os.PathLike | None = None,
+             episodes: int | None = None, fresh: bool = True, set: Sequence[str] | str = (),
              progress: bool = False) -> list[dict]:
     """Runs one suite row with `policy(obs) -> (vx, vy)` as the robot (obs as in Env) and writes
     the CLI's outputs (table.md, table.csv, episodes.csv, manifest.json) to `out` (default
@@ -318,13 +331,13 @@ def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
     else (a CLI run, another row or label, the suite or set= since changed) is refused: remove
     it or give another `out`. `fresh=False` resumes stored episodes: only safe when the
     policy has not changed since."""
-    return _core.evaluate(policy, str(suite), row, label, out, _episode_count(episodes), fresh,
-                          _settings(set), progress)
+    return _core.evaluate(policy, str(suite), row, label, _out_folder(out),
+                          _episode_count(episodes), fresh, _settings(set), progress)
 
 
-def run_suite(suite: str, *, out: str = "", jobs: int = 1, episodes: int | None = None,
-              fresh: bool = False, set: Sequence[str] | str = (), progress: bool = False,
-              dataframe: bool = False):
+def run_suite(suite: str, *, out: str | os.PathLike | None = None, jobs: int = 1,
+              episodes: int | None = None, fresh: bool = False, set: Sequence[str] | str = (),
+              progress: bool = False, dataframe: bool = False):
     """Runs a suite file as `crowdsim-bench run` does (results in `out`, default runs/<name>/);
     returns its table as a list of dicts (a pandas DataFrame with dataframe=True)."""
     if not _is_whole(jobs) or not 1 <= jobs <= _core.MAX_JOBS:
@@ -336,8 +349,8 @@ def run_suite(suite: str, *, out: str = "", jobs: int = 1, episodes: int | None 
             raise ModuleNotFoundError(
                 "run_suite(dataframe=True) needs pandas (apt install python3-pandas); "
                 "without dataframe=True the table comes as a list of dicts") from e
-    rows = _core.run_suite(str(suite), out, int(jobs), _episode_count(episodes), fresh,
-                           _settings(set), progress)
+    rows = _core.run_suite(str(suite), _out_folder(out), int(jobs), _episode_count(episodes),
+                           fresh, _settings(set), progress)
     if dataframe:
         return pd.DataFrame(rows)
     return rows

@@ -4,6 +4,7 @@ python/ folder on PYTHONPATH, from the source root."""
 import csv
 import math
 import os
+import pathlib
 import subprocess
 import sys
 import tempfile
@@ -321,6 +322,27 @@ class Evaluate(unittest.TestCase):
             self.assertEqual([r["label"] for r in rows], ["linear", "orca"])
             self.assertTrue(all(r["episodes"] == 3 for r in rows))
             self.assertTrue(all(0.0 <= r["success"] <= 1.0 for r in rows))
+
+    def test_out_takes_a_pathlib_path_and_none_for_the_default(self):
+        # suite= took a pathlib.Path but out= did not: pybind11's "incompatible function
+        # arguments" listing of the core's signature, for a Path or None.
+        with tempfile.TemporaryDirectory() as root:
+            out = pathlib.Path(root) / "mine"
+            rows = cb.evaluate(straight_to_goal, pathlib.Path(QUICK), out=out, episodes=1)
+            self.assertEqual(rows[0]["episodes"], 1)
+            self.assertTrue((out / "episodes.csv").is_file())
+            cb.run_suite(pathlib.Path(QUICK), out=pathlib.Path(root) / "suite", episodes=1)
+            self.assertTrue((pathlib.Path(root) / "suite" / "table.md").is_file())
+            suite, here = os.path.abspath(QUICK), os.getcwd()
+            os.chdir(root)
+            try:
+                cb.evaluate(straight_to_goal, suite, out=None, episodes=1)
+            finally:
+                os.chdir(here)
+            self.assertTrue(os.path.isfile(os.path.join(root, "runs", "quick.python",
+                                                        "episodes.csv")))
+            with self.assertRaisesRegex(TypeError, "out must be a folder path"):
+                cb.run_suite(QUICK, out=5, episodes=1)
 
 
 def batched_straight_to_goal(obs, time_step=0.25):
