@@ -305,6 +305,21 @@ def _out_folder(out) -> str:
                         f"default folder under runs/; got {out!r}") from None
 
 
+def _row_label(label, out: str) -> str:
+    """evaluate's `label`: a row label as a suite's (not blank, no control characters) and,
+    when it names the default folder runs/<suite name>.<label>, a folder name as a suite's
+    `name` (a '/' made nested folders, '../' one outside runs/)."""
+    if not isinstance(label, str):
+        raise TypeError(f"label must be a str (the row's label in the tables), got {label!r}")
+    if not label.strip() or any(ord(c) < 32 or ord(c) == 127 for c in label):
+        raise ValueError(f"label must not be blank or contain control characters (line breaks, "
+                         f"tabs), as a suite row's label; got {label!r}")
+    if not out and not all(c.isascii() and (c.isalnum() or c in "_-.") for c in label):
+        raise ValueError(f"label {label!r} names the default output folder runs/<suite name>."
+                         f"<label>/: use only letters, digits, '_', '-', '.' in it, or give out=")
+    return label
+
+
 def _episode_count(episodes) -> int:
     """evaluate's and run_suite's `episodes`: None (or -1) for the suite's own count."""
     if episodes is None or (_is_whole(episodes) and episodes == -1):
@@ -325,13 +340,15 @@ def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
     dicts. A policy that raises ends that episode as policy_error with the message
     (episodes.csv's `error` column; a RuntimeWarning says how many). Ctrl-C (or a
     KeyboardInterrupt / SystemExit from the policy) stops the evaluation: the finished episodes
-    stay in `out`, and the exception is raised again here. `episodes`: None for the suite's
-    count. `fresh=True` plays every episode again, replacing the results of an earlier
+    stay in `out`, and the exception is raised again here. `label` names the row in the tables
+    (and, without `out`, the folder: letters, digits, '_', '-', '.'). `episodes`: None for the
+    suite's count. `fresh=True` plays every episode again, replacing the results of an earlier
     evaluation in `out` of the same row, label and suite settings; a folder holding anything
     else (a CLI run, another row or label, the suite or set= since changed) is refused: remove
     it or give another `out`. `fresh=False` resumes stored episodes: only safe when the
     policy has not changed since."""
-    return _core.evaluate(policy, str(suite), row, label, _out_folder(out),
+    out = _out_folder(out)
+    return _core.evaluate(policy, str(suite), row, _row_label(label, out), out,
                           _episode_count(episodes), fresh, _settings(set), progress)
 
 

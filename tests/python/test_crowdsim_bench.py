@@ -323,6 +323,27 @@ class Evaluate(unittest.TestCase):
             self.assertTrue(all(r["episodes"] == 3 for r in rows))
             self.assertTrue(all(0.0 <= r["success"] <= 1.0 for r in rows))
 
+    def test_a_label_that_cannot_name_the_row_or_its_folder_is_refused(self):
+        # label="a/b" wrote runs/quick.a/b/, "../x" wrote runs/x/, "" a row without a label.
+        with tempfile.TemporaryDirectory() as root:
+            suite, here = os.path.abspath(QUICK), os.getcwd()
+            os.chdir(root)
+            try:
+                for bad in ("a/b", "../escape", "a b"):
+                    with self.assertRaisesRegex(ValueError, "default output folder", msg=bad):
+                        cb.evaluate(straight_to_goal, suite, label=bad, episodes=1)
+                for bad in ("", "  ", "two\nlines"):
+                    with self.assertRaisesRegex(ValueError, "blank or contain control",
+                                                msg=repr(bad)):
+                        cb.evaluate(straight_to_goal, suite, label=bad, out="given", episodes=1)
+                with self.assertRaisesRegex(TypeError, "label must be a str"):
+                    cb.evaluate(straight_to_goal, suite, label=5, out="given", episodes=1)
+                self.assertEqual(os.listdir(root), [])  # nothing ran
+                rows = cb.evaluate(straight_to_goal, suite, label="a b", out="given", episodes=1)
+                self.assertEqual(rows[0]["label"], "a b")  # any label, in a folder given
+            finally:
+                os.chdir(here)
+
     def test_out_takes_a_pathlib_path_and_none_for_the_default(self):
         # suite= took a pathlib.Path but out= did not: pybind11's "incompatible function
         # arguments" listing of the core's signature, for a Path or None.
