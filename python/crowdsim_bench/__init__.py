@@ -245,7 +245,9 @@ class Env(_Base):
         return self._env.render(1.0)
 
     def close(self):
-        pass
+        """Releases the episode and the suite row (a process holds at most 256 Env, VectorEnv
+        and running evaluate() at once); the Env cannot be used afterwards."""
+        self._env = _Closed("Env")
 
     # -- extras ------------------------------------------------------------------------------
     @property
@@ -274,6 +276,18 @@ class Env(_Base):
     def _obs(obs: dict) -> dict:
         obs["time"] = np.asarray(obs["time"], dtype=np.float64)
         return obs
+
+
+class _Closed:
+    """Stands in for the core object of a closed Env or VectorEnv: any use is a clear error."""
+
+    def __init__(self, what: str):
+        self._what = what
+
+    def __getattr__(self, name):
+        what = self.__dict__.get("_what", "environment")
+        raise ValueError(f"this {what} was closed (close() released its suite row): "
+                         f"make a new one")
 
 
 class _DiscreteSpace:

@@ -95,4 +95,7 @@ class VectorEnv:
         return obs, reward, terminated, truncated, {"status": status, "episode": episode}
 
     def close(self):
-        pass
+        """Releases the environments and the suite row; the VectorEnv cannot be used
+        afterwards."""
+        from . import _Closed
+        self._env = _Closed("VectorEnv")

@@ -473,6 +473,27 @@ class UserMistakes(unittest.TestCase):
             with self.assertRaisesRegex(ValueError, "before reset"):
                 cb.VectorEnv(QUICK, row="orca", num_envs=n).step(np.zeros((n, 2)))
 
+    def test_close_releases_the_row_and_a_closed_env_says_so(self):
+        # close() kept the suite row: 256 closed but referenced Envs (a list of them, as in a
+        # sweep) made the 257th fail with "close those you no longer use", which it had done.
+        kept = []
+        for _ in range(300):  # CrowdNav's open world: quicker to load than the rect layouts
+            env = cb.Env(QUICK, row="orca", set="world={source: crowdnav}")
+            env.close()
+            kept.append(env)
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=2)
+        venv.close()
+        for use in (lambda: kept[0].reset(seed=0), lambda: kept[0].episodes,
+                    lambda: venv.reset(seed=0), lambda: venv.step(np.zeros((2, 2)))):
+            with self.assertRaisesRegex(ValueError, "was closed"):
+                use()
+        env = cb.Env(QUICK, row="orca")
+        env.reset(seed=0)
+        env.close()
+        with self.assertRaisesRegex(ValueError, "was closed"):
+            env.step([0.5, 0.0])
+        env.close()  # twice is fine, as in Gymnasium
+
     def test_discrete_actions_must_be_whole_indices_in_range(self):
         env = cb.Env(QUICK, row="orca", discrete=True)
         env.reset(seed=0)
