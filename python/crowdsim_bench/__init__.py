@@ -242,6 +242,7 @@ class Env(_Base):
         array, drawn as the CLI's animation frames are (map, trails, discs, clock, key)."""
         if self.render_mode != "rgb_array":
             return None
+        self._require_episode("render()")
         return self._env.render(1.0)
 
     def close(self):
@@ -261,8 +262,7 @@ class Env(_Base):
 
     def result(self) -> dict:
         """The current episode's metrics (status, time, path length, ...)."""
-        if self._episode < 0:  # the constructor's probe episode is not the user's
-            raise ValueError("result() before reset(): no episode yet, call reset() first")
+        self._require_episode("result()")
         return self._env.result()
 
     def positions(self) -> np.ndarray:
@@ -270,7 +270,12 @@ class Env(_Base):
         if not self._record:
             raise ValueError("positions() needs the episode recorded: Env(..., record=True) "
                              "(or render_mode='rgb_array')")
+        self._require_episode("positions()")
         return self._env.positions()
+
+    def _require_episode(self, what: str):
+        if self._episode < 0:  # the constructor's probe episode is not the user's
+            raise ValueError(f"{what} before reset(): no episode yet, call reset() first")
 
     @staticmethod
     def _obs(obs: dict) -> dict:

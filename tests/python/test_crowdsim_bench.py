@@ -469,6 +469,12 @@ class UserMistakes(unittest.TestCase):
     def test_stepping_before_reset_is_an_error(self):
         with self.assertRaisesRegex(ValueError, "before reset"):
             cb.Env(QUICK, row="orca").step([0.5, 0.0])
+        # render() said to pass render_mode="rgb_array", which the caller had; positions()
+        # gave the constructor's probe episode as an empty (0, 1, 2) array.
+        with self.assertRaisesRegex(ValueError, r"render\(\) before reset"):
+            cb.Env(QUICK, row="orca", render_mode="rgb_array").render()
+        with self.assertRaisesRegex(ValueError, r"positions\(\) before reset"):
+            cb.Env(QUICK, row="orca", record=True).positions()
         for n in (1, 2, 3):  # the sub-environments past the first were never started
             with self.assertRaisesRegex(ValueError, "before reset"):
                 cb.VectorEnv(QUICK, row="orca", num_envs=n).step(np.zeros((n, 2)))
