@@ -10,7 +10,7 @@ namespace crowdsim::python {
 
 std::string InPythonTerms(std::string message) {
   for (const auto& [cli, python] : {std::pair<std::string, std::string>{"--fresh", "fresh=True"},
-                                    {"--out ", "out="},
+                                    {"--out", "out="},  // "choose another --out"
                                     {"--episodes ", "episodes="},
                                     {"no --set", "no set="},  // a run's overrides (manifest)
                                     {"--set ", "set="}}) {

@@ -537,6 +537,22 @@ class UserMistakes(unittest.TestCase):
                 self.assertNotIn("--set", msg)
             self.assertFalse(os.listdir(out))  # nothing ran
 
+    def test_a_refused_out_folder_is_named_as_the_python_argument(self):
+        # It said "Choose another with --out." and "or out=to write elsewhere".
+        with tempfile.TemporaryDirectory() as root:
+            a_file = os.path.join(root, "a_file")
+            open(a_file, "w").close()
+            cb.run_suite(QUICK, out=os.path.join(root, "run"), episodes=1)
+            for call in (lambda: cb.evaluate(straight_to_goal, QUICK, out=a_file, episodes=1),
+                         lambda: cb.run_suite(QUICK, out=os.path.join(root, "run"), episodes=1,
+                                              set="humans.count=3")):
+                with self.assertRaises(ValueError) as caught:
+                    call()
+                msg = str(caught.exception)
+                self.assertIn("out=", msg)
+                self.assertNotIn("--out", msg)
+                self.assertNotIn("out=to", msg)
+
     def test_counts_out_of_range_are_refused_as_by_the_cli(self):
         with tempfile.TemporaryDirectory() as out:
             for episodes in (0, -5, 2.5, True):
