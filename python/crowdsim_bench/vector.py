@@ -31,7 +31,10 @@ class VectorEnv:
 
     def __init__(self, suite: str, row: str | int = 1, num_envs: int = 16, *,
                  set: Sequence[str] | str = (), discrete: bool = False, threads: int = 1):
-        from . import _box, _dict, _discrete_space, _settings, holonomic_actions  # no cycle
+        from . import _box, _dict, _discrete_space, _is_whole, _settings, holonomic_actions
+        for name, count in (("num_envs", num_envs), ("threads", threads)):
+            if not _is_whole(count) or count < 1:  # 2.5 ran 2, threads=0 or -3 ran one
+                raise ValueError(f"{name} must be a whole number >= 1, got {count!r}")
         settings = _settings(set)
         self._env = _core.VectorEnv(str(suite), row, int(num_envs), settings, int(threads))
         self.num_envs = self._env.num_envs

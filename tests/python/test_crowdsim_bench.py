@@ -440,6 +440,16 @@ class VectorEnvContract(unittest.TestCase):
                 ended = term or trunc
             self.assertTrue(ended, f"env {i}: episode {episode} did not end in the steps run")
 
+    def test_counts_must_be_whole_numbers_of_at_least_one(self):
+        # num_envs=2.5 made 2 environments and threads=0 or -3 one thread, without a word.
+        for kwargs in ({"num_envs": 2.5}, {"num_envs": 0}, {"num_envs": True},
+                       {"num_envs": "2"}, {"num_envs": 2, "threads": 0},
+                       {"num_envs": 2, "threads": -3}, {"num_envs": 2, "threads": 1.5}):
+            with self.assertRaisesRegex(ValueError, "must be a whole number >= 1",
+                                        msg=repr(kwargs)):
+                cb.VectorEnv(QUICK, row="orca", **kwargs)
+        self.assertEqual(cb.VectorEnv(QUICK, row="orca", num_envs=np.int64(2)).num_envs, 2)
+
     def test_threads_do_not_change_the_batches(self):
         _, one = self.run_batches(threads=1)
         venv, two = self.run_batches(threads=2)
