@@ -250,6 +250,18 @@ class Env(_Base):
         and running evaluate() at once); the Env cannot be used afterwards."""
         self._env = _Closed("Env")
 
+    # gymnasium.Env's `with` and `unwrapped`, for machines without gymnasium (Debian 12)
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc_info):
+        self.close()
+        return False
+
+    @property
+    def unwrapped(self):
+        return self
+
     # -- extras ------------------------------------------------------------------------------
     @property
     def episodes(self) -> int:

@@ -102,3 +102,10 @@ class VectorEnv:
         afterwards."""
         from . import _Closed
         self._env = _Closed("VectorEnv")
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc_info):
+        self.close()
+        return False

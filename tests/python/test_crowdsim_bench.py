@@ -58,6 +58,19 @@ class EnvContract(unittest.TestCase):
         self.assertIn("status", info)
         self.assertAlmostEqual(float(obs2["time"]), 0.25)
 
+    def test_with_and_unwrapped_work_without_gymnasium_too(self):
+        # Without gymnasium (Debian 12) `with cb.Env(...)` was a TypeError and env.unwrapped
+        # an AttributeError: gymnasium.Env's, which Env claims to work the same without.
+        with cb.Env(QUICK, row="orca") as env:
+            self.assertIs(env.unwrapped, env)
+            env.reset(seed=0)
+        with self.assertRaisesRegex(ValueError, "was closed"):  # `with` closed it
+            env.reset(seed=0)
+        with cb.VectorEnv(QUICK, row="orca", num_envs=2) as venv:
+            venv.reset(seed=0)
+        with self.assertRaisesRegex(ValueError, "was closed"):
+            venv.reset(seed=0)
+
     def test_other_sensors_features_come_under_their_name(self):
         env = cb.Env(QUICK, row="orca",
                      set=["rows[orca].sensors=[person, {type: lidar2d, beams: 45}, route]"])
