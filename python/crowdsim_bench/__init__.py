@@ -204,6 +204,10 @@ class Env(_Base):
 
     # -- Gymnasium API -----------------------------------------------------------------------
     def reset(self, *, seed: int | None = None, options: dict | None = None):
+        """Starts an episode of the row and returns (obs, info). `seed=k` (or
+        `options={"episode": k}`, which wins) is the suite's episode k, the same scenario as
+        episode k of `crowdsim-bench run`, not a random seed; without either, the episode after
+        the last one (0 first). info: `episode`, `layout` (the world's name)."""
         if options and "episode" in options:
             episode = _episode_index(options["episode"], 'options["episode"]')
         elif seed is not None:
@@ -219,6 +223,12 @@ class Env(_Base):
         return self._obs(obs), {"episode": episode, "layout": self._env.result()["layout"]}
 
     def step(self, action):
+        """Moves the robot for one time step and returns (obs, reward, terminated, truncated,
+        info). `action`: a velocity (vx, vy) in m/s, world frame (any array-like of two finite
+        numbers), or with `discrete=True` an index into `actions`. `terminated` on success,
+        collision or policy_error (a velocity above 10 x v_pref), `truncated` on timeout;
+        info["status"] names the outcome and, at the episode's end, info also holds its metrics
+        (those of `result()`). Stepping an ended episode is an error: call reset()."""
         if self._episode < 0:
             raise ValueError("step() before reset(): call reset() first (Gymnasium's order)")
         if self.discrete:
@@ -368,7 +378,9 @@ def evaluate(policy: Callable[[dict], Any], suite: str, row: str | int = 1, *,
     """Runs one suite row with `policy(obs) -> (vx, vy)` as the robot (obs as in Env) and writes
     the CLI's outputs (table.md, table.csv, episodes.csv, manifest.json) to `out` (default
     runs/<suite name>.<label>/, beside the CLI's runs/<suite name>/). Returns the table rows as
-    dicts. A policy that raises ends that episode as policy_error with the message
+    dicts. The policy is called once per step, episode after episode, with no reset: one that
+    keeps state across steps (a recurrent network) starts an episode when obs["time"] == 0.
+    A policy that raises ends that episode as policy_error with the message
     (episodes.csv's `error` column; a RuntimeWarning says how many). Ctrl-C (or a
     KeyboardInterrupt / SystemExit from the policy) stops the evaluation: the finished episodes
     stay in `out`, and the exception is raised again here. `label` names the row in the tables

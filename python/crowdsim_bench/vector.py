@@ -69,6 +69,8 @@ class VectorEnv:
         return self._env.threads
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
+        """Starts episodes k, k+1, ..., k+n-1 of the row (k: `seed` or `options["episode"]`,
+        default 0) and returns (obs, info) with info["episode"] (n,)."""
         from . import _MAX_EPISODE, _episode_index
         if options and "episode" in options:
             first = _episode_index(options["episode"], 'options["episode"]')
@@ -82,6 +84,10 @@ class VectorEnv:
         return obs, {"episode": episode}
 
     def step(self, actions):
+        """Steps every sub-environment: `actions` (n, 2) velocities (m/s, world frame) or, with
+        `discrete=True`, (n,) indices into `actions`. Returns obs, reward (n,), terminated (n,),
+        truncated (n,), info with `status` (n,) codes into STATUS_NAMES and `episode` (n,).
+        A sub-environment that ended is reset on the next step, its action ignored."""
         if self.discrete:
             from . import _action_indices
             velocities = self.actions[_action_indices(actions, len(self.actions), (self.num_envs,))]
