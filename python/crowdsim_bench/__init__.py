@@ -58,6 +58,11 @@ class Box:
         self._rng = np.random.default_rng(seed)
 
     def sample(self):
+        if self.dtype == np.bool_ or np.issubdtype(self.dtype, np.integer):
+            # Whole values, both bounds included (uniform reals cast down never gave `high`,
+            # and a bool box was all True).
+            return self._rng.integers(self.low.astype(np.int64), self.high.astype(np.int64),
+                                      endpoint=True).astype(self.dtype)
         low = np.where(np.isfinite(self.low), self.low, -1e3)
         high = np.where(np.isfinite(self.high), self.high, 1e3)
         return self._rng.uniform(low, high).astype(self.dtype)
@@ -332,6 +337,9 @@ class _DiscreteSpace:
 
     def contains(self, x) -> bool:
         return _is_whole(x) and 0 <= int(x) < self.n
+
+    def __repr__(self):
+        return f"Discrete({self.n})"
 
 
 def _out_folder(out) -> str:

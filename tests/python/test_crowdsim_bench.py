@@ -148,6 +148,20 @@ class EnvContract(unittest.TestCase):
         env.reset(seed=0)
         env.step(80)
 
+    def test_sampled_discrete_actions_reach_every_index(self):
+        # Without gymnasium, VectorEnv(discrete=True).action_space.sample() never gave the last
+        # action (80: uniform reals cast down), a bool Box sampled all True, and the
+        # discrete space printed as <crowdsim_bench._DiscreteSpace object at 0x...>.
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=4, discrete=True)
+        venv.action_space.seed(0)
+        seen = np.concatenate([venv.action_space.sample() for _ in range(2000)])
+        self.assertEqual((seen.min(), seen.max()), (0, 80))
+        self.assertTrue(venv.action_space.contains(venv.action_space.sample()))
+        mask = cb.Box(0, 1, (1000,), dtype=np.bool_, seed=0).sample()
+        self.assertTrue(mask.any() and not mask.all())
+        self.assertEqual(repr(cb.Env(QUICK, row="orca", discrete=True).action_space),
+                         "Discrete(81)")
+
 
 class SameEpisodesAsTheCli(unittest.TestCase):
     def test_python_stepped_linear_equals_the_cli_linear_row(self):
