@@ -212,7 +212,9 @@ class Env(_Base):
         """Starts an episode of the row and returns (obs, info). `seed=k` (or
         `options={"episode": k}`, which wins) is the suite's episode k, the same scenario as
         episode k of `crowdsim-bench run`, not a random seed; without either, the episode after
-        the last one (0 first). info: `episode`, `layout` (the world's name)."""
+        the last one (0 first). A world of frozen layouts reuses them in turn (random_rect's 100:
+        episode k + 100 has episode k's layout), so train on another split (set=
+        "world.split=train") than the one tested. info: `episode`, `layout` (the world's name)."""
         if options and "episode" in options:
             episode = _episode_index(options["episode"], 'options["episode"]')
         elif seed is not None:
