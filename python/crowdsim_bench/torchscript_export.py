@@ -237,7 +237,13 @@ def export(weights: Path, out: Path, lidar_max_range: Optional[float] = None) ->
     if missing or unexpected:
         raise SystemExit(f"{weights}: parameters do not fit a {model} network with sensors "
                          f"{sensors}: missing {missing}, unexpected {unexpected}")
-    torch.jit.script(net.eval()).save(str(out))
+    scripted = torch.jit.script(net.eval())
+    try:  # a folder not there yet is made, as `crowdsim-bench run --out` does
+        Path(out).parent.mkdir(parents=True, exist_ok=True)
+        scripted.save(str(out))
+    except (OSError, RuntimeError) as e:  # torch reports a file it cannot write as RuntimeError
+        first = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
+        raise SystemExit(f"{out}: cannot write the exported module ({first})") from None
     # The action set: from training.yaml when it is there, else cadrl's and sarl's default.
     action_set = {"speed_samples": 2, "rotation_samples": 8, "stop_action": False}
     for key, default in list(action_set.items()):

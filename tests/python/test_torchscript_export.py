@@ -103,6 +103,21 @@ class TorchScriptExport(unittest.TestCase):
         self.assertEqual(params, {"output": "values", "sensors": "lidar+person", "speed_samples": 2,
                                   "rotation_samples": 8, "stop_action": False, "lidar_beams": 45})
 
+    def test_the_output_folder_is_made_and_an_unwritable_one_is_a_one_line_error(self):
+        # An output in a folder not there yet ended in torch's traceback ("Parent directory
+        # ... does not exist").
+        weights = torchscript_export.Path("results/models/sarl_person_rect0/best.pt")
+        nested = os.path.join(self.dir, "new", "folder", "m.pt")
+        torchscript_export.export(weights, torchscript_export.Path(nested))
+        self.assertTrue(os.path.isfile(nested))
+        a_file = os.path.join(self.dir, "a_file")
+        open(a_file, "w").close()
+        with self.assertRaises(SystemExit) as e:
+            torchscript_export.export(weights,
+                                      torchscript_export.Path(os.path.join(a_file, "m.pt")))
+        self.assertIn("cannot write the exported module", str(e.exception))
+        self.assertEqual(len(str(e.exception).splitlines()), 1, str(e.exception))
+
     def test_a_lidar_model_without_its_training_file_needs_the_max_range(self):
         lone = os.path.join(self.dir, "lone.pt")
         with open("results/models/cadrl_pp_lidar_rect0/best.pt", "rb") as src, open(lone, "wb") as dst:
