@@ -264,6 +264,15 @@ py::list Evaluate(py::object policy, const std::string& suite_path, const py::ob
                                 : std::filesystem::path(out);
   options.jobs = 1;                         // one Python interpreter: episodes one after another
   options.isolation = IsolationMode::kOff;  // the policy lives in this interpreter: no fork
+  if (suite.episode_timeout_s > 0) {
+    // The runner's refusal named an "isolation override" the caller never gave.
+    throw py::value_error(
+        "suite '" + suite.name + "' (" + suite_path + ") sets episode_timeout_s " +
+        py::repr(py::float_(suite.episode_timeout_s)).cast<std::string>() +
+        ", which evaluate() cannot apply: the Python policy runs in this process, and an "
+        "episode cannot be stopped midway without a worker process of its own. Evaluate "
+        "without it: set='episode_timeout_s=0'");
+  }
   options.episodes = episodes;
   options.fresh = fresh;
   options.progress = progress;

@@ -590,6 +590,22 @@ class UserMistakes(unittest.TestCase):
                 self.assertNotIn("--out", msg)
                 self.assertNotIn("out=to", msg)
 
+    def test_a_suite_with_an_episode_timeout_is_refused_with_the_fix(self):
+        # It said "... the run's isolation is off; drop the isolation override or the
+        # timeout": evaluate()'s own override, which the caller never gave.
+        with tempfile.TemporaryDirectory() as out:
+            with self.assertRaises(ValueError) as caught:
+                cb.evaluate(straight_to_goal, QUICK, out=out, episodes=1,
+                            set="episode_timeout_s=5")
+            msg = str(caught.exception)
+            self.assertIn("evaluate() cannot apply", msg)
+            self.assertIn("set='episode_timeout_s=0'", msg)
+            self.assertNotIn("override", msg)
+            self.assertFalse(os.listdir(out))  # nothing ran
+            rows = cb.evaluate(straight_to_goal, QUICK, out=out, episodes=1,
+                               set=["episode_timeout_s=5", "episode_timeout_s=0"])
+            self.assertEqual(rows[0]["episodes"], 1)
+
     def test_counts_out_of_range_are_refused_as_by_the_cli(self):
         with tempfile.TemporaryDirectory() as out:
             for episodes in (0, -5, 2.5, True):
