@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Benchmarks a hand-written Python policy on a suite row, with the CLI's outputs and metrics.
 
-    PYTHONPATH=build/python python3 examples/python/evaluate_policy.py   # -> runs/python_demo/
+    PYTHONPATH=build/python /usr/bin/python3 examples/python/evaluate_policy.py   # -> runs/python_demo/
 
 The policy walks to the goal and sidesteps the nearest person it sees ahead (a toy rule: the
 point is that it meets exactly the scenarios and metrics of the built-in policies).

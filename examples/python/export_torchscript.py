@@ -2,7 +2,7 @@
 """A PyTorch policy as a drop-in for `crowdsim-bench run`: scripts a module with the
 TorchScript policy interface, saves it, and writes a suite that runs it beside `linear`.
 
-    python3 examples/python/export_torchscript.py [OUT_DIR]      # default runs/torchscript_example
+    /usr/bin/python3 examples/python/export_torchscript.py [OUT_DIR]      # default runs/torchscript_example
     build/bin/crowdsim-bench run OUT_DIR/suite.yaml --out OUT_DIR/results
 
 Needs python3-torch (Debian), not the crowdsim_bench package. The interface (plugins/torchscript):

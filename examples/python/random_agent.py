@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A random agent in a suite row's episodes, through the Gymnasium API of crowdsim_bench.Env.
 
-    PYTHONPATH=build/python python3 examples/python/random_agent.py [suites/quick.yaml] [row]
+    PYTHONPATH=build/python /usr/bin/python3 examples/python/random_agent.py [suites/quick.yaml] [row]
 """
 import sys
 from collections import Counter

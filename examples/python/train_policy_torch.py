@@ -3,7 +3,7 @@
 advantage actor-critic over 16 environments stepped in C++, then a test on the suite's own
 episodes with evaluate(), and the policy saved as TorchScript for `crowdsim-bench run`.
 
-    PYTHONPATH=build/python python3 examples/python/train_policy_torch.py [UPDATES] [OUT.pt]
+    PYTHONPATH=build/python /usr/bin/python3 examples/python/train_policy_torch.py [UPDATES] [OUT.pt]
 
 Needs python3-torch (Debian). The default 1000 updates (16 x 32 steps each, ~15k episodes)
 take about 30 s on one core, in the 1-obstacle train layouts with the quick suite's 5 ORCA humans

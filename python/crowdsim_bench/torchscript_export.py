@@ -1,7 +1,7 @@
 """Exports a cadrl or sarl weights file of `crowdsim-bench train` as a TorchScript value network
 for the `torchscript` policy plugin's `output: values` mode.
 
-    python3 -m crowdsim_bench.torchscript_export results/models/sarl_pp_lidar_person_rect1/weights.pt sarl.ts.pt
+    PYTHONPATH=build/python /usr/bin/python3 -m crowdsim_bench.torchscript_export results/models/sarl_pp_lidar_person_rect1/weights.pt sarl.ts.pt
 
 The module takes the stacked lookahead observations of the plugin (robot (A, 9), humans
 (A, H, 5), humans_mask (A, H), lidar (A, beams): observation_tensors.h) and returns V(s') of
