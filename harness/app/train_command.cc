@@ -166,15 +166,23 @@ int TrainAllCommand(const std::vector<std::string>& args) {
     job.campaign = true;
     jobs.push_back(job);
   }
-  // Every file is read before any training starts: a typo in the fifth file stopped the
-  // campaign only after four trainings (hours) had run.
+  // Every file is read and its training built (as validate does) before any training starts:
+  // a typo, a missing weights or world file in the fifth file stopped the campaign only after
+  // four trainings (hours) had run.
   int bad_files = 0;
   for (const TrainJob& job : jobs) {
     PluginRegistry registry;
-    const training::TrainSpecLoadResult loaded =
-        training::LoadTrainSpec(job.file, registry, job.sets);
+    training::TrainSpecLoadResult loaded = training::LoadTrainSpec(job.file, registry, job.sets);
     if (!loaded.spec) {
       ReportTrainSpecErrors(job.file, "train-all", loaded.errors, false);
+      ++bad_files;
+      continue;
+    }
+    if (job.seed) training::OverrideSeed(*loaded.spec, *ParseSeed(*job.seed));
+    try {
+      training::PreflightTraining(*loaded.spec, registry);
+    } catch (const training::TrainError& e) {
+      std::cerr << "error: " << job.file << ": " << e.what() << "\n";
       ++bad_files;
     }
   }

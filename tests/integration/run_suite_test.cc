@@ -936,6 +936,26 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_NE(atext.find("1 of 2 training file(s) have errors; nothing was trained"),
             std::string::npos)
       << atext;
+  // It also builds every training as validate does: a second file that reads well but whose
+  // weights file is missing (found only when its learner is made) trained the first file
+  // before failing; now nothing is trained (results/train/ is the working folder's).
+  const std::string tiny_rest =
+      "policy: cadrl\nparams: {sensors: person}\nsensors: [person]\nworld: {source: "
+      "random_rect, obstacles: 0}\nhumans: {count: 1}\ntraining: {il_episodes: 2, il_epochs: 1, "
+      "rl_episodes: 2, validation_interval: 0}\n";
+  const auto first = dir_.Write("first.yaml", "name: first\n" + tiny_rest);
+  const auto no_weights =
+      dir_.Write("no_weights.yaml", "name: no_weights\nweights: nope/missing.pt\n" + tiny_rest);
+  auto [pfrc, pftext] =
+      Shell("cd " + dir_.path().string() + " && timeout 120 " + exe + " train-all " +
+            first.string() + " " + no_weights.string() + " --quiet");
+  EXPECT_EQ(pfrc, 2) << pftext;
+  EXPECT_NE(pftext.find("error: " + no_weights.string() + ": "), std::string::npos) << pftext;
+  EXPECT_NE(pftext.find("missing.pt"), std::string::npos) << pftext;
+  EXPECT_NE(pftext.find("1 of 2 training file(s) have errors; nothing was trained"),
+            std::string::npos)
+      << pftext;
+  EXPECT_FALSE(fs::exists(dir_.path() / "results" / "train" / "first")) << pftext;
 
   // validate builds a training as train would: a policy that cannot learn is found there.
   const auto untrainable =
