@@ -508,6 +508,11 @@ void Trainer::SaveCheckpoint() {
   learner_->SaveTrainingState(tmp);
   memory_.Save(tmp / "memory.bin");
   probe_.Save(tmp / "probe.bin");
+  // The best weights so far are part of the state: a resume restores them, so that best.pt
+  // never holds weights of episodes past the checkpoint (a finished training resumed to a
+  // shorter RL phase kept the best.pt of its old end while summary.json named an earlier one).
+  if (state_.best_episode >= 0 && fs::exists(Out("best.pt")))
+    fs::copy_file(Out("best.pt"), tmp / "best.pt");
   state_.episode_log_bytes = episode_log_.Flush();
   state_.rl_episodes = t_.rl_episodes;
   WriteCheckpointState(tmp / "state.txt", state_);
@@ -568,6 +573,12 @@ void Trainer::LoadCheckpoint() {
     learner_->LoadTrainingState(dir);
     memory_.Load(dir / "memory.bin");
     if (fs::exists(dir / "probe.bin")) probe_.Load(dir / "probe.bin");
+    // The checkpoint's best weights (absent in checkpoints written before they were kept).
+    if (fs::exists(dir / "best.pt")) {
+      fs::copy_file(dir / "best.pt", Out("best.pt"), fs::copy_options::overwrite_existing);
+    } else if (state_.best_episode < 0) {
+      fs::remove(Out("best.pt"));
+    }
   } catch (const std::exception& e) {
     // A library's message may carry a stack trace after its first line (libtorch's do).
     std::string what = e.what();

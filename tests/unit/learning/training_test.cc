@@ -191,6 +191,34 @@ TEST(TrainingTest, LengtheningTheRlPhaseContinuesLikeALongerTraining) {
   }
 }
 
+// best.pt is the checkpoint's when a finished training resumes to a shorter RL phase: here the
+// 3-episode training's best validation is its last (RL episode 3, after its last checkpoint at
+// 2); shortened to 2, best.pt kept those episode-3 weights while summary.json named episode 0.
+TEST(TrainingTest, ShorteningTheRlPhaseKeepsTheShorterTrainingsBestWeights) {
+  TempDir dir;
+  TrainFile f;
+  f.sensors_param = "lidar+person";
+  f.sensors = "[person, {type: lidar2d, beams: 15, fov_deg: 180, max_range: 5}]";
+  f.world = "{source: random_rect, obstacles: 1}";
+  f.humans = "{count: 5}";
+  f.seed = 1;
+  const std::string training =
+      "{il_episodes: 40, il_epochs: 5, rl_episodes: 3, epsilon_start: 0.5, epsilon_end: 0.1, "
+      "epsilon_decay_episodes: 6, validation_interval: 1, validation_episodes: 2, "
+      "checkpoint_interval: 2}";
+  f.training = training;
+  ASSERT_TRUE(Train(WriteTrainFile(dir, f), dir.path() / "shortened").finished);
+  f.training = std::string(training).replace(training.find("rl_episodes: 3"), 14, "rl_episodes: 2");
+  const auto short_file = WriteTrainFile(dir, f, "shorter.yaml");
+  const auto shortened = Train(short_file, dir.path() / "shortened", true);
+  const auto whole = Train(short_file, dir.path() / "whole");
+  ASSERT_TRUE(shortened.finished);
+  EXPECT_EQ(ReadText(dir.path() / "shortened" / "training_log.csv"),
+            ReadText(dir.path() / "whole" / "training_log.csv"));
+  ASSERT_FALSE(shortened.best_weights.empty());
+  EXPECT_EQ(ValuesOfWeights(f, shortened.best_weights), ValuesOfWeights(f, whole.best_weights));
+}
+
 TEST(TrainingTest, AnIncompleteOrDamagedCheckpointIsNamedNotAStackTrace) {
   TempDir dir;
   TrainFile f;
