@@ -23,6 +23,8 @@ bin=""
 files=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
+    -j|--seeds|--build|--bin)
+      [[ $# -ge 2 ]] || { echo "train_all: $1 needs a value (see --help)" >&2; exit 2; } ;;&
     -j) jobs="$2"; shift 2 ;;
     --seeds) seeds="$2"; shift 2 ;;
     --build) build="$2"; shift 2 ;;
@@ -32,6 +34,8 @@ while [[ $# -gt 0 ]]; do
     *) files+=("$1"); shift ;;
   esac
 done
+# xargs -P 0 would run every training at once.
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "train_all: -j takes a whole number >= 1, got '$jobs'" >&2; exit 2; }
 [[ ${#files[@]} -gt 0 ]] || files=(suites/train/*.yaml)
 if [[ -n "$bin" ]]; then
   [[ -x "$bin" ]] || { echo "train_all: '$bin' not found (--bin)" >&2; exit 2; }
@@ -45,7 +49,10 @@ plan=()
 for entry in "${files[@]}"; do
   f="${entry%@*}"
   own_seeds="$seeds"
-  [[ "$entry" == *@* ]] && own_seeds="${entry##*@}"
+  if [[ "$entry" == *@* ]]; then
+    own_seeds="${entry##*@}"
+    [[ -n "$own_seeds" ]] || { echo "train_all: '$entry' has no seed after '@'" >&2; exit 2; }
+  fi
   [[ -f "$f" ]] || { echo "train_all: no training file '$f'" >&2; exit 2; }
   name=$(sed -n 's/^name: *\([A-Za-z0-9_.-]*\).*/\1/p' "$f" | head -n1)
   [[ -n "$name" ]] || { echo "train_all: '$f' has no 'name:' line" >&2; exit 2; }
