@@ -74,8 +74,8 @@ int Train(const TrainJob& job) {
     const std::string& seed = *job.seed;
     const auto v = ParseSeed(seed);
     if (!v) {
-      throw UsageError("the seed of '" + job.file + "' must be " + kSeedRange + ", got '" + seed +
-                       "'");
+      throw UsageError("--seed must be " + std::string(kSeedRange) + ", got '" + seed +
+                       "' (the seed that replaces " + job.file + "'s own)");
     }
     training::OverrideSeed(*loaded.spec, *v);
     options.out_dir =

@@ -927,6 +927,8 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_EQ(src2, 2) << stext2;
   EXPECT_NE(stext2.find("must be a whole number from 0 to 9223372036854775807"), std::string::npos)
       << stext2;
+  // Named as the --seed option's: "the seed of 'FILE'" sent the user to the file's seed key.
+  EXPECT_NE(stext2.find("error: --seed must be a whole number"), std::string::npos) << stext2;
 
   // train-all reads every file first: a bad second file stops it before the first trains.
   const auto typo = dir_.Write("typo.yaml", "name: t\npolicy: cadrl\ntrainingg: {}\n");
