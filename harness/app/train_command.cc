@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
 
 #include "commands.h"
@@ -62,6 +63,13 @@ void ReportTrainSpecErrors(const std::string& file, const std::string& command,
   }
 }
 
+/// Where a job trains: --out, else results/train/<name>/ (with a seed, <name>_seed<N>/).
+std::filesystem::path OutDir(const TrainJob& job, const training::TrainSpec& spec) {
+  if (job.out) return *job.out;
+  return std::filesystem::path("results") / "train" /
+         (job.seed ? spec.name + "_seed" + *job.seed : spec.name);
+}
+
 int Train(const TrainJob& job) {
   PluginRegistry registry;
   training::TrainSpecLoadResult loaded = training::LoadTrainSpec(job.file, registry, job.sets);
@@ -78,12 +86,8 @@ int Train(const TrainJob& job) {
                        "' (the seed that replaces " + job.file + "'s own)");
     }
     training::OverrideSeed(*loaded.spec, *v);
-    options.out_dir =
-        std::filesystem::path("results") / "train" / (loaded.spec->name + "_seed" + seed);
   }
-  if (job.out) options.out_dir = *job.out;
-  if (options.out_dir.empty())
-    options.out_dir = std::filesystem::path("results") / "train" / loaded.spec->name;
+  options.out_dir = OutDir(job, *loaded.spec);
   if (job.campaign && training::IsFinishedTraining(options.out_dir, *loaded.spec)) {
     std::cout << "finished already: " << options.out_dir.string() << " (skipped)\n";
     return 0;
@@ -170,7 +174,9 @@ int TrainAllCommand(const std::vector<std::string>& args) {
   // a typo, a missing weights or world file in the fifth file stopped the campaign only after
   // four trainings (hours) had run.
   int bad_files = 0;
-  for (const TrainJob& job : jobs) {
+  std::map<std::filesystem::path, std::string> entry_of_folder;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    const TrainJob& job = jobs[i];
     PluginRegistry registry;
     training::TrainSpecLoadResult loaded = training::LoadTrainSpec(job.file, registry, job.sets);
     if (!loaded.spec) {
@@ -179,6 +185,17 @@ int TrainAllCommand(const std::vector<std::string>& args) {
       continue;
     }
     if (job.seed) training::OverrideSeed(*loaded.spec, *ParseSeed(*job.seed));
+    // Two entries of one folder: the second failed after the first had trained (hours), or,
+    // on two ranks, at the folder's lock.
+    const std::filesystem::path out = OutDir(job, *loaded.spec).lexically_normal();
+    const auto [it, inserted] = entry_of_folder.emplace(out, a.positional[i]);
+    if (!inserted) {
+      std::cerr << "error: " << a.positional[i] << ": its folder '" << out.string()
+                << "' is also that of " << it->second
+                << "; give each training its own name: (or another @SEED)\n";
+      ++bad_files;
+      continue;
+    }
     try {
       training::PreflightTraining(*loaded.spec, registry);
     } catch (const training::TrainError& e) {

@@ -958,6 +958,21 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
             std::string::npos)
       << pftext;
   EXPECT_FALSE(fs::exists(dir_.path() / "results" / "train" / "first")) << pftext;
+  // Two entries that train into one folder (two files with one name:) are refused before
+  // anything trains: the second failed at the first's checkpoint after the first had trained.
+  const auto same_name = dir_.Write("same_name.yaml", "name: first\nseed: 8\n" + tiny_rest);
+  auto [nnrc, nntext] =
+      Shell("cd " + dir_.path().string() + " && timeout 120 " + exe + " train-all " +
+            first.string() + " " + same_name.string() + " " + first.string() + "@3 --quiet");
+  EXPECT_EQ(nnrc, 2) << nntext;
+  EXPECT_NE(nntext.find("error: " + same_name.string() + ": its folder 'results/train/first' is " +
+                        "also that of " + first.string() + "; give each training its own name:"),
+            std::string::npos)
+      << nntext;
+  EXPECT_NE(nntext.find("1 of 3 training file(s) have errors; nothing was trained"),
+            std::string::npos)
+      << nntext;
+  EXPECT_FALSE(fs::exists(dir_.path() / "results" / "train" / "first")) << nntext;
 
   // validate builds a training as train would: a policy that cannot learn is found there.
   const auto untrainable =
