@@ -46,6 +46,7 @@ fi
 
 # One line per training to run: FILE SEED OUT (SEED '-' = the file's own).
 plan=()
+declare -A entry_of_out=()
 for entry in "${files[@]}"; do
   f="${entry%@*}"
   own_seeds="$seeds"
@@ -60,6 +61,12 @@ for entry in "${files[@]}"; do
     [[ "$s" == "-" || "$s" =~ ^[0-9]+$ ]] || { echo "train_all: seed '$s' of '$entry' is not a number" >&2; exit 2; }
     out="results/train/$name"
     [[ "$s" == "-" ]] || out="${out}_seed$s"
+    # Two trainings in one folder: the second failed at the first's lock or checkpoint.
+    if [[ -n "${entry_of_out[$out]:-}" ]]; then
+      echo "train_all: '$entry' trains into $out, as '${entry_of_out[$out]}' does; give each training its own name: (or another seed)" >&2
+      exit 2
+    fi
+    entry_of_out[$out]="$entry"
     if [[ -f "$out/weights.pt" ]] && grep -q '"finished": true' "$out/summary.json" 2>/dev/null; then
       # Finished, unless the file now asks for a longer RL phase: then it resumes and goes on.
       want=$(grep -o 'rl_episodes: *[0-9]*' "$f" | head -n1 | grep -o '[0-9]*$' || true)

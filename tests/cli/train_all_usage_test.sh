@@ -3,7 +3,8 @@
 # or the entry, and before it installs or trains anything: an option without its value (it
 # stopped with bash's "$2: unbound variable", exit 1), a -j that is not a whole number >= 1
 # (-j 0 ran every training at once, xargs -P 0; -j abc failed in xargs after the frozen copy was
-# made), a FILE@ with no seed (trained with the file's own seed). A stand-in program (--bin)
+# made), a FILE@ with no seed (trained with the file's own seed), two files that train into one
+# folder (run side by side, the second failed at the folder's lock). A stand-in program (--bin)
 # records whether anything was started.
 #   tests/cli/train_all_usage_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
@@ -30,6 +31,10 @@ done
 expect_refusal "train_all: -j takes a whole number >= 1, got '0'" -j 0 --bin "$work/fake-bench" tiny.yaml
 expect_refusal "train_all: -j takes a whole number >= 1, got 'abc'" -j abc --bin "$work/fake-bench" tiny.yaml
 expect_refusal "train_all: 'tiny.yaml@' has no seed after '@'" --bin "$work/fake-bench" tiny.yaml@
+# Two files of one name train into one folder: refused before the first starts.
+mkdir -p other && printf 'name: tiny\n' > other/tiny.yaml
+expect_refusal "train_all: 'other/tiny.yaml' trains into results/train/tiny, as 'tiny.yaml' does" \
+  --bin "$work/fake-bench" tiny.yaml other/tiny.yaml
 # The same command line with a value that fits starts the training (the stand-in records it).
 "$source/scripts/train_all.sh" -j 1 --bin "$work/fake-bench" tiny.yaml@7 > ok.log 2>&1 ||
   { cat ok.log; fail "train_all.sh -j 1 tiny.yaml@7"; }
