@@ -56,12 +56,13 @@ const std::vector<Command>& Commands() {
 )"},
       {"train", crowdsim::cli::TrainCommand,
        R"(  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet] [--set KEY.PATH=VALUE]...
-      trains a learned policy (cadrl, sarl): imitation of ORCA, then RL; writes
-      DIR/weights.pt, best.pt, il.pt, training_log.csv (validation), training_episodes.csv
-      (every episode), learning_curve.svg/.png, summary.json (DIR defaults to
-      results/train/<name>/, with --seed N to results/train/<name>_seed<N>/); checkpoints
-      every 500 episodes and on Ctrl-C; --resume continues exactly, and goes on to a larger
-      training.rl_episodes (e.g. --set training.rl_episodes=10000)
+      trains a learned policy (cadrl, sarl): imitation of a teacher (training.il_policy,
+      ORCA by default), then RL; writes DIR/weights.pt, best.pt, il.pt, training_log.csv
+      (validation), training_episodes.csv (every episode), learning_curve.svg/.png,
+      summary.json (DIR defaults to results/train/<name>/, with --seed N to
+      results/train/<name>_seed<N>/); checkpoints every 500 episodes and on Ctrl-C; --resume
+      continues exactly, and goes on to a larger training.rl_episodes (e.g. --set
+      training.rl_episodes=10000)
 )"},
       {"train-all", crowdsim::cli::TrainAllCommand,
        R"(  crowdsim-bench train-all TRAIN.yaml[@SEED]... [--quiet] [--set KEY.PATH=VALUE]...
