@@ -702,8 +702,10 @@ TrainSummary Trainer::Run() {
     learner_->InitWeights(spec_.seed);
     OpenEpisodeLog(-1);
   }
-  WriteFileAtomically(Out("training.yaml"),
-                      "# copy of " + spec_.file.string() + "\n" + spec_.canonical);
+  WriteFileAtomically(Out("training.yaml"), "# the configuration of " + spec_.file.string() +
+                                                " as its config hash reads it (a record, not a " +
+                                                "training file: train from the file)\n" +
+                                                spec_.canonical);
   progress_.Note(learner_->Describe());
   if (state_.phase == TrainPhase::kDemonstrations) Demonstrations();
   if (state_.phase == TrainPhase::kImitation && !ShouldStop()) Imitation();

@@ -115,6 +115,15 @@ TEST(TrainingTest, ResumeContinuesExactly) {
       << validations;  // every probe value present
   // Restarting over a finished training without --resume is refused.
   EXPECT_THROW(Train(file, dir.path() / "parts"), training::TrainError);
+  // training.yaml says what it is: the canonical text of the configuration (it said "# copy of
+  // FILE" over lines that are not the file's).
+  const std::string record = ReadText(dir.path() / "whole" / "training.yaml");
+  EXPECT_EQ(record.rfind("# the configuration of " + file.string() +
+                             " as its config hash reads it (a record, not a training file: "
+                             "train from the file)\nseed=5\n",
+                         0),
+            0u)
+      << record;
 }
 
 TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
