@@ -160,7 +160,19 @@ def _action_indices(actions, count: int, shape: tuple) -> np.ndarray:
 _Base = _gym.Env if _gym is not None else object
 
 
-class Env(_Base):
+class _ClosedByWith:
+    """A `with` block closes the environment at its end, as gymnasium.Env's does, also on
+    machines without gymnasium (Debian 12): Env and VectorEnv."""
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc_info):
+        self.close()
+        return False
+
+
+class Env(_ClosedByWith, _Base):
     """One suite row's episodes, stepped from Python (Gymnasium API).
 
     Observation (dict of float64 arrays): `robot` (9,) = x, y, vx, vy, goal x, goal y, radius,
@@ -267,14 +279,7 @@ class Env(_Base):
         and running evaluate() at once); the Env cannot be used afterwards."""
         self._env = _Closed("Env")
 
-    # gymnasium.Env's `with` and `unwrapped`, for machines without gymnasium (Debian 12)
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc_info):
-        self.close()
-        return False
-
+    # gymnasium.Env's `unwrapped`, for machines without gymnasium (Debian 12)
     @property
     def unwrapped(self):
         return self

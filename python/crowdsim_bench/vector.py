@@ -5,12 +5,12 @@ from typing import Sequence
 
 import numpy as np
 
-from . import _core
+from . import _ClosedByWith, _core
 
 STATUS_NAMES = tuple(_core.STATUS_NAMES)
 
 
-class VectorEnv:
+class VectorEnv(_ClosedByWith):
     """`num_envs` environments of one suite row, stepped in C++ with numpy batches.
 
     Follows Gymnasium's vector API: `reset(seed=k)` starts episodes k, k+1, ..., k+n-1 of the
@@ -108,10 +108,3 @@ class VectorEnv:
         afterwards."""
         from . import _Closed
         self._env = _Closed("VectorEnv")
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc_info):
-        self.close()
-        return False
