@@ -8,6 +8,8 @@
 #include <map>
 #include <sstream>
 
+#include "crowdsim/bench/closest_name.h"
+
 namespace crowdsim::suite_internal {
 
 namespace fs = std::filesystem;
@@ -47,7 +49,7 @@ void Reader::CheckKeys(const YAML::Node& map, const std::string& path,
     const std::string key = kv.first.Scalar();
     if (std::find(valid.begin(), valid.end(), key) == valid.end()) {
       Error(kv.first, Child(path, key),
-            "unknown key '" + key + "' (valid keys: " + Join(valid) + ")");
+            "unknown key '" + key + "' (valid keys: " + Join(valid) + ")" + DidYouMean(key, valid));
     }
   }
 }
@@ -195,8 +197,10 @@ const LoadedPlugin* Reader::Plugin(const YAML::Node& n, const std::string& path,
   } catch (const PluginError& e) {
     std::string msg = e.what();
     if (msg.starts_with("no plugin named")) {
+      const std::vector<std::string> available = Available(kind);
       msg = "unknown " + std::string(PluginKindName(kind)) + " plugin '" + *name +
-            "' (valid: " + Join(Available(kind)) + "; or the path of a plugin .so file)";
+            "' (valid: " + Join(available) + "; or the path of a plugin .so file)" +
+            DidYouMean(*name, available);
       // A file that calls itself by this name but is named otherwise is not found by it.
       for (const std::string& problem : found_.problems) {
         if (problem.find("its descriptor calls it '" + *name + "'") != std::string::npos) {
@@ -243,7 +247,8 @@ Params Reader::ParamsFor(const LoadedPlugin& p, const YAML::Node& node,
         Error(kv.first, kpath,
               "unknown parameter '" + key + "' for " + PluginKindName(p.descriptor->kind) +
                   " plugin '" + p.descriptor->name +
-                  "' (valid: " + (names.empty() ? std::string("none") : Join(names)) + ")");
+                  "' (valid: " + (names.empty() ? std::string("none") : Join(names)) + ")" +
+                  DidYouMean(key, names));
         continue;
       }
       if (auto v = Value(*it, kv.second, kpath)) values[key] = *v;

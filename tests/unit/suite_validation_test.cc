@@ -99,12 +99,13 @@ rows:
   EXPECT_NE(unknown, "") << all;
   EXPECT_NE(unknown.find("linear"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find(":6:14:"), std::string::npos) << unknown;
+  EXPECT_TRUE(unknown.ends_with("; did you mean 'linear'?")) << unknown;
   // Parameter range and unknown parameter.
   EXPECT_NE(Find(r, "rows[1].params.speed_factor: value 7 is out of range; valid: [0, 2]"), "")
       << all;
   EXPECT_NE(Find(r,
                  "rows[1].params.speedfactor: unknown parameter 'speedfactor' for policy plugin "
-                 "'linear' (valid: speed_factor, slow_down)"),
+                 "'linear' (valid: speed_factor, slow_down); did you mean 'speed_factor'?"),
             "")
       << all;
   // Type.
@@ -426,7 +427,10 @@ TEST_F(SuiteValidation, RobotMapWithoutSensorsIsAnErrorNotACrash) {
       "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
       "robot: {sensor: [person]}\nrows:\n  - {label: a, policy: linear}\n");
   ASSERT_FALSE(r.suite);
-  EXPECT_NE(Find(r, "suite.yaml:4:9: robot.sensor: unknown key 'sensor' (valid keys: sensors)"), "")
+  EXPECT_NE(Find(r,
+                 "suite.yaml:4:9: robot.sensor: unknown key 'sensor' (valid keys: sensors); did "
+                 "you mean 'sensors'?"),
+            "")
       << All(r);
   auto empty = Load(
       "name: t\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"
@@ -552,6 +556,18 @@ TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
                  "its manifest.json names: suites/quick.yaml"),
             "")
       << All(run_folder);
+}
+
+// A mistyped key gets the one valid key a few edits away; a key far from every valid one (a
+// training key at the top of a suite) only the list.
+TEST_F(SuiteValidation, AMistypedKeyIsToldTheNearestValidOne) {
+  auto r = Load(std::string("episode: 4\nrl_episodes: 2\n") + kGood);
+  ASSERT_FALSE(r.suite);
+  const std::string near = Find(r, "episode: unknown key 'episode' (valid keys: ");
+  EXPECT_TRUE(near.ends_with("; did you mean 'episodes'?")) << All(r);
+  const std::string far = Find(r, "rl_episodes: unknown key 'rl_episodes' (valid keys: ");
+  EXPECT_NE(far, "") << All(r);
+  EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
 }
 
 }  // namespace
