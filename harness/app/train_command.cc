@@ -70,6 +70,18 @@ std::filesystem::path OutDir(const TrainJob& job, const training::TrainSpec& spe
          (job.seed ? spec.name + "_seed" + *job.seed : spec.name);
 }
 
+/// The job's --seed or @SEED in place of the file's own seed (train-all checked its seeds when
+/// it read the command line; train's is checked here).
+void ApplySeed(const TrainJob& job, training::TrainSpec* spec) {
+  if (!job.seed) return;
+  const auto v = ParseSeed(*job.seed);
+  if (!v) {
+    throw UsageError("--seed must be " + std::string(kSeedRange) + ", got '" + *job.seed +
+                     "' (the seed that replaces " + job.file + "'s own)");
+  }
+  training::OverrideSeed(*spec, *v);
+}
+
 int Train(const TrainJob& job) {
   PluginRegistry registry;
   training::TrainSpecLoadResult loaded = training::LoadTrainSpec(job.file, registry, job.sets);
@@ -78,15 +90,7 @@ int Train(const TrainJob& job) {
     return 2;
   }
   training::TrainOptions options;
-  if (job.seed) {
-    const std::string& seed = *job.seed;
-    const auto v = ParseSeed(seed);
-    if (!v) {
-      throw UsageError("--seed must be " + std::string(kSeedRange) + ", got '" + seed +
-                       "' (the seed that replaces " + job.file + "'s own)");
-    }
-    training::OverrideSeed(*loaded.spec, *v);
-  }
+  ApplySeed(job, &*loaded.spec);
   options.out_dir = OutDir(job, *loaded.spec);
   if (job.campaign && training::IsFinishedTraining(options.out_dir, *loaded.spec)) {
     std::cout << "finished already: " << options.out_dir.string() << " (skipped)\n";
@@ -184,7 +188,7 @@ int TrainAllCommand(const std::vector<std::string>& args) {
       ++bad_files;
       continue;
     }
-    if (job.seed) training::OverrideSeed(*loaded.spec, *ParseSeed(*job.seed));
+    ApplySeed(job, &*loaded.spec);  // the seed the training will run with
     // Two entries of one folder: the second failed after the first had trained (hours), or,
     // on two ranks, at the folder's lock.
     const std::filesystem::path out = OutDir(job, *loaded.spec).lexically_normal();
