@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "blas_kernel.h"
+#include "schema_check.h"
 #include "shipped_plugins.h"
 
 namespace crowdsim {
@@ -228,6 +229,13 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   } catch (const std::exception& e) {
     throw PluginError("plugin '" + key + "' threw while reporting its parameter schema: " +
                       e.what() + ". Fix the plugin.");
+  }
+  if (const std::vector<std::string> problems = SchemaProblems(loaded->schema); !problems.empty()) {
+    std::string list;
+    for (const std::string& problem : problems) list += (list.empty() ? "" : "; ") + problem;
+    throw PluginError("plugin '" + key + "' declares parameters the harness cannot use: " + list +
+                      ". A default must have its parameter's type and lie within its range "
+                      "and choices. Fix the plugin's Schema().");
   }
   const LoadedPlugin& ref = *loaded;
   loaded_[use] = std::move(loaded);

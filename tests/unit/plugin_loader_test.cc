@@ -105,6 +105,28 @@ TEST(PluginLoader, FactoryThrows) {
   }
 }
 
+TEST(PluginLoader, SchemaWithAWrongDefaultIsRefusedNamingEachParameter) {
+  PluginRegistry reg({FixturePluginDir()});
+  const std::string err = LoadError(reg, "bad_schema", PluginKind::kPolicy);
+  EXPECT_NE(err.find("crowdsim_bad_schema.so"), std::string::npos) << err;
+  EXPECT_NE(err.find("parameter 'count': default 2.5 is a double, but ParamType::kInt takes a "
+                     "std::int64_t"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("parameter 'gain': default 20 is outside its range [0, 10]"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("parameter 'gain' is declared twice"), std::string::npos) << err;
+  EXPECT_NE(err.find("Fix the plugin's Schema()"), std::string::npos) << err;
+}
+
+TEST(PluginLoader, EveryBuiltInPluginsSchemaIsSound) {
+  PluginRegistry reg({PluginDir()});
+  const auto found = reg.Discover();
+  EXPECT_TRUE(found.problems.empty()) << found.problems.front();
+  EXPECT_GE(found.plugins.size(), 5u);
+}
+
 TEST(PluginLoader, FileNameAndDescriptorNameMustAgree) {
   // A copy of the linear plugin under another plugin name: found by that name, called 'linear'.
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "renamed_plugin";
