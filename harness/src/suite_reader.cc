@@ -209,8 +209,12 @@ const LoadedPlugin* Reader::Plugin(const YAML::Node& n, const std::string& path,
       }
     } else if (msg.find("' does not exist. Give the path") != std::string::npos &&
                given.is_relative()) {
-      msg += " (looked from the working folder and from the suite's folder, " +
-             std::filesystem::path(file_).parent_path().string() + ")";
+      // A suite named without a folder (`run suite.yaml`) lies in the working folder.
+      const std::filesystem::path suite_folder = std::filesystem::path(file_).parent_path();
+      msg += suite_folder.empty()
+                 ? " (looked from the working folder, which holds the suite)"
+                 : " (looked from the working folder and from the suite's folder, " +
+                       suite_folder.string() + ")";
     }
     Error(n, path, msg);
     return nullptr;

@@ -292,6 +292,22 @@ TEST_F(SuiteValidation, ARelativePluginPathIsTheSuitesFolderWhenNotTheWorkingFol
       << All(missing);
 }
 
+TEST_F(SuiteValidation, AMissingPluginPathOfASuiteInTheWorkingFolderSaysWhereItLooked) {
+  // `run suite.yaml` from the suite's folder: its folder is the working folder, not "".
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(dir_.path());
+  std::string yaml = kGood;
+  yaml.replace(yaml.find("sensors: [person,"), 17, "sensors: [gone/crowdsim_person.so,");
+  dir_.Write("suite.yaml", yaml);
+  const auto r = LoadSuite("suite.yaml", registry_);
+  std::filesystem::current_path(before);
+  const std::string error = Find(r, "gone/crowdsim_person.so' does not exist");
+  EXPECT_NE(error.find("(looked from the working folder, which holds the suite)"),
+            std::string::npos)
+      << All(r);
+  EXPECT_EQ(error.find("suite's folder, )"), std::string::npos) << error;
+}
+
 TEST_F(SuiteValidation, AnUnknownPluginNamesTheFileThatCallsItselfSo) {
   // crowdsim_walker.so whose descriptor says 'linear': `policy: linear` finds no
   // crowdsim_linear.so, and the message points at the misnamed file.
