@@ -1,6 +1,7 @@
 // run, validate and list-plugins.
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -339,7 +340,14 @@ int ListPluginsCommand(const std::vector<std::string>& args) {
   for (const auto& d : registry.search_dirs()) std::cout << " " << d.string();
   std::cout << "\n";
   auto found = registry.Discover();
-  for (const auto& p : a.positional) found.plugins.push_back(&registry.LoadAny(p));
+  // A file given that is also found in a plugin folder (its own on CROWDSIM_PLUGIN_PATH) is the
+  // same loaded plugin: listed once.
+  for (const auto& p : a.positional) {
+    const LoadedPlugin* given = &registry.LoadAny(p);
+    if (std::find(found.plugins.begin(), found.plugins.end(), given) == found.plugins.end()) {
+      found.plugins.push_back(given);
+    }
+  }
   for (PluginKind kind : {PluginKind::kPolicy, PluginKind::kSensor, PluginKind::kWorld}) {
     std::cout << "\n" << PluginKindName(kind) << " plugins:\n";
     for (const auto* p : found.plugins) {
