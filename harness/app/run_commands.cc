@@ -354,6 +354,9 @@ int ListPluginsCommand(const std::vector<std::string>& args) {
       if (p->descriptor->kind != kind) continue;
       std::cout << "  " << p->descriptor->name << " - " << p->descriptor->description << "\n"
                 << "      file: " << p->path.string() << "\n";
+      if (const auto it = found.hidden.find(p); it != found.hidden.end()) {
+        for (const auto& f : it->second) std::cout << "      hides: " << f.string() << "\n";
+      }
       for (const auto& s : p->schema) {
         std::cout << "      " << s.name << " (" << ParamTypeName(s.type) << ", default "
                   << FormatParamValue(s.default_value);

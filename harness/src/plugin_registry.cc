@@ -1,5 +1,6 @@
 #include "crowdsim/bench/plugin_registry.h"
 
+#include <algorithm>
 #include <boost/dll/runtime_symbol_info.hpp>
 #include <boost/dll/shared_library.hpp>
 #include <cstdlib>
@@ -108,6 +109,15 @@ std::shared_ptr<T> Make(const LoadedPlugin& p, PluginKind kind, Factory factory,
                       ") returned no object from its factory. Fix the plugin.");
   }
   return Wrap<T>(p.library, std::move(obj));
+}
+
+/// Adds `file` to what `found` hides, unless it is `found`'s own file or one listed already (a
+/// folder named twice, the harness's own folder on CROWDSIM_PLUGIN_PATH).
+void Hide(const fs::path& file, const LoadedPlugin& found, std::vector<fs::path>* hidden) {
+  std::error_code ec;
+  const auto same = [&](const fs::path& other) { return fs::equivalent(file, other, ec); };
+  if (same(found.path) || std::any_of(hidden->begin(), hidden->end(), same)) return;
+  hidden->push_back(file);
 }
 
 }  // namespace
@@ -261,7 +271,8 @@ const LoadedPlugin& PluginRegistry::Load(const std::string& name_or_path, Plugin
 
 PluginRegistry::Found PluginRegistry::Discover() {
   Found found;
-  std::map<std::string, bool> seen;
+  // By name, the first file of that name (null when it failed to load: its problem is listed).
+  std::map<std::string, const LoadedPlugin*> first;
   for (const auto& dir : search_dirs_) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) continue;
@@ -272,10 +283,14 @@ PluginRegistry::Found PluginRegistry::Discover() {
     std::sort(files.begin(), files.end());
     for (const auto& f : files) {
       const std::string name = *PluginNameOfFile(f);
-      if (seen[name]) continue;
-      seen[name] = true;
+      if (const auto it = first.find(name); it != first.end()) {
+        if (it->second != nullptr) Hide(f, *it->second, &found.hidden[it->second]);
+        continue;
+      }
+      first[name] = nullptr;
       try {
-        found.plugins.push_back(&LoadPath(f));
+        first[name] = &LoadPath(f);
+        found.plugins.push_back(first[name]);
       } catch (const PluginError& e) {
         found.problems.push_back(e.what());
       }

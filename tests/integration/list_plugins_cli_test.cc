@@ -1,9 +1,11 @@
 // `crowdsim-bench list-plugins`: how a user sees the plugins of their folders.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "shell.h"
+#include "temp_dir.h"
 #include "test_paths.h"
 
 namespace crowdsim {
@@ -28,6 +30,25 @@ TEST(ListPlugins, APluginGivenByPathThatIsAlsoFoundIsListedOnce) {
                      "/crowdsim_throwing_policy.so");
   EXPECT_EQ(status, 0) << out;
   EXPECT_EQ(Count(out, "file: " + folder + "/crowdsim_throwing_policy.so"), 1u) << out;
+}
+
+TEST(ListPlugins, APluginThatHidesAnotherOfItsNameSaysWhichFile) {
+  // A copy of yours on CROWDSIM_PLUGIN_PATH replaces the built-in one of its name
+  // (docs/plugins.md); an old copy left there must not be taken for the one you just built without
+  // a word.
+  const testing::TempDir dir;
+  std::filesystem::copy_file(testing::PluginDir() / "crowdsim_linear.so",
+                             dir.path() / "crowdsim_linear.so");
+  // The harness's folder on the path too: the same file again hides nothing.
+  const auto [status, out] =
+      testing::Shell("CROWDSIM_PLUGIN_PATH=" + dir.path().string() + ":" +
+                     testing::PluginDir().string() + " " + Exe() + " list-plugins");
+  EXPECT_EQ(status, 0) << out;
+  const std::string mine = "file: " + (dir.path() / "crowdsim_linear.so").string();
+  const std::string hides = "hides: " + (testing::PluginDir() / "crowdsim_linear.so").string();
+  ASSERT_NE(out.find(mine), std::string::npos) << out;
+  EXPECT_NE(out.find(hides, out.find(mine)), std::string::npos) << out;
+  EXPECT_EQ(Count(out, "hides:"), 1u) << out;
 }
 
 }  // namespace

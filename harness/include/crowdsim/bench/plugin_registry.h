@@ -55,6 +55,9 @@ class PluginRegistry {
   struct Found {
     std::vector<const LoadedPlugin*> plugins;
     std::vector<std::string> problems;
+    /// By plugin found: the files of its name in later folders, which it hides (a suite naming
+    /// it gets the one found).
+    std::map<const LoadedPlugin*, std::vector<std::filesystem::path>> hidden;
   };
   Found Discover();
 
