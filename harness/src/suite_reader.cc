@@ -198,9 +198,11 @@ const LoadedPlugin* Reader::Plugin(const YAML::Node& n, const std::string& path,
     std::string msg = e.what();
     if (msg.starts_with("no plugin named")) {
       const std::vector<std::string> available = Available(kind);
+      const std::string close = DidYouMean(*name, available);
       msg = "unknown " + std::string(PluginKindName(kind)) + " plugin '" + *name +
-            "' (valid: " + Join(available) + "; or the path of a plugin .so file)" +
-            DidYouMean(*name, available);
+            "' (valid: " + Join(available) + "; or the path of a plugin .so file)" + close;
+      // Not a typo of a plugin found: most likely one of yours whose folder is not searched.
+      if (close.empty()) msg += "; " + NotSearchedHint(*name);
       // A file that calls itself by this name but is named otherwise is not found by it.
       for (const std::string& problem : found_.problems) {
         if (problem.find("its descriptor calls it '" + *name + "'") != std::string::npos) {
@@ -219,6 +221,13 @@ const LoadedPlugin* Reader::Plugin(const YAML::Node& n, const std::string& path,
     Error(n, path, msg);
     return nullptr;
   }
+}
+
+std::string Reader::NotSearchedHint(const std::string& name) const {
+  std::vector<std::string> folders;
+  for (const auto& dir : registry_.search_dirs()) folders.push_back(dir.string());
+  return "looked for crowdsim_" + name + ".so in " + Join(folders) +
+         ": put the folder of a plugin you built on CROWDSIM_PLUGIN_PATH (':'-separated)";
 }
 
 std::vector<std::string> Reader::Available(PluginKind kind) {

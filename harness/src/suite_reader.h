@@ -74,6 +74,8 @@ class Reader {
 
  private:
   std::vector<std::string> Available(PluginKind kind);
+  /// Where a plugin name was looked for, and how a folder of yours is searched too.
+  std::string NotSearchedHint(const std::string& name) const;
 
   std::string file_;
   PluginRegistry& registry_;

@@ -308,6 +308,23 @@ TEST_F(SuiteValidation, AMissingPluginPathOfASuiteInTheWorkingFolderSaysWhereItL
   EXPECT_EQ(error.find("suite's folder, )"), std::string::npos) << error;
 }
 
+TEST_F(SuiteValidation, AnUnknownPluginFarFromEveryNameSaysWhereItLookedAndHowToAddAFolder) {
+  // A plugin you built whose folder is not on CROWDSIM_PLUGIN_PATH: no typo to point at.
+  std::string yaml = kGood;
+  yaml.replace(yaml.find("policy: linear, params"), 14, "policy: my_own_walker");
+  const auto r = Load(yaml);
+  const std::string error = Find(r, "unknown policy plugin 'my_own_walker'");
+  EXPECT_NE(error.find("looked for crowdsim_my_own_walker.so in " + testing::PluginDir().string()),
+            std::string::npos)
+      << All(r);
+  EXPECT_NE(error.find("on CROWDSIM_PLUGIN_PATH"), std::string::npos) << error;
+  // A typo of a plugin found is told that one alone.
+  yaml.replace(yaml.find("my_own_walker"), 13, "lineer");
+  const std::string typo = Find(Load(yaml), "did you mean 'linear'");
+  ASSERT_NE(typo, "");
+  EXPECT_EQ(typo.find("CROWDSIM_PLUGIN_PATH"), std::string::npos) << typo;
+}
+
 TEST_F(SuiteValidation, AnUnknownPluginNamesTheFileThatCallsItselfSo) {
   // crowdsim_walker.so whose descriptor says 'linear': `policy: linear` finds no
   // crowdsim_linear.so, and the message points at the misnamed file.
