@@ -4,14 +4,59 @@
 #include <fstream>
 #include <set>
 
+#include "config_text.h"
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/version.h"
+#include "json_file.h"
 
 namespace crowdsim {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// The plugin files of yours (their bytes are in the config hash: PluginFileContent) whose
+/// content differs from what `manifest` records at the same path, as "; plugin files rebuilt
+/// since those results: PATH" for the end of a refusal; empty when none did.
+std::string DescribeRebuiltPlugins(const fs::path& manifest, const Suite& suite) {
+  using Json = nlohmann::ordered_json;
+  std::map<std::string, std::string> stored;  // file -> content hash, as recorded
+  auto record = [&stored](const Json& use) {
+    if (!use.is_object()) return;
+    const auto file = use.find("file"), content = use.find("file_content_fnv1a");
+    if (file != use.end() && content != use.end() && file->is_string() && content->is_string()) {
+      stored[file->get<std::string>()] = content->get<std::string>();
+    }
+  };
+  // A member of an object, null when absent or not an object (a damaged manifest).
+  auto member = [](const Json& j, const char* key) {
+    return j.is_object() && j.contains(key) ? j.at(key) : Json();
+  };
+  const Json rows = member(ReadJsonFile(manifest), "rows");
+  for (const Json& row : rows.is_array() ? rows : Json::array()) {
+    record(member(row, "policy"));
+    record(member(row, "world"));
+    const Json sensors = member(row, "sensors");
+    for (const Json& sensor : sensors.is_array() ? sensors : Json::array()) record(sensor);
+    record(member(member(row, "humans"), "policy"));
+  }
+  std::set<std::string> rebuilt;
+  auto compare = [&](const PluginUse& use) {
+    const std::string now = suite_internal::PluginFileContent(use);
+    if (now.empty()) return;  // the harness's own: covered by its commit
+    const auto it = stored.find(use.loaded->path.string());
+    if (it != stored.end() && it->second != now) rebuilt.insert(it->first);
+  };
+  for (const RowSpec& row : suite.rows) {
+    compare(row.policy);
+    compare(row.world);
+    for (const PluginUse& sensor : row.sensors) compare(sensor);
+    compare(row.humans.policy);
+  }
+  std::string text;
+  for (const std::string& file : rebuilt) text += (text.empty() ? "" : ", ") + file;
+  return text.empty() ? "" : "; plugin files rebuilt since those results: " + text;
+}
 
 /// The labels of the rows whose stored episodes are this configuration's: all of them when the
 /// suite's hash is unchanged, else those whose own row hash is (a table that grows row by row).
@@ -44,6 +89,7 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
                      DescribeRunInputsDifference(ReadManifestField(manifest, "suite_file"),
                                                  ReadManifestStrings(manifest, "overrides"),
                                                  suite.file.string(), suite.overrides) +
+                     DescribeRebuiltPlugins(manifest, suite) +
                      "). Pass --fresh to replace them, or --out to write elsewhere.");
   }
   return kept;
