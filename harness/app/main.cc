@@ -88,7 +88,8 @@ const std::vector<Command>& Commands() {
 )"},
       {"list-plugins", crowdsim::cli::ListPluginsCommand,
        R"(  crowdsim-bench list-plugins [PLUGIN.so...]
-      lists every plugin found, with its kind, description and parameters
+      lists every plugin found, with its kind, description and parameters, and under
+      `hides:` the files of its name in later folders (CROWDSIM_PLUGIN_PATH's come first)
 )"},
   };
   return commands;

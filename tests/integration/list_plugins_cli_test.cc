@@ -49,6 +49,11 @@ TEST(ListPlugins, APluginThatHidesAnotherOfItsNameSaysWhichFile) {
   ASSERT_NE(out.find(mine), std::string::npos) << out;
   EXPECT_NE(out.find(hides, out.find(mine)), std::string::npos) << out;
   EXPECT_EQ(Count(out, "hides:"), 1u) << out;
+  // The command's help says what the line means.
+  const auto [help_status, help] = testing::Shell(Exe() + " help list-plugins");
+  EXPECT_EQ(help_status, 0) << help;
+  EXPECT_NE(help.find("`hides:` the files of its name in later folders"), std::string::npos)
+      << help;
 }
 
 }  // namespace
