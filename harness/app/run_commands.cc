@@ -358,8 +358,11 @@ int ListPluginsCommand(const std::vector<std::string>& args) {
         for (const auto& f : it->second) std::cout << "      hides: " << f.string() << "\n";
       }
       for (const auto& s : p->schema) {
+        // An empty string default is shown as "" (it printed as "default )").
+        const auto* text = std::get_if<std::string>(&s.default_value);
         std::cout << "      " << s.name << " (" << ParamTypeName(s.type) << ", default "
-                  << FormatParamValue(s.default_value);
+                  << (text != nullptr && text->empty() ? "\"\""
+                                                       : FormatParamValue(s.default_value));
         if (s.type == ParamType::kInt || s.type == ParamType::kDouble ||
             s.type == ParamType::kDoubleList) {
           if (std::isfinite(s.min) || std::isfinite(s.max)) {

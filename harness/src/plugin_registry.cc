@@ -197,13 +197,15 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
                       "against this version of crowdsim-bench.");
   }
   if (!lib->has(kPluginAliasName)) {
-    throw PluginError("'" + key +
-                      "' is a shared library but not a crowdsim-bench plugin: it "
-                      "exports no '" +
-                      std::string(kPluginAliasName) +
-                      "' symbol. A plugin "
-                      "defines a crowdsim::PluginDescriptor and exports it with "
-                      "CROWDSIM_EXPORT_PLUGIN(descriptor) (see plugins/linear for an example).");
+    throw PluginError(
+        "'" + key +
+        "' is a shared library but not a crowdsim-bench plugin: it "
+        "exports no '" +
+        std::string(kPluginAliasName) +
+        "' symbol. A plugin "
+        "defines a crowdsim::PluginDescriptor and exports it with "
+        "CROWDSIM_EXPORT_PLUGIN(descriptor) (docs/plugins.md and examples/my_policy of the "
+        "crowdsim-bench sources show one).");
   }
   // Read the version through the alias before touching the rest of the descriptor.
   const auto& version = lib->get_alias<const std::uint32_t>(kPluginAliasName);

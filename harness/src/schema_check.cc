@@ -1,7 +1,6 @@
 #include "schema_check.h"
 
 #include <algorithm>
-#include <cmath>
 #include <iterator>
 #include <set>
 

@@ -56,5 +56,13 @@ TEST(ListPlugins, APluginThatHidesAnotherOfItsNameSaysWhichFile) {
       << help;
 }
 
+TEST(ListPlugins, AnEmptyTextDefaultIsShownAsEmptyQuotes) {
+  // The torchscript and floor-plan plugins' file parameters default to "" (none given).
+  const auto [status, out] = testing::Shell(Exe() + " list-plugins");
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_EQ(out.find("default )"), std::string::npos) << out;
+  EXPECT_NE(out.find("(string, default \"\")"), std::string::npos) << out;
+}
+
 }  // namespace
 }  // namespace crowdsim
