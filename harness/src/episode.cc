@@ -91,6 +91,21 @@ std::string PolicyName(int human) {
                    : "human " + std::to_string(human) + "'s policy";
 }
 
+// A policy's decision, a failure named with whose policy it is ("human 1's policy failed: ...",
+// "the robot's policy failed: ..."): a plugin's own message does not say which agent's policy
+// threw, nor that it was a policy. AbortRun passes through: it stops the whole run.
+Action DecideNamed(Policy& policy, const Observation& obs, int human) {
+  try {
+    return policy.Decide(obs);
+  } catch (const AbortRun&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(PolicyName(human) + " failed: " + e.what());
+  } catch (...) {
+    throw std::runtime_error(PolicyName(human) + " failed: " + kNonStandardException);
+  }
+}
+
 [[gnu::noinline, gnu::cold]] void ThrowTooFast(const Vec2& velocity, double v_pref, int human) {
   char buf[160];
   std::snprintf(buf, sizeof(buf),
@@ -284,15 +299,7 @@ void Episode::DecideHuman(int i) {
   human_obs_.frame = human_needs_[i].heading_frame ? Frame::Make(h.position, HeadingToGoal(h))
                                                    : Frame{.origin = h.position};
   human_obs_.self_index = i;
-  try {
-    human_actions_[i] = agents_.humans[i]->Decide(human_obs_);
-  } catch (const AbortRun&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw std::runtime_error(PolicyName(i) + " failed: " + e.what());
-  } catch (...) {
-    throw std::runtime_error(PolicyName(i) + " failed: " + kNonStandardException);
-  }
+  human_actions_[i] = DecideNamed(*agents_.humans[i], human_obs_, i);
   if (!human_actions_[i].velocity.allFinite()) {
     throw std::runtime_error(PolicyName(i) + " returned a non-finite velocity");
   }
@@ -332,7 +339,7 @@ StepInfo Episode::Step() {
       robot_obs_.lookahead = nullptr;
     }
     const std::uint64_t t0 = DecisionClock::Now();
-    info.robot_action = agents_.robot->Decide(robot_obs_);
+    info.robot_action = DecideNamed(*agents_.robot, robot_obs_, -1);
     decision_ticks_ += DecisionClock::Now() - t0;
     if (!info.robot_action.velocity.allFinite()) {
       throw std::runtime_error(PolicyName(-1) + " returned a non-finite velocity");

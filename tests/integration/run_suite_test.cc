@@ -803,8 +803,8 @@ rows:
   for (const PolicyErrorNote& note : r.policy_errors) notes.push_back(note.Format());
   EXPECT_EQ(notes,
             (std::vector<std::string>{
-                "row 'bad': 3 of 3 episodes ended in policy_error; episode 0: deliberate failure "
-                "(fixture)",
+                "row 'bad': 3 of 3 episodes ended in policy_error; episode 0: the robot's "
+                "policy failed: deliberate failure (fixture)",
                 "row 'bad_humans': 3 of 3 episodes ended in policy_error; episode 0: human 0's "
                 "policy failed: deliberate failure (fixture)"}));
 }

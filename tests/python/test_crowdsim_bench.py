@@ -220,8 +220,8 @@ class Evaluate(unittest.TestCase):
             raise RuntimeError("my bug")
 
         with tempfile.TemporaryDirectory() as out:
-            with self.assertWarnsRegex(RuntimeWarning, "episode 0: python policy raised "
-                                                       "RuntimeError: my bug"):
+            with self.assertWarnsRegex(RuntimeWarning, "episode 0: the robot's policy failed: "
+                                                       "python policy raised RuntimeError: my bug"):
                 cb.evaluate(broken, QUICK, row=1, out=out, episodes=2)
 
     def test_a_policy_returning_none_is_told_to_return_its_velocity(self):

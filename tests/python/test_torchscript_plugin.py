@@ -309,9 +309,9 @@ class TorchScriptPlugin(unittest.TestCase):
         p = subprocess.run([CLI, "run", suite, "--episodes", "2", "--quiet", "--out",
                             self.path("beams")], capture_output=True, text=True)
         self.assertEqual(p.returncode, 2, p.stdout + p.stderr)
-        self.assertIn("row 'ts' (rows[0]): the first step of episode 0 fails: torchscript: the "
-                      "lidar2d sensor has 45 beams but parameter lidar_beams is 30; set "
-                      "lidar_beams: 45", p.stderr)
+        self.assertIn("row 'ts' (rows[0]): the first step of episode 0 fails: the robot's "
+                      "policy failed: torchscript: the lidar2d sensor has 45 beams but parameter "
+                      "lidar_beams is 30; set lidar_beams: 45", p.stderr)
         self.assertFalse(os.path.exists(self.path("beams")))
 
     def test_the_example_script_writes_a_runnable_suite(self):

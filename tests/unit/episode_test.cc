@@ -230,7 +230,8 @@ TEST(Episode, PolicyExceptionEndsEpisodeWithPolicyError) {
   const EpisodeResult& r = ep.Run();
   EXPECT_EQ(r.status, EpisodeStatus::kPolicyError);
   EXPECT_EQ(r.steps, 2);
-  EXPECT_EQ(r.error, "boom");
+  // Whose policy failed, as for a human's (the plugin's own message said only "boom").
+  EXPECT_EQ(r.error, "the robot's policy failed: boom");
 }
 
 // A failing human policy or sensor ends the episode as policy_error too, but its message says
