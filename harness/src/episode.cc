@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include "crowdsim/rng.h"
@@ -107,11 +108,21 @@ Action DecideNamed(Policy& policy, const Observation& obs, int human) {
 }
 
 [[gnu::noinline, gnu::cold]] void ThrowTooFast(const Vec2& velocity, double v_pref, int human) {
-  char buf[160];
+  const double speed = velocity.norm();
+  const double limit = kMaxSpeedFactor * v_pref;
+  // Four digits, or as many as tell the speed from the limit ("returned 10 m/s, more than 10 x
+  // v_pref (10 m/s)" read as if an allowed speed had been refused).
+  int digits = 4;
+  for (char a[32], b[32]; digits < 17; ++digits) {
+    std::snprintf(a, sizeof(a), "%.*g", digits, speed);
+    std::snprintf(b, sizeof(b), "%.*g", digits, limit);
+    if (std::strcmp(a, b) != 0) break;
+  }
+  char buf[200];
   std::snprintf(buf, sizeof(buf),
-                " returned %.4g m/s, more than %.0f x v_pref (%.4g m/s): an action is "
+                " returned %.*g m/s, more than %.0f x v_pref (%.*g m/s): an action is "
                 "the velocity for the next step, in m/s",
-                velocity.norm(), kMaxSpeedFactor, kMaxSpeedFactor * v_pref);
+                digits, speed, kMaxSpeedFactor, digits, limit);
   throw std::runtime_error(PolicyName(human) + buf);
 }
 

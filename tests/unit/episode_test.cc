@@ -279,6 +279,14 @@ TEST(Episode, AVelocityFarAboveVPrefIsAPolicyError) {
   EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
   EXPECT_NE(ep.result().error.find("more than 10 x v_pref"), std::string::npos)
       << ep.result().error;
+  // Just above the limit, the message shows the digits that tell the two apart.
+  ConstantVelocityPolicy barely(Vec2(0, 10.000001));
+  EpisodeAgents barely_agents{&barely, {}, {}};
+  Episode over(sc, SimConfig{}, barely_agents);
+  EXPECT_EQ(over.Run().status, EpisodeStatus::kPolicyError);
+  EXPECT_NE(over.result().error.find("returned 10.000001 m/s, more than 10 x v_pref (10 m/s)"),
+            std::string::npos)
+      << over.result().error;
   // 10 x v_pref itself is allowed (the thin-wall test moves at it).
   ConstantVelocityPolicy fast(Vec2(0, 10.0));
   EpisodeAgents fast_agents{&fast, {}, {}};
