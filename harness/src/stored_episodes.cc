@@ -76,6 +76,16 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
                      ", so which configuration made them is unknown. Pass --fresh to replace "
                      "them, or --out to write elsewhere.");
   }
+  // Another suite's folder (an --out of another experiment): rows it shares with this suite
+  // would resume and the rest move aside, its tables replaced by this suite's.
+  if (const std::string other = ReadManifestField(manifest, "suite");
+      !other.empty() && other != suite.name) {
+    const std::string other_file = ReadManifestField(manifest, "suite_file");
+    throw RunRefused("'" + out_dir.string() + "' holds the results of another suite, '" + other +
+                     "'" + (other_file.empty() ? "" : " (" + other_file + ")") +
+                     ", not of this suite '" + suite.name + "' (" + suite.file.string() +
+                     "). Give this run its own --out folder, or pass --fresh to replace them.");
+  }
   const std::vector<std::string> row_hashes = ReadManifestStrings(manifest, "row_hashes");
   const std::set<std::string> stored_rows(row_hashes.begin(), row_hashes.end());
   for (const RowSpec& row : suite.rows) {

@@ -32,7 +32,8 @@ struct ResumeTarget {
 /// The stored episodes of `target.out_dir` this run keeps. `worlds` are the rows' world
 /// sources (their identities give the episodes' seeds). Lines set aside (damaged ones too, as
 /// read) are always said on stderr; with `note`, what is resumed as well. Throws RunRefused when
-/// the folder holds another configuration with no row unchanged, or another shard (or a whole
+/// the folder holds another configuration with no row unchanged or of another suite (by its
+/// name: a suite renamed with an unchanged configuration resumes), or another shard (or a whole
 /// run, or the same shard of another episode count) while this run is a shard: resuming there
 /// would drop the episodes outside this shard.
 EpisodeLines StoredEpisodes(const Suite& suite,

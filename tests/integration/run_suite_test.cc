@@ -359,6 +359,37 @@ TEST_F(RunSuiteTest, RefusesToMixConfigurations) {
   EXPECT_EQ(RunSuite(t, registry_, o).episodes_run, 4);
 }
 
+// A run given the folder of another suite (its --out reused by mistake) took it over: the rows
+// the two suites share resumed, the others moved to episodes.dropped.csv, and the other suite's
+// tables were replaced. Refused, with nothing touched; a suite renamed with its configuration
+// unchanged still resumes.
+TEST_F(RunSuiteTest, AFolderOfAnotherSuiteIsRefusedNotTakenOver) {
+  Run(LoadOrDie(kSuite), "theirs", 1, 2);
+  const fs::path theirs = dir_.path() / "theirs";
+  const std::string episodes = ReadText(theirs / "episodes.csv");
+  const std::string table = ReadText(theirs / "table.csv");
+  std::string mine = kSuite;
+  mine.replace(mine.find("name: determinism"), 17, "name: mine");
+  const std::string orca_row = "  - {label: orca, policy: orca}";
+  mine.replace(mine.find(orca_row), orca_row.size(),
+               "  - {label: orca, policy: orca, params: {safety_space: 0.05}}");
+  try {
+    Run(LoadOrDie(mine), "theirs", 1, 2);
+    ADD_FAILURE() << "took over the folder of another suite";
+  } catch (const RunRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("holds the results of another suite, 'determinism'"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(ReadText(theirs / "episodes.csv"), episodes);
+  EXPECT_EQ(ReadText(theirs / "table.csv"), table);
+  EXPECT_FALSE(fs::exists(theirs / "episodes.dropped.csv"));
+
+  std::string renamed = kSuite;
+  renamed.replace(renamed.find("name: determinism"), 17, "name: renamed");
+  EXPECT_EQ(Run(LoadOrDie(renamed), "theirs", 1, 2).episodes_resumed, 4);
+}
+
 TEST_F(RunSuiteTest, AFileReplacedAtTheSamePathIsAnotherConfiguration) {
   // Parameters that name files (weights, world files) count with their content: new weights
   // or an edited world at the same path must not resume the old file's episodes.
