@@ -61,13 +61,42 @@ Rect ToRect(const std::string& file, const YAML::Node& n, const std::string& key
   return Rect::FromCorners(v[0], v[1], v[2], v[3]);
 }
 
-std::vector<StartGoal> Pairs(const std::string& file, const YAML::Node& n, const std::string& key) {
+// A pair's start or goal outside the world's bounds or inside one of its rectangles: the
+// episode of that pair could not be made, and a run found it only when it came to it, after
+// the episodes before it (validate tries episode 0 alone).
+void CheckPairPoint(const std::string& file, const YAML::Node& n, const std::string& key,
+                    const char* what, const Vec2& p, const WorldFile& w) {
+  char point[64];
+  std::snprintf(point, sizeof(point), "(%.4f, %.4f)", p.x(), p.y());
+  const std::string fix =
+      ": every start and goal must lie in free space (fix the pair, or import "
+      "the plan again with `crowdsim-bench floorplan import`)";
+  if (w.bounds.Area() > 0.0 && !w.bounds.Contains(p)) {
+    Fail(file, n, "'" + key + "': its " + what + " " + point + " lies outside 'bounds'" + fix);
+  }
+  for (std::size_t k = 0; k < w.rectangles.size(); ++k) {
+    const Rect& r = w.rectangles[k];
+    if (p.x() > r.min.x() && p.x() < r.max.x() && p.y() > r.min.y() && p.y() < r.max.y()) {
+      Fail(file, n,
+           "'" + key + "': its " + what + " " + point + " lies inside rectangles[" +
+               std::to_string(k) + "]" + fix);
+    }
+  }
+}
+
+// The pairs of `key` (robot_pairs.train or .test), each checked against the world's bounds and
+// rectangles, read before them.
+std::vector<StartGoal> Pairs(const std::string& file, const YAML::Node& n, const std::string& key,
+                             const WorldFile& w) {
   std::vector<StartGoal> out;
   if (!n) return out;
   if (!n.IsSequence()) Fail(file, n, "'" + key + "' must be a list of [sx, sy, gx, gy]");
   for (const auto& p : n) {
     auto v = Numbers(file, p, 4, key);
+    const std::string item = key + "[" + std::to_string(out.size()) + "]";
     out.push_back({Vec2(v[0], v[1]), Vec2(v[2], v[3])});
+    CheckPairPoint(file, p, item, "start", out.back().start, w);
+    CheckPairPoint(file, p, item, "goal", out.back().goal, w);
   }
   return out;
 }
@@ -213,8 +242,8 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
   if (const auto pairs = root["robot_pairs"]) {
     if (!pairs.IsMap())
       Fail(file, pairs, "'robot_pairs' must be a map {train: [...], test: [...]}");
-    w.train_pairs = Pairs(file, pairs["train"], "robot_pairs.train");
-    w.test_pairs = Pairs(file, pairs["test"], "robot_pairs.test");
+    w.train_pairs = Pairs(file, pairs["train"], "robot_pairs.train", w);
+    w.test_pairs = Pairs(file, pairs["test"], "robot_pairs.test", w);
   }
   if (const auto pts = root["free_points"]) {
     if (!pts.IsSequence()) Fail(file, pts, "'free_points' must be a list of [x, y]");

@@ -236,5 +236,40 @@ TEST(WorldFileValues, WrongKindsOfValuesAreLocatedErrors) {
   }
 }
 
+// A robot pair whose start or goal is outside the bounds or inside a rectangle (a pair written
+// by hand): its episode could not be made, and a run stopped when it came to it, after the
+// episodes before it had run (validate tries episode 0 alone). Now the file is refused where it
+// is read, naming the line and the pair.
+TEST(WorldFileValues, ARobotPairOutsideTheFreeSpaceIsALocatedError) {
+  TempDir dir;
+  const std::string head =
+      "format: crowdsim-world/1\nbounds: [-5, -5, 5, 5]\nrectangles:\n  - [-1, -1, 1, 1]\n"
+      "robot_pairs:\n";
+  // {pairs, line of the error, text the message must hold}
+  const std::tuple<std::string, int, std::string> cases[] = {
+      {"  test:\n    - [-3, -3, 3, 3]\n    - [-3, -3, 0, 0.5]\n", 8,
+       "'robot_pairs.test[1]': its goal (0.0000, 0.5000) lies inside rectangles[0]"},
+      {"  train:\n    - [-6, 0, 3, 3]\n", 7,
+       "'robot_pairs.train[0]': its start (-6.0000, 0.0000) lies outside 'bounds'"},
+  };
+  int k = 0;
+  for (const auto& [pairs, line, hint] : cases) {
+    const auto path = dir.Write("pairs" + std::to_string(k++) + ".yaml", head + pairs);
+    try {
+      ReadWorldFile(path);
+      ADD_FAILURE() << "no error for\n" << pairs;
+    } catch (const WorldFileError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(path.string() + ":" + std::to_string(line) + ":"), std::string::npos)
+          << what;
+      EXPECT_NE(what.find(hint), std::string::npos) << what;
+    }
+  }
+  // On an edge of a rectangle is free space, as for the scenario's own check.
+  const WorldFile ok =
+      ReadWorldFile(dir.Write("ok.yaml", head + "  test:\n    - [-3, -3, 1, 0]\n"));
+  EXPECT_EQ(ok.test_pairs.size(), 1u);
+}
+
 }  // namespace
 }  // namespace crowdsim

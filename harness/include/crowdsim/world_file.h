@@ -6,7 +6,7 @@
 //   attribution: "..."              # source credit (floor plans)
 //   bounds: [xmin, ymin, xmax, ymax]
 //   rectangles: [[xmin, ymin, xmax, ymax], ...]
-//   robot_pairs: {train: [[sx, sy, gx, gy], ...], test: [...]}
+//   robot_pairs: {train: [[sx, sy, gx, gy], ...], test: [...]}   # in bounds, in no rectangle
 //   free_points: [[x, y], ...]      # sampled free space for humans (floor plans)
 //   stats: {free_area_m2: 61.2, ...}
 //   mask:                           # optional navigable raster (floor plans), see below
