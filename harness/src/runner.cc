@@ -570,7 +570,9 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   fs::remove(summary.out_dir / "table.csv", ec);
 
   const std::vector<Task> tasks = PendingTasks(suite, scope, done, &summary.episodes_resumed);
-  Progress progress(suite.name, static_cast<int>(tasks.size()) + summary.episodes_resumed,
+  // A shard's counts are its slice's: the line says whose (an MPI rank's line, rank 0's).
+  Progress progress(scope.shards > 1 ? suite.name + " shard " + facts.shard : suite.name,
+                    static_cast<int>(tasks.size()) + summary.episodes_resumed,
                     summary.episodes_resumed, options.progress);
   // Threads: lines written within 200 ms (a crash loses at most that). Worker processes
   // already pay a pipe round trip per episode: each line written at once, and no thread of

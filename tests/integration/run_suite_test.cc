@@ -333,6 +333,20 @@ TEST_F(RunSuiteTest, AShardRefusesAFolderOfAWholeRunOrAnotherShard) {
   EXPECT_EQ(r.episodes_run, 5);
 }
 
+// A shard's progress line counts its own slice: "[determinism] 3/3 episodes" read as the
+// whole suite's 8 (an MPI run shows rank 0's line). It names the shard.
+TEST_F(RunSuiteTest, AShardsProgressLineNamesTheShard) {
+  RunOptions o;
+  o.out_dir = dir_.path() / "shard2";
+  o.shard_index = 2;
+  o.shard_count = 3;
+  o.episodes = 4;
+  ::testing::internal::CaptureStderr();
+  RunSuite(LoadOrDie(kSuite), registry_, o);
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(said.find("[determinism shard 2/3] 3/3 episodes"), std::string::npos) << said;
+}
+
 TEST_F(RunSuiteTest, RefusesToMixConfigurations) {
   const Suite s = LoadOrDie(kSuite);
   Run(s, "out", 1, 2);
