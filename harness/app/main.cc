@@ -49,10 +49,10 @@ const std::vector<Command>& Commands() {
        R"(  crowdsim-bench validate FILE.yaml... [--set KEY.PATH=VALUE]...
       checks suites (and training files) without running them; reports every error with
       file:line:col, then builds every row as `run` does (weights and world files read, the
-      sensors its policy needs, episode 0's scenario made and checked) and, for a row of the
-      harness's own plugins, plays the first step of its episode 0, each error naming the row;
-      a training file's learner, teacher and world
-      are built as `train` builds them and play their first step
+      sensors its policy needs, the scenario of the first episode of each frozen layout made
+      and checked) and, for a row of the harness's own plugins, plays the first step of its
+      episode 0, each error naming the row; a training file's learner, teacher and world are
+      built as `train` builds them and play their first step
 )"},
       {"train", crowdsim::cli::TrainCommand,
        R"(  crowdsim-bench train TRAIN.yaml [--resume] [--out DIR] [--seed N] [--quiet] [--set KEY.PATH=VALUE]...

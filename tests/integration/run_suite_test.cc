@@ -1120,6 +1120,37 @@ TEST_F(RunSuiteTest, CommandLineRunValidateAndErrors) {
   EXPECT_EQ(mrc3, 0) << mtext3;  // an earlier merge of the same shards is merged again
 }
 
+// A world set whose rooms differ in size: a crowd that fits the first room but not a smaller
+// one was said "ok" by validate (which made episode 0's scenario alone), and the run stopped at
+// the small room's first episode. The preflight makes the first episode of every layout the
+// run reaches; a run that reaches only the first room goes ahead.
+TEST_F(RunSuiteTest, ACrowdThatFitsTheFirstRoomButNotALaterOneIsRefusedBeforeAnyEpisode) {
+  dir_.Write("rooms.yaml",
+             "format: crowdsim-world-set/1\nworlds:\n"
+             "  - {name: large, bounds: [-5, -5, 5, 5], rectangles: []}\n"
+             "  - {name: small, bounds: [0, 0, 3, 3], rectangles: []}\n");
+  const Suite s = LoadOrDie(R"(name: rooms
+episodes: 4
+seed: 5
+world: {source: random_rect, file: rooms.yaml, min_start_goal_dist: 1}
+humans: {count: 10}
+rows:
+  - {label: first, policy: linear}
+  - {label: second, policy: orca}
+)");
+  const std::vector<std::string> errors = PreflightSuite(s, registry_);
+  ASSERT_EQ(errors.size(), 2u);  // each row named, though both make the same scenarios
+  for (const std::string& e : errors) {
+    EXPECT_NE(e.find("the scenario of episode 1 (world 'random_rect') cannot be made"),
+              std::string::npos)
+        << e;
+    EXPECT_NE(e.find("layout 'small'"), std::string::npos) << e;
+  }
+  EXPECT_THROW(Run(s, "refused", 1), RowsRefused);
+  EXPECT_FALSE(fs::exists(dir_.path() / "refused" / "episodes.csv"));
+  EXPECT_EQ(Run(s, "large_room_only", 1, 1).episodes_run, 2);
+}
+
 // `validate` runs `run`'s preflight: every row's plugins built (weights read, world files read,
 // the sensors the policy needs) and episode 0's scenario made and checked, so none of these
 // says "ok" and then fails in `run`. Each suite has one bad row, named in the message.

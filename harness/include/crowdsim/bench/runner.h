@@ -117,7 +117,8 @@ std::filesystem::path DefaultRunDir(const Suite& suite);
 
 /// What `validate` checks: what `run` does before any episode (builds every row's plugins once:
 /// world and its files, sensors, robot and human policies, their weights; checks that each
-/// robot has the sensors it needs; makes episode 0's scenario), then plays the first step of
+/// robot has the sensors it needs; makes the scenario of the first episode of each frozen
+/// layout of a world of the harness's own, else of episode 0), then plays the first step of
 /// episode 0 of each row whose plugins are all the harness's own (in this process; `run`
 /// isolates a row with yours, whose crash or hang would end validate). Returns one
 /// message per failing row (naming the row and with the plugin's own message); empty when
