@@ -1,5 +1,6 @@
 #include "yaml_file.h"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <system_error>
@@ -90,6 +91,54 @@ std::string TabHint(const fs::path& file, int zero_based_line) {
   return "";
 }
 
+// yaml-cpp says "end of map flow not found" (or "sequence flow") where it gave up, often the
+// line after the one whose '{' (or '[') lacks its closing bracket. The innermost such bracket
+// opened before the error (outside quotes and comments) is said, with its line and column.
+std::string UnclosedBracketHint(const fs::path& file, const std::string& message,
+                                const YAML::Mark& at) {
+  const bool map = message.find("end of map flow not found") != std::string::npos;
+  if (!map && message.find("end of sequence flow not found") == std::string::npos) return "";
+  struct Open {
+    char bracket;
+    int line, column;  // 1-based
+  };
+  std::vector<Open> open;
+  std::ifstream in(file);
+  std::string line;
+  char quote = 0;
+  for (int n = 0; std::getline(in, line) && n <= at.line; ++n) {
+    const std::size_t end =
+        n == at.line ? std::min<std::size_t>(line.size(), at.column) : line.size();
+    for (std::size_t i = 0; i < end; ++i) {
+      const char c = line[i];
+      const char before = i == 0 ? ' ' : line[i - 1];
+      if (quote != 0) {
+        if (c == '\\' && quote == '"')
+          ++i;
+        else if (c == quote)
+          quote = 0;
+        continue;
+      }
+      if (c == '#' && (before == ' ' || before == '\t' || i == 0)) break;
+      const bool starts_value = i == 0 || std::string(" \t,[{:-").find(before) != std::string::npos;
+      if ((c == '"' || c == '\'') && starts_value) {
+        quote = c;
+      } else if (c == '{' || c == '[') {
+        open.push_back({c, n + 1, static_cast<int>(i) + 1});
+      } else if ((c == '}' || c == ']') && !open.empty()) {
+        open.pop_back();
+      }
+    }
+  }
+  const char wanted = map ? '{' : '[';
+  for (auto it = open.rbegin(); it != open.rend(); ++it) {
+    if (it->bracket != wanted) continue;
+    return std::string(" (the '") + wanted + "' at line " + std::to_string(it->line) + ", column " +
+           std::to_string(it->column) + " is not closed: end it with '" + (map ? '}' : ']') + "')";
+  }
+  return "";
+}
+
 }  // namespace
 
 YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
@@ -119,7 +168,7 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
   } catch (const YAML::Exception& e) {
     errors->push_back(
         {file.string(), e.mark.line + 1, e.mark.column + 1, "",
-         "not valid YAML: " + e.msg +
+         "not valid YAML: " + e.msg + UnclosedBracketHint(file, e.msg, e.mark) +
              (e.msg.find("tab") == std::string::npos ? TabHint(file, e.mark.line) : "")});
     return YAML::Node(YAML::NodeType::Null);
   }

@@ -152,6 +152,26 @@ TEST_F(SuiteValidation, YamlSyntaxErrorHasLocation) {
   EXPECT_GT(r.errors[0].line, 0);
 }
 
+// yaml-cpp reports a '{' or '[' without its closing bracket at the line after it, where it gave
+// up ("end of map flow not found" at 5:5); the bracket it means is said with its place.
+TEST_F(SuiteValidation, AnUnclosedBracketIsNamedWhereItOpens) {
+  auto map = Load(
+      "name: t\nepisodes: 2\nrows:  # [not a bracket\n  - {label: a, policy: orca\n"
+      "  - {label: 'b}', policy: linear}\n");
+  ASSERT_FALSE(map.suite);
+  EXPECT_NE(Find(map,
+                 "end of map flow not found (the '{' at line 4, column 5 is not closed: end "
+                 "it with '}')"),
+            "")
+      << All(map);
+  auto list = Load(
+      "name: t\nepisodes: 2\nrobot:\n  sensors: [person, {type: lidar2d}\n"
+      "rows:\n  - {label: a, policy: orca}\n");
+  ASSERT_FALSE(list.suite);
+  EXPECT_NE(Find(list, "(the '[' at line 4, column 12 is not closed: end it with ']')"), "")
+      << All(list);
+}
+
 TEST_F(SuiteValidation, WrongKindAndWeightsWithoutParameter) {
   auto r = Load(R"(name: t
 world: {source: linear}
