@@ -158,6 +158,12 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
       valid += (j ? ", " : "") + std::to_string(j) + (names[j].empty() ? "" : " " + names[j]);
     }
     *problem = "'" + *resolved + "' has no item [" + sel + "] (items: " + valid + ")";
+    // A label a sweep makes (crowd/humans.count=2): the rows exist only once it has run.
+    const std::string swept = sel.substr(0, sel.find('/'));
+    if (swept.size() < sel.size() && std::find(names.begin(), names.end(), swept) != names.end()) {
+      *problem += "; the rows of a sweep are set through the row that has it: " + *resolved + "[" +
+                  swept + "]";
+    }
     return node;
   }
   *resolved += "[" + std::to_string(*found) + "]";
@@ -188,6 +194,19 @@ std::string SetPath(YAML::Node& root, const std::vector<Segment>& segments, cons
   return problem;
 }
 
+/// Where an override's value begins: its first '=' outside a [...] selector (a label may hold
+/// one: rows[crowd/humans.count=2]), else its first '=' (an unclosed selector is then said as
+/// such); npos when it has none.
+std::size_t ValueSign(const std::string& text) {
+  int depth = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '[') ++depth;
+    if (text[i] == ']' && depth > 0) --depth;
+    if (text[i] == '=' && depth == 0) return i;
+  }
+  return text.find('=');
+}
+
 }  // namespace
 
 void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
@@ -198,7 +217,7 @@ void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
     auto fail = [&](const std::string& message) {
       errors->push_back({"--set " + text, 0, 0, "", message});
     };
-    const std::size_t eq = text.find('=');
+    const std::size_t eq = ValueSign(text);
     if (eq == std::string::npos || eq == 0) {
       fail("give key.path=value, e.g. humans.count=10 or rows[orca].params.safety_space=0.1");
       continue;
@@ -266,7 +285,7 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
   // Then, for the rest, by the keys as written (a [name] selector unresolved): the error's
   // path under the override's, or ending in its last key (values a row inherits).
   for (const std::string& text : overrides) {
-    const std::size_t eq = text.find('=');
+    const std::size_t eq = ValueSign(text);
     if (eq == std::string::npos) continue;
     std::string why;
     const auto segments = ParsePath(text.substr(0, eq), &why);

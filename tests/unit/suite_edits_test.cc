@@ -1,6 +1,8 @@
 // One suite file, many experiments: `--set key.path=value` overrides and `sweep:` rows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/bench/training/train_spec.h"
 #include "temp_dir.h"
@@ -251,6 +253,25 @@ rows:
   EXPECT_NE(prior.suite->ConfigHash(), plain.suite->ConfigHash());
   // Parameters without the mark enter at their default too, as they always did.
   EXPECT_NE(plain.suite->rows[0].canonical.find("torch_threads=1"), std::string::npos);
+}
+
+// A row a sweep makes, named by its label, which holds an '=': the --set was cut at that '='
+// and said "an unclosed or empty [...] in 'rows[orca/humans.count'". Now the label is looked
+// up, and the row that has the sweep is named.
+TEST_F(SuiteEdits, ASetOfARowASweepMakesNamesTheSweepRow) {
+  const auto r = Load(kSuite, {"rows[orca/humans.count=2].params.safety_space=0.1"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("'rows' has no item [orca/humans.count=2] (items: 0 orca, 1 linear); the "
+                        "rows of a sweep are set through the row that has it: rows[orca]"),
+            std::string::npos)
+      << All(r);
+  // A value may hold '=' and '[' as before.
+  const auto ok = Load(kSuite, {"rows[linear].info={model: a=b}"});
+  ASSERT_TRUE(ok.suite) << All(ok);
+  const auto& info = ok.suite->rows.back().info;
+  EXPECT_NE(
+      std::find(info.begin(), info.end(), std::pair<std::string, std::string>("model", "a=b")),
+      info.end());
 }
 
 TEST_F(SuiteEdits, BadOverridesAreNamedByTheOption) {
