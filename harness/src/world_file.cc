@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -263,7 +264,26 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
   return w;
 }
 
+// A floor-plan image given where its imported world belongs (file: plan.png): its bytes read
+// as YAML gave "not valid YAML: unknown escape character" and a stray byte.
+void RefuseImage(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[8] = {};
+  in.read(head, sizeof(head));
+  const std::string start(head, static_cast<std::size_t>(in.gcount()));
+  const bool png = start.starts_with("\x89PNG");
+  const bool pgm = start.size() >= 3 && start[0] == 'P' && (start[1] == '2' || start[1] == '5') &&
+                   std::isspace(static_cast<unsigned char>(start[2]));
+  if (!png && !pgm) return;
+  throw WorldFileError(path.string() + ": is a " + (png ? "PNG" : "PGM") +
+                       " image, not a world file: import the floor plan first (`crowdsim-bench "
+                       "floorplan import " +
+                       path.string() +
+                       " --resolution M_PER_PX --out WORLD.yaml`) and give WORLD.yaml");
+}
+
 YAML::Node LoadYaml(const std::filesystem::path& path) {
+  RefuseImage(path);
   std::vector<SuiteError> errors;
   YAML::Node root = suite_internal::LoadYamlFile(path, "world file", &errors);
   if (!errors.empty()) throw WorldFileError(errors.front().Format());

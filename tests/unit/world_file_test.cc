@@ -271,5 +271,29 @@ TEST(WorldFileValues, ARobotPairOutsideTheFreeSpaceIsALocatedError) {
   EXPECT_EQ(ok.test_pairs.size(), 1u);
 }
 
+// A floor-plan image given as the world (file: plan.png, before importing it) was read as YAML:
+// "not valid YAML: unknown escape character" and a stray byte. It is named as an image, with
+// the import command.
+TEST(WorldFileValues, AnImageGivenAsAWorldIsToldToBeImportedFirst) {
+  TempDir dir;
+  const auto png = dir.Write("plan.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+  const auto pgm = dir.Write("plan.pgm", "P5\n4 4\n255\n");
+  for (const auto& [path, kind] : {std::pair{png, "PNG"}, std::pair{pgm, "PGM"}}) {
+    for (const bool set : {false, true}) {
+      try {
+        set ? static_cast<void>(ReadWorldSet(path)) : static_cast<void>(ReadWorldFile(path));
+        ADD_FAILURE() << "read " << path;
+      } catch (const WorldFileError& e) {
+        EXPECT_NE(std::string(e.what()).find(path.string() + ": is a " + kind +
+                                             " image, not a world file: import the floor plan "
+                                             "first (`crowdsim-bench floorplan import " +
+                                             path.string()),
+                  std::string::npos)
+            << e.what();
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace crowdsim
