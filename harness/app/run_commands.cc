@@ -29,10 +29,21 @@ std::optional<Suite> LoadOrReport(const std::string& file, PluginRegistry& regis
   if (!r.suite) {
     // A training file read as a suite gives an unknown key for each of its own keys (policy,
     // params, sensors, training): what it is says more, as validate tells the two apart.
-    if (KindOfSpecFile(file) == SpecFileKind::kTraining) {
+    const SpecFileKind kind = KindOfSpecFile(file);
+    if (kind == SpecFileKind::kTraining) {
       std::cerr << "error: " << file << " is a training file: train it with `crowdsim-bench train "
                 << file << "` (" << command
                 << " takes a suite, whose rows: list the policies to compare)\n";
+      return std::nullopt;
+    }
+    // A world just imported (floorplan import --out WORLD.yaml) or written by hand.
+    if (kind == SpecFileKind::kWorld || kind == SpecFileKind::kWorldSet) {
+      std::cerr << "error: " << file << " is a world"
+                << (kind == SpecFileKind::kWorldSet ? " set" : "")
+                << " file: a suite's world: block names it, e.g. `world: {source: "
+                << (kind == SpecFileKind::kWorldSet ? "random_rect" : "floorplan")
+                << ", file: " << file << "}` (a path relative to the suite's folder); " << command
+                << " takes a suite\n";
       return std::nullopt;
     }
     for (const auto& e : r.errors) std::cerr << "error: " << e.Format() << "\n";

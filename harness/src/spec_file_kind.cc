@@ -13,6 +13,8 @@ SpecFileKind KindOfSpecFile(const std::filesystem::path& file) {
       return SpecFileKind::kTraining;
     }
     if (line.starts_with("rows:")) return SpecFileKind::kSuite;
+    if (line.starts_with("format: crowdsim-world-set/")) return SpecFileKind::kWorldSet;
+    if (line.starts_with("format: crowdsim-world/")) return SpecFileKind::kWorld;
   }
   return SpecFileKind::kUnknown;
 }

@@ -1151,6 +1151,27 @@ rows:
   EXPECT_EQ(Run(s, "large_room_only", 1, 1).episodes_run, 2);
 }
 
+// A world file given where a suite belongs (`run runs/two_rooms.yaml` right after `floorplan
+// import`): an unknown key for each of its keys (format, bounds, rectangles, ...). It is named
+// as a world, with the world: block that uses it.
+TEST_F(RunSuiteTest, AWorldFileGivenAsASuiteSaysWhereItBelongs) {
+  const std::string exe = (testing::BinaryDir() / "bin" / "crowdsim-bench").string();
+  const fs::path world = dir_.Write(
+      "plan.yaml", "# imported\nformat: crowdsim-world/1\nname: plan\nbounds: [0, 0, 4, 4]\n");
+  const fs::path set = dir_.Write(
+      "rooms.yaml", "format: crowdsim-world-set/1\nworlds:\n  - {name: a, bounds: [0, 0, 4, 4]}\n");
+  for (const auto& [file, block] : {std::pair{world, "world: {source: floorplan, file: "},
+                                    std::pair{set, "world: {source: random_rect, file: "}}) {
+    for (const std::string command : {"validate", "run"}) {
+      auto [rc, text] = Shell(exe + " " + command + " " + file.string());
+      EXPECT_EQ(rc, 2) << text;
+      EXPECT_NE(text.find(file.string() + " is a world"), std::string::npos) << text;
+      EXPECT_NE(text.find(block + file.string() + "}"), std::string::npos) << text;
+      EXPECT_EQ(text.find("unknown key"), std::string::npos) << text;
+    }
+  }
+}
+
 // `validate` runs `run`'s preflight: every row's plugins built (weights read, world files read,
 // the sensors the policy needs) and episode 0's scenario made and checked, so none of these
 // says "ok" and then fails in `run`. Each suite has one bad row, named in the message.
