@@ -139,6 +139,22 @@ std::string UnclosedBracketHint(const fs::path& file, const std::string& message
   return "";
 }
 
+// What a file that is no text is (a PNG floor plan given as the suite): its bytes read as YAML
+// gave "unknown escape character" and printed a stray byte. "" for a text file.
+std::string BinaryKind(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  char head[4096];
+  in.read(head, sizeof(head));
+  const std::string start(head, static_cast<std::size_t>(in.gcount()));
+  if (start.starts_with("\x89PNG")) return "a PNG image";
+  // UTF-16 and UTF-32 text holds NUL bytes: YAML tells it by a byte order mark, or by a NUL
+  // among its first two bytes.
+  const bool wide = start.starts_with("\xff\xfe") || start.starts_with("\xfe\xff") ||
+                    start.substr(0, 2).find('\0') != std::string::npos;
+  if (!wide && start.find('\0') != std::string::npos) return "binary data";
+  return "";
+}
+
 }  // namespace
 
 YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
@@ -157,6 +173,11 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
                        ran.empty() ? "is a folder; give the " + what + " (a .yaml file) in it"
                                    : "is the output folder of a run; give the " + what +
                                          " it ran, which its manifest.json names: " + ran});
+    return YAML::Node(YAML::NodeType::Null);
+  }
+  if (const std::string binary = BinaryKind(file); !binary.empty()) {
+    errors->push_back(
+        {file.string(), 0, 0, "", "is " + binary + ", not a " + what + " (YAML text)"});
     return YAML::Node(YAML::NodeType::Null);
   }
   YAML::Node root;

@@ -172,6 +172,26 @@ TEST_F(SuiteValidation, AnUnclosedBracketIsNamedWhereItOpens) {
       << All(list);
 }
 
+// A PNG (a floor plan given as the suite) or other binary file was read as YAML: "unknown
+// escape character" and a stray byte printed to the terminal.
+TEST_F(SuiteValidation, ABinaryFileIsNamedAsSuch) {
+  const auto png = dir_.Write("plan.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+  const SuiteLoadResult image = LoadSuite(png, registry_);
+  ASSERT_FALSE(image.suite);
+  EXPECT_EQ(All(image), png.string() + ": is a PNG image, not a suite file (YAML text)\n");
+  const auto zipped = dir_.Write("suite.yaml.gz", std::string("\x1f\x8b\x08\0\0\0\0\0", 8));
+  const SuiteLoadResult binary = LoadSuite(zipped, registry_);
+  ASSERT_FALSE(binary.suite);
+  EXPECT_EQ(All(binary), zipped.string() + ": is binary data, not a suite file (YAML text)\n");
+  // UTF-16 text (with or without its byte order mark) holds NUL bytes, and is YAML.
+  for (const bool bom : {true, false}) {
+    std::string utf16 = bom ? std::string("\xff\xfe", 2) : "";
+    for (const char c : std::string(kGood)) utf16 += std::string{c, '\0'};
+    const SuiteLoadResult wide = LoadSuite(dir_.Write("utf16.yaml", utf16), registry_);
+    EXPECT_TRUE(wide.suite) << All(wide);
+  }
+}
+
 TEST_F(SuiteValidation, WrongKindAndWeightsWithoutParameter) {
   auto r = Load(R"(name: t
 world: {source: linear}
