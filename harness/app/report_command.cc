@@ -44,6 +44,8 @@ int ReportCommand(const std::vector<std::string>& args) {
   }
   render::ReportOptions options;
   if (auto s = a.Get("--suite")) options.suite_file = *s;
+  std::vector<std::string> warnings;
+  options.warnings = &warnings;
   PluginRegistry registry;
   try {
     const std::string html =
@@ -54,6 +56,7 @@ int ReportCommand(const std::vector<std::string>& args) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   std::cerr << "wrote " << *out << "\n";
   return 0;
 }

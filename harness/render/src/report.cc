@@ -68,20 +68,24 @@ void WriteHeader(std::ostream& html, const ReportInputs& in) {
   html << "</p>\n";
 }
 
-// Warnings: damaged episode lines skipped, a suite changed since the run.
-void WriteWarnings(std::ostream& html, const ReportInputs& in) {
+// Warnings: damaged episode lines skipped, a suite changed since the run; each also added to
+// `text` when given (a page written without a word on the command line went unread).
+void WriteWarnings(std::ostream& html, const ReportInputs& in, std::vector<std::string>* text) {
+  std::vector<std::string> warnings;
   const EpisodesCsvRead& read = in.episodes;
   if (read.damaged > 0) {
-    html << "<p class=\"warn\">" << read.damaged
-         << " damaged line(s) of episodes.csv were skipped (the first: "
-         << XmlEscape(read.first_damage) << "): the figures show the readable episodes only.</p>\n";
+    warnings.push_back(std::to_string(read.damaged) +
+                       " damaged line(s) of episodes.csv were skipped (the first: " +
+                       read.first_damage + "): the figures show the readable episodes only.");
   }
   const std::string recorded_hash = ReadManifestField(in.manifest, "config_hash");
   if (!recorded_hash.empty() && recorded_hash != in.suite.ConfigHash()) {
-    html << "<p class=\"warn\">The suite file changed since this run (config hash "
-         << XmlEscape(in.suite.ConfigHash()) << " vs " << XmlEscape(recorded_hash)
-         << "): the figures replay the current suite and may differ from the table.</p>\n";
+    warnings.push_back("The suite file changed since this run (config hash " +
+                       in.suite.ConfigHash() + " vs " + recorded_hash +
+                       "): the figures replay the current suite and may differ from the table.");
   }
+  for (const std::string& w : warnings) html << "<p class=\"warn\">" << XmlEscape(w) << "</p>\n";
+  if (text != nullptr) text->insert(text->end(), warnings.begin(), warnings.end());
 }
 
 // table.csv as an HTML table, numbers right-aligned.
@@ -187,7 +191,7 @@ std::string BuildReport(const fs::path& dir, PluginRegistry& registry,
   const ReportInputs in = ReadReportInputs(dir, registry, options);
   std::ostringstream html;
   WriteHeader(html, in);
-  WriteWarnings(html, in);
+  WriteWarnings(html, in, options.warnings);
   WriteTable(html, in.table);
   WriteCharts(html, in);
   WriteEpisodes(html, in, registry, options);

@@ -109,6 +109,32 @@ TEST(ReportCli, WritesTheReportAndRejectsBadFolders) {
   EXPECT_NE(ftext.find("--out must end in .html"), std::string::npos) << ftext;
 }
 
+// The page's warnings (here: the suite edited since the run, so the figures replay another
+// configuration than the table's) were on the page only; `report` said "wrote" and nothing else.
+TEST(ReportCli, ThePagesWarningsAreSaidOnTheCommandLine) {
+  TempDir tmp;
+  const fs::path suite = tmp.path() / "quick.yaml";
+  fs::copy_file(Quick(), suite);
+  const fs::path results = tmp.path() / "quick";
+  auto [rrc, rtext] = Shell(Exe() + " run " + suite.string() +
+                            " --episodes 2 --jobs 2 --quiet --out " + results.string());
+  ASSERT_EQ(rrc, 0) << rtext;
+  const fs::path html = tmp.path() / "report.html";
+  auto [rc, text] = Shell(Exe() + " report " + results.string() + " --out " + html.string());
+  EXPECT_EQ(rc, 0) << text;
+  EXPECT_EQ(text.find("warning:"), std::string::npos) << text;
+  std::string edited = testing::ReadText(suite);
+  edited.replace(edited.find("seed: "), 6, "seed: 1");
+  std::ofstream(suite, std::ios::trunc) << edited;
+  auto [erc, etext] = Shell(Exe() + " report " + results.string() + " --out " + html.string());
+  EXPECT_EQ(erc, 0) << etext;
+  EXPECT_NE(etext.find("warning: The suite file changed since this run (config hash "),
+            std::string::npos)
+      << etext;
+  EXPECT_NE(testing::ReadText(html).find("The suite file changed since this run"),
+            std::string::npos);
+}
+
 TEST(ReportCli, AGarbageEpisodesCsvFailsAndDamagedLinesAreShown) {
   TempDir tmp;
   const fs::path results = tmp.path() / "quick";

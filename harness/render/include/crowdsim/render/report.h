@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "crowdsim/bench/plugin_registry.h"
 
@@ -20,6 +21,9 @@ class ReportError : public std::runtime_error {
 struct ReportOptions {
   std::filesystem::path suite_file;  ///< the suite to replay; empty: manifest.json's suite_file
   double thumbnail_scale = 0.36;     ///< thumbnail px per figure px
+  /// Receives the page's warnings as text (damaged lines, a suite changed since the run), for
+  /// the command line to say them too; may be null.
+  std::vector<std::string>* warnings = nullptr;
 };
 
 /// The style sheet every report page embeds.
