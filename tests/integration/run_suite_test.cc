@@ -1223,7 +1223,8 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
        "policy: cadrl, sensors: [person, {type: lidar2d, beams: 90}], weights: " +
            (testing::SourceDir() / "results/models/cadrl_pp_lidar_person_rect1/best.pt").string() +
            ", params: {sensors: lidar+person}",
-       "the first step of episode 0 fails: the lidar2d reading has 90 beams"},
+       "the first step of episode 0 fails: the robot's policy failed: the lidar2d reading has 90 "
+       "beams"},
       {"impossible human count",
        "policy: linear, world: {source: random_rect, obstacles: 1, split: test}, humans: {count: "
        "500}",
