@@ -139,6 +139,51 @@ std::string UnclosedBracketHint(const fs::path& file, const std::string& message
   return "";
 }
 
+// yaml-cpp says "illegal map value" at a ':' it cannot take, which is often a line or two after
+// the mistake: a key written without its ':' ("episodes 10": the next key's ':' is refused), or
+// a key indented deeper than the line before, whose value is already given ("episodes: 10" then
+// "  seed: 3"); and "end of map not found" at the start of a key line without its ':' followed
+// by a comment. The line that most likely holds the mistake is named when it is one of these.
+std::string MissingColonHint(const fs::path& file, const std::string& message, int error_line) {
+  const bool illegal_value = message.find("illegal map value") != std::string::npos;
+  if (!illegal_value && message.find("end of map not found") == std::string::npos) return "";
+  const auto content = [](const std::string& text) {
+    // The text before a comment, without its indentation and trailing blanks ("" when none).
+    std::string s = text.substr(0, text.find(" #"));
+    if (s.starts_with("#")) s.clear();
+    const std::size_t first = s.find_first_not_of(" \t");
+    const std::size_t last = s.find_last_not_of(" \t\r");
+    return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+  };
+  const auto indent = [](const std::string& text) { return text.find_first_not_of(' '); };
+  std::ifstream in(file);
+  std::string line, before, at;
+  int before_line = -1;
+  for (int n = 0; std::getline(in, line) && n <= error_line; ++n) {
+    if (n == error_line) {
+      at = line;
+    } else if (!content(line).empty()) {
+      before = line;
+      before_line = n;
+    }
+  }
+  // The suspect: the line before the error's for an illegal value, else the error's own.
+  const std::string suspect = content(illegal_value ? before : at);
+  const int suspect_line = illegal_value ? before_line : error_line;
+  if (suspect.empty() || suspect.starts_with("-") || suspect.find_first_of("\"'{[") == 0) {
+    return "";
+  }
+  const std::string named = " (line " + std::to_string(suspect_line + 1) + ", '" + suspect + "', ";
+  const std::size_t colon = suspect.find(':');
+  if (colon == std::string::npos) return named + "has no ':' after its key: write 'key: value')";
+  if (illegal_value && colon + 1 < suspect.size() && indent(at) != std::string::npos &&
+      indent(at) > indent(before)) {
+    return named + "already has its value, and line " + std::to_string(error_line + 1) +
+           " is indented deeper: indent its key as the keys beside it)";
+  }
+  return "";
+}
+
 // What a file that is no text is (a PNG floor plan given as the suite): its bytes read as YAML
 // gave "unknown escape character" and printed a stray byte. "" for a text file.
 std::string BinaryKind(const fs::path& file) {
@@ -187,10 +232,14 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
     errors->push_back({file.string(), 0, 0, "", "cannot read the " + what + " (permissions?)"});
     return YAML::Node(YAML::NodeType::Null);
   } catch (const YAML::Exception& e) {
-    errors->push_back(
-        {file.string(), e.mark.line + 1, e.mark.column + 1, "",
-         "not valid YAML: " + e.msg + UnclosedBracketHint(file, e.msg, e.mark) +
-             (e.msg.find("tab") == std::string::npos ? TabHint(file, e.mark.line) : "")});
+    errors->push_back({file.string(), e.mark.line + 1, e.mark.column + 1, "",
+                       "not valid YAML: " + e.msg + UnclosedBracketHint(file, e.msg, e.mark) + [&] {
+                         // A tab said outright; else the line that most likely holds the mistake.
+                         const std::string tab = e.msg.find("tab") == std::string::npos
+                                                     ? TabHint(file, e.mark.line)
+                                                     : "";
+                         return tab.empty() ? MissingColonHint(file, e.msg, e.mark.line) : tab;
+                       }()});
     return YAML::Node(YAML::NodeType::Null);
   }
   const std::size_t before = errors->size();

@@ -172,6 +172,33 @@ TEST_F(SuiteValidation, AnUnclosedBracketIsNamedWhereItOpens) {
       << All(list);
 }
 
+// yaml-cpp says "illegal map value" at the next key's ':', a line after the mistake: a key
+// without its ':', or a key indented under one whose value is already given.
+TEST_F(SuiteValidation, AnIllegalMapValueNamesTheLineBeforeIt) {
+  auto no_colon = Load("name: t\nepisodes 2\nrows:\n  - {label: a, policy: orca}\n");
+  ASSERT_FALSE(no_colon.suite);
+  EXPECT_NE(Find(no_colon,
+                 "illegal map value (line 2, 'episodes 2', has no ':' after its key: write "
+                 "'key: value')"),
+            "")
+      << All(no_colon);
+  // With a comment after it, yaml-cpp stops at that line itself ("end of map not found").
+  auto commented = Load("name: t\nepisodes 2  # a comment\nrows:\n  - {label: a, policy: orca}\n");
+  ASSERT_FALSE(commented.suite);
+  EXPECT_NE(Find(commented,
+                 "end of map not found (line 2, 'episodes 2', has no ':' after its key: write "
+                 "'key: value')"),
+            "")
+      << All(commented);
+  auto deeper = Load("name: t\nepisodes: 2\n\n  seed: 3\nrows:\n  - {label: a, policy: orca}\n");
+  ASSERT_FALSE(deeper.suite);
+  EXPECT_NE(Find(deeper,
+                 "illegal map value (line 2, 'episodes: 2', already has its value, and line 4 "
+                 "is indented deeper: indent its key as the keys beside it)"),
+            "")
+      << All(deeper);
+}
+
 // A PNG (a floor plan given as the suite) or other binary file was read as YAML: "unknown
 // escape character" and a stray byte printed to the terminal.
 TEST_F(SuiteValidation, ABinaryFileIsNamedAsSuch) {
