@@ -13,8 +13,10 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <sstream>
 #include <thread>
 
+#include "config_text.h"
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/version.h"
@@ -109,9 +111,14 @@ void CheckEveryLayout(const Suite& suite, size_t r, const WorldSource& world, in
   const RowSpec& row = suite.rows[r];
   if (!PluginRegistry::IsHarnessPlugin(*row.world.loaded)) return;
   const int layouts = std::min(episodes, world.LayoutCount());
-  const std::string crowd = world.Identity() + " " + std::to_string(row.humans.count) + " " +
-                            std::to_string(static_cast<int>(row.humans.goal_mode));
-  if (layouts < 2 || checked->count(crowd)) return;
+  if (layouts < 2) return;
+  // The world by its canonical text (parameters and the content of the files it reads), not
+  // its Identity(): a world set's identity is its file's name alone, so rooms.yaml of another
+  // folder, other rooms, skipped the check as if it had passed.
+  std::ostringstream crowd;
+  suite_internal::Canonical(row.world, crowd);
+  crowd << " " << row.humans.count << " " << static_cast<int>(row.humans.goal_mode);
+  if (checked->count(crowd.str())) return;
   for (int k = 1; k < layouts; ++k) {
     try {
       CheckScenario(MakeEpisodeScenario(suite, row, world, k), suite.sim);
@@ -121,7 +128,7 @@ void CheckEveryLayout(const Suite& suite, size_t r, const WorldSource& world, in
                      "') cannot be made: " + e.what());
     }
   }
-  checked->insert(crowd);
+  checked->insert(crowd.str());
 }
 
 }  // namespace

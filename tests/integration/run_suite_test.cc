@@ -1151,6 +1151,35 @@ rows:
   EXPECT_EQ(Run(s, "large_room_only", 1, 1).episodes_run, 2);
 }
 
+// Two world sets of the same file name in other folders: the world's Identity() is the file's
+// name alone, so the second row's rooms were taken as checked with the first row's, and
+// validate said "ok" to a crowd that the second set's small room cannot hold.
+TEST_F(RunSuiteTest, AWorldSetOfTheSameFileNameElsewhereHasItsOwnLayoutsChecked) {
+  fs::create_directories(dir_.path() / "big");
+  fs::create_directories(dir_.path() / "small");
+  dir_.Write("big/rooms.yaml",
+             "format: crowdsim-world-set/1\nworlds:\n"
+             "  - {name: large, bounds: [-5, -5, 5, 5], rectangles: []}\n"
+             "  - {name: large2, bounds: [-5, -5, 5, 5], rectangles: []}\n");
+  dir_.Write("small/rooms.yaml",
+             "format: crowdsim-world-set/1\nworlds:\n"
+             "  - {name: large, bounds: [-5, -5, 5, 5], rectangles: []}\n"
+             "  - {name: small, bounds: [0, 0, 3, 3], rectangles: []}\n");
+  const Suite s = LoadOrDie(R"(name: rooms
+episodes: 4
+seed: 5
+humans: {count: 10}
+rows:
+  - {label: big, policy: linear, world: {source: random_rect, file: big/rooms.yaml, min_start_goal_dist: 1}}
+  - {label: small, policy: linear, world: {source: random_rect, file: small/rooms.yaml, min_start_goal_dist: 1}}
+)");
+  const std::vector<std::string> errors = PreflightSuite(s, registry_);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("row 'small' (rows[1]): the scenario of episode 1"), std::string::npos)
+      << errors[0];
+  EXPECT_NE(errors[0].find("layout 'small'"), std::string::npos) << errors[0];
+}
+
 // A world file given where a suite belongs (`run runs/two_rooms.yaml` right after `floorplan
 // import`): an unknown key for each of its keys (format, bounds, rectangles, ...). It is named
 // as a world, with the world: block that uses it.
