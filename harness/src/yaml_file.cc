@@ -91,6 +91,13 @@ std::string TabHint(const fs::path& file, int zero_based_line) {
   return "";
 }
 
+// UTF-16 and UTF-32 text holds NUL bytes: YAML tells it by a byte order mark, or by a NUL
+// among its first two bytes (`start`: the file's first bytes).
+bool WideText(const std::string& start) {
+  return start.starts_with("\xff\xfe") || start.starts_with("\xfe\xff") ||
+         start.substr(0, 2).find('\0') != std::string::npos;
+}
+
 // yaml-cpp says "end of map flow not found" (or "sequence flow") where it gave up, often the
 // line after the one whose '{' (or '[') lacks its closing bracket. The innermost such bracket
 // opened before the error (outside quotes and comments) is said, with its line and column.
@@ -104,9 +111,18 @@ std::string UnclosedBracketHint(const fs::path& file, const std::string& message
   };
   std::vector<Open> open;
   std::ifstream in(file);
+  // Columns are the bytes of UTF-8 text, as yaml-cpp counts them; a UTF-16 or UTF-32 file's
+  // bytes are not its characters (the '{' at column 5 said at column 10): no hint there.
+  char head[2] = {};
+  in.read(head, sizeof(head));
+  if (WideText(std::string(head, static_cast<std::size_t>(in.gcount())))) return "";
+  in.clear();
+  in.seekg(0);
   std::string line;
   char quote = 0;
   for (int n = 0; std::getline(in, line) && n <= at.line; ++n) {
+    // yaml-cpp counts no column for a UTF-8 byte order mark.
+    if (n == 0 && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);
     const std::size_t end =
         n == at.line ? std::min<std::size_t>(line.size(), at.column) : line.size();
     for (std::size_t i = 0; i < end; ++i) {
@@ -192,11 +208,7 @@ std::string BinaryKind(const fs::path& file) {
   in.read(head, sizeof(head));
   const std::string start(head, static_cast<std::size_t>(in.gcount()));
   if (start.starts_with("\x89PNG")) return "a PNG image";
-  // UTF-16 and UTF-32 text holds NUL bytes: YAML tells it by a byte order mark, or by a NUL
-  // among its first two bytes.
-  const bool wide = start.starts_with("\xff\xfe") || start.starts_with("\xfe\xff") ||
-                    start.substr(0, 2).find('\0') != std::string::npos;
-  if (!wide && start.find('\0') != std::string::npos) return "binary data";
+  if (!WideText(start) && start.find('\0') != std::string::npos) return "binary data";
   return "";
 }
 

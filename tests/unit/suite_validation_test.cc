@@ -199,6 +199,25 @@ TEST_F(SuiteValidation, AnIllegalMapValueNamesTheLineBeforeIt) {
       << All(deeper);
 }
 
+// The bracket's column as yaml-cpp counts its own: a UTF-8 byte order mark is no column (it
+// was said 3 columns to the right), and a UTF-16 file's bytes are not its columns (the '{' at
+// column 5 was said at column 10): no hint there rather than a wrong one.
+TEST_F(SuiteValidation, AnUnclosedBracketIsPlacedAsYamlPlacesItsErrors) {
+  auto bom = Load("\xef\xbb\xbfrows: [{label: a, policy: orca}, {label: b, policy: linear\n");
+  ASSERT_FALSE(bom.suite);
+  EXPECT_NE(Find(bom, "(the '{' at line 1, column 34 is not closed"), "") << All(bom);
+  const std::string text =
+      "name: t\nepisodes: 2\nrows:\n  - {label: a, policy: orca\n"
+      "  - {label: b, policy: linear}\n";
+  std::string utf16 = "\xff\xfe";
+  for (const char c : text) utf16 += std::string{c, '\0'};
+  auto wide = Load(utf16);
+  ASSERT_FALSE(wide.suite);
+  const std::string error = Find(wide, "end of map flow not found");
+  ASSERT_NE(error, "") << All(wide);
+  EXPECT_EQ(error.find("column 10"), std::string::npos) << error;
+}
+
 // A PNG (a floor plan given as the suite) or other binary file was read as YAML: "unknown
 // escape character" and a stray byte printed to the terminal.
 TEST_F(SuiteValidation, ABinaryFileIsNamedAsSuch) {
