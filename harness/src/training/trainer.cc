@@ -257,8 +257,11 @@ Trajectory Trainer::RunEpisode(Policy* robot, const Scenario& scenario, bool enc
   }
   tr.result = episode.result();
   if (tr.result.status == EpisodeStatus::kPolicyError) {
-    throw TrainError("episode of scenario seed " + std::to_string(scenario.seed) +
-                     ": the robot policy failed: " + tr.result.error);
+    // The episode's error says whose policy failed ("the robot's policy failed: ...", "human
+    // 1's policy failed: ...") or which sensor: said again here, it read "the robot policy
+    // failed: the robot's policy failed: ...".
+    throw TrainError("episode of scenario seed " + std::to_string(scenario.seed) + ": " +
+                     tr.result.error);
   }
   if (encode && observe_timeout_end && tr.result.status == EpisodeStatus::kTimeout) {
     tr.final_state = learner_->Encode(episode.ObserveRobot());

@@ -10,6 +10,7 @@
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "learning_test_util.h"
+#include "test_paths.h"
 
 namespace crowdsim::testing {
 namespace {
@@ -124,6 +125,28 @@ TEST(TrainingTest, ResumeContinuesExactly) {
                          0),
             0u)
       << record;
+}
+
+// A policy that fails in the middle of a training is named once: the episode's error says
+// whose policy it was, and the trainer put "the robot policy failed: " before it ("the robot
+// policy failed: the robot's policy failed: ...", and a human's failure read as the robot's).
+TEST(TrainingTest, APolicyFailingMidTrainingIsNamedOnce) {
+  TempDir dir;
+  TrainFile f;
+  f.training = "{il_policy: " + (FixturePluginDir() / "crowdsim_throwing_policy.so").string() +
+               ", il_params: {fail_after_steps: 2, good_episodes: 1}, il_episodes: 5, "
+               "il_epochs: 1, rl_episodes: 2, epsilon_decay_episodes: 2, "
+               "validation_interval: 1, validation_episodes: 1}";
+  try {
+    Train(WriteTrainFile(dir, f), dir.path() / "out");
+    ADD_FAILURE() << "a teacher that throws trained";
+  } catch (const training::TrainError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(": the robot's policy failed: deliberate failure (fixture)"),
+              std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("the robot policy failed"), std::string::npos) << what;
+  }
 }
 
 TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
