@@ -158,11 +158,16 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
       valid += (j ? ", " : "") + std::to_string(j) + (names[j].empty() ? "" : " " + names[j]);
     }
     *problem = "'" + *resolved + "' has no item [" + sel + "] (items: " + valid + ")";
-    // A label a sweep makes (crowd/humans.count=2): the rows exist only once it has run.
+    // A label a sweep makes (crowd/humans.count=2): the rows exist only once it has run. Only
+    // a row that has a sweep is pointed to (orca/fats is no row of `orca`'s when it has none).
     const std::string swept = sel.substr(0, sel.find('/'));
-    if (swept.size() < sel.size() && std::find(names.begin(), names.end(), swept) != names.end()) {
-      *problem += "; the rows of a sweep are set through the row that has it: " + *resolved + "[" +
-                  swept + "]";
+    const auto row = std::find(names.begin(), names.end(), swept);
+    if (swept.size() < sel.size() && row != names.end()) {
+      const YAML::Node item = node[static_cast<std::size_t>(row - names.begin())];
+      if (item.IsMap() && item["sweep"]) {
+        *problem += "; the rows of a sweep are set through the row that has it: " + *resolved +
+                    "[" + swept + "]";
+      }
     }
     return node;
   }

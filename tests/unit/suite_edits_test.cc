@@ -274,6 +274,24 @@ TEST_F(SuiteEdits, ASetOfARowASweepMakesNamesTheSweepRow) {
       info.end());
 }
 
+// The hint names the row before the '/' only when that row has a sweep: rows labelled `orca`
+// and `orca/fast` by hand, and a typo of the second, were told to set `orca`'s sweep.
+TEST_F(SuiteEdits, ATypoOfALabelWithASlashIsNotToldOfASweep) {
+  std::string yaml = kSuite;
+  yaml += "  - {label: orca/fast, policy: orca, params: {safety_space: 0.1}}\n";
+  std::string no_sweep = yaml;
+  no_sweep.erase(no_sweep.find("    sweep:"), no_sweep.find('\n', no_sweep.find("    sweep:")) -
+                                                  no_sweep.find("    sweep:") + 1);
+  const auto r = Load(no_sweep, {"rows[orca/fats].params.safety_space=0.2"});
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(All(r).find("'rows' has no item [orca/fats]"), std::string::npos) << All(r);
+  EXPECT_EQ(All(r).find("sweep"), std::string::npos) << All(r);
+  // With the sweep, the hint stays.
+  const auto swept = Load(yaml, {"rows[orca/fats].params.safety_space=0.2"});
+  EXPECT_NE(All(swept).find("set through the row that has it: rows[orca]"), std::string::npos)
+      << All(swept);
+}
+
 TEST_F(SuiteEdits, BadOverridesAreNamedByTheOption) {
   auto r = Load(kSuite, {"rows[ocra].policy=orca"});
   ASSERT_FALSE(r.suite);
