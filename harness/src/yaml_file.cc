@@ -129,14 +129,21 @@ std::string UnclosedBracketHint(const fs::path& file, const std::string& message
       const char c = line[i];
       const char before = i == 0 ? ' ' : line[i - 1];
       if (quote != 0) {
-        if (c == '\\' && quote == '"')
+        // An escaped character in "...", or a quote written twice in '...' ('it''s').
+        if ((c == '\\' && quote == '"') ||
+            (c == '\'' && quote == '\'' && i + 1 < end && line[i + 1] == '\''))
           ++i;
         else if (c == quote)
           quote = 0;
         continue;
       }
       if (c == '#' && (before == ' ' || before == '\t' || i == 0)) break;
-      const bool starts_value = i == 0 || std::string(" \t,[{:-").find(before) != std::string::npos;
+      // A quote opens a string where a value starts (after indentation, ',', '[', '{', ':' or
+      // '-', blanks between), not inside a plain one: "note: rock 'n roll" holds no string,
+      // and one taken to open there hid every bracket after it.
+      const std::size_t last = i == 0 ? std::string::npos : line.find_last_not_of(" \t", i - 1);
+      const bool starts_value =
+          last == std::string::npos || std::string(",[{:-?").find(line[last]) != std::string::npos;
       if ((c == '"' || c == '\'') && starts_value) {
         quote = c;
       } else if (c == '{' || c == '[') {

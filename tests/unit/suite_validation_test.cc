@@ -218,6 +218,22 @@ TEST_F(SuiteValidation, AnUnclosedBracketIsPlacedAsYamlPlacesItsErrors) {
   EXPECT_EQ(error.find("column 10"), std::string::npos) << error;
 }
 
+// An apostrophe inside a plain value (rock 'n roll) opens no string: taken for one, it hid
+// every bracket after it, and the hint named a '{' that its line closes.
+TEST_F(SuiteValidation, AnApostropheInAPlainValueHidesNoBracket) {
+  auto r = Load(
+      "name: t\nepisodes: 2\nrows:\n  - {label: a, policy: orca, info: {note: rock 'n roll}}\n"
+      "  - {label: b, policy: linear\n  - {label: c, policy: linear}\n");
+  ASSERT_FALSE(r.suite);
+  EXPECT_NE(Find(r, "(the '{' at line 5, column 5 is not closed: end it with '}')"), "") << All(r);
+  // A quote written twice inside a quoted value ('it''s {') ends nothing.
+  auto twice = Load(
+      "name: t\nepisodes: 2\nrows:\n  - {label: a, policy: orca, info: {note: 'it''s {'}}\n"
+      "  - {label: b, policy: linear\n  - {label: c, policy: linear}\n");
+  ASSERT_FALSE(twice.suite);
+  EXPECT_NE(Find(twice, "(the '{' at line 5, column 5 is not closed"), "") << All(twice);
+}
+
 // A PNG (a floor plan given as the suite) or other binary file was read as YAML: "unknown
 // escape character" and a stray byte printed to the terminal.
 TEST_F(SuiteValidation, ABinaryFileIsNamedAsSuch) {
