@@ -10,4 +10,8 @@ namespace crowdsim {
 
 bool IsShippedPluginName(std::string_view name);
 
+/// Why this build does not make the project's plugin `name` (e.g. the learned policies without
+/// libtorch); empty for a name the project has no plugin of, or one this build makes.
+std::string_view LeftOutPluginReason(std::string_view name);
+
 }  // namespace crowdsim

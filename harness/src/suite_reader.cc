@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "crowdsim/bench/closest_name.h"
+#include "shipped_plugins.h"
 
 namespace crowdsim::suite_internal {
 
@@ -201,8 +202,15 @@ const LoadedPlugin* Reader::Plugin(const YAML::Node& n, const std::string& path,
       const std::string close = DidYouMean(*name, available);
       msg = "unknown " + std::string(PluginKindName(kind)) + " plugin '" + *name +
             "' (valid: " + Join(available) + "; or the path of a plugin .so file)" + close;
-      // Not a typo of a plugin found: most likely one of yours whose folder is not searched.
-      if (close.empty()) msg += "; " + NotSearchedHint(*name);
+      // One of the project's own that this build leaves out (the learned policies without
+      // libtorch); else, not a typo of a plugin found: most likely one of yours whose folder is
+      // not searched.
+      if (const std::string_view why = LeftOutPluginReason(*name); !why.empty()) {
+        msg += "; '" + *name +
+               "' is one of crowdsim-bench's own plugins, not in this build: " + std::string(why);
+      } else if (close.empty()) {
+        msg += "; " + NotSearchedHint(*name);
+      }
       // A file that calls itself by this name but is named otherwise is not found by it.
       for (const std::string& problem : found_.problems) {
         if (problem.find("its descriptor calls it '" + *name + "'") != std::string::npos) {
