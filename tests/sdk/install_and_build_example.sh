@@ -16,6 +16,16 @@ for f in bin/crowdsim-bench lib/libcrowdsim_core.so lib/crowdsim-bench/plugins/c
          share/crowdsim-bench/worlds/random_rect share/crowdsim-bench/suites/quick.yaml; do
   [[ -e "$work/prefix/$f" ]] || fail "the install lacks $f"
 done
+# The documentation the CLI's messages name (docs/plugins.md, docs/training.md,
+# tools/floorplan/README.md, examples/my_policy), in the source tree's layout under
+# share/doc/crowdsim-bench: a user of the .deb has no source tree to read them in.
+doc="$work/prefix/share/doc/crowdsim-bench"
+for f in README.md docs/plugins.md docs/training.md docs/metrics.md tools/floorplan/README.md \
+         plugins/torchscript/README.md sensors/lidar2d/README.md examples/floorplan/two_rooms.png; do
+  [[ -f "$doc/$f" ]] || fail "the install lacks the documentation share/doc/crowdsim-bench/$f"
+done
+diff -r -x build "$source/examples/my_policy" "$doc/examples/my_policy" > "$work/example.diff" ||
+  { cat "$work/example.diff"; fail "the installed examples/my_policy differs from the source's"; }
 # Exactly the SDK folder's headers are installed (none of the host's bench/), and each one
 # compiles on its own against the prefix.
 installed=$(cd "$work/prefix/include/crowdsim" && find . -type f | sed 's|^\./||' | sort)
