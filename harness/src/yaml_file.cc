@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "crowdsim/bench/results.h"
+#include "crowdsim/data_root.h"
 
 namespace crowdsim::suite_internal {
 namespace fs = std::filesystem;
@@ -225,7 +226,14 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
                         std::vector<SuiteError>* errors) {
   std::error_code ec;
   if (!fs::exists(file, ec)) {
-    errors->push_back({file.string(), 0, 0, "", what + " does not exist"});
+    // A relative path the data folder has (`suites/quick.yaml` typed outside a source tree, as
+    // the README has it, with the package's suites under PREFIX/share/crowdsim-bench): named.
+    const fs::path shipped = DataRoot() / file;
+    const bool suggest = file.is_relative() && fs::is_regular_file(shipped, ec);
+    errors->push_back(
+        {file.string(), 0, 0, "",
+         what + " does not exist" +
+             (suggest ? "; did you mean " + shipped.string() + " (the data folder's)?" : "")});
     return YAML::Node(YAML::NodeType::Null);
   }
   if (fs::is_directory(file, ec)) {

@@ -9,6 +9,7 @@
 
 #include "crowdsim/bench/results.h"
 #include "crowdsim/bench/suite.h"
+#include "crowdsim/data_root.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -252,6 +253,25 @@ TEST_F(SuiteValidation, ABinaryFileIsNamedAsSuch) {
     const SuiteLoadResult wide = LoadSuite(dir_.Write("utf16.yaml", utf16), registry_);
     EXPECT_TRUE(wide.suite) << All(wide);
   }
+}
+
+// The README's `crowdsim-bench run suites/quick.yaml`, typed by a user of the installed package
+// outside a source tree: the suite is the data folder's (PREFIX/share/crowdsim-bench/suites),
+// and the error said only "suite file does not exist".
+TEST_F(SuiteValidation, AMissingRelativeSuiteNamesTheDataFoldersOne) {
+  namespace fs = std::filesystem;
+  const fs::path before = fs::current_path();
+  fs::current_path(dir_.path());
+  const SuiteLoadResult r = LoadSuite("suites/quick.yaml", registry_);
+  const SuiteLoadResult other = LoadSuite("suites/no_such_suite.yaml", registry_);
+  fs::current_path(before);
+  ASSERT_FALSE(r.suite);
+  const fs::path shipped = DataRoot() / "suites" / "quick.yaml";
+  ASSERT_TRUE(fs::exists(shipped)) << shipped;
+  EXPECT_EQ(All(r), "suites/quick.yaml: suite file does not exist; did you mean " +
+                        shipped.string() + " (the data folder's)?\n");
+  // No such file in the data folder either: no suggestion.
+  EXPECT_EQ(All(other), "suites/no_such_suite.yaml: suite file does not exist\n");
 }
 
 TEST_F(SuiteValidation, WrongKindAndWeightsWithoutParameter) {
