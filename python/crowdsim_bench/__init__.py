@@ -26,11 +26,20 @@ try:
 
     from . import _core
 except ImportError as _error:  # another interpreter than the build's (pyenv, conda, a venv)
+    # The folder holding this package (build/python, or an install's dist-packages).
+    _parent = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    # The .deb only recommends python3-numpy: said first when numpy is what is missing.
+    _numpy = (
+        f"crowdsim_bench needs numpy, which {sys.executable} cannot import: install it (Debian: "
+        "apt install python3-numpy), or use the interpreter the package is built for. "
+        if getattr(_error, "name", None) == "numpy"
+        else ""
+    )
     raise ImportError(
-        f"crowdsim_bench cannot be imported by {sys.executable} (Python "
+        f"{_numpy}crowdsim_bench cannot be imported by {sys.executable} (Python "
         f"{sys.version_info.major}.{sys.version_info.minor}): {_error}. The package is built for "
         "the interpreter the build found, Debian's /usr/bin/python3 unless the build was "
-        "configured with -DPython3_EXECUTABLE=...; run e.g. `PYTHONPATH=build/python "
+        f"configured with -DPython3_EXECUTABLE=...; run e.g. `PYTHONPATH={_parent} "
         "/usr/bin/python3 your_script.py`"
     ) from _error
 

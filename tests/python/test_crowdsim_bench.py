@@ -503,6 +503,21 @@ class UserMistakes(unittest.TestCase):
         self.assertIn("crowdsim_bench cannot be imported by " + sys.executable, done.stderr)
         self.assertIn("/usr/bin/python3", done.stderr)
 
+    def test_missing_numpy_is_named_with_its_package(self):
+        # The .deb only recommends python3-numpy: without it, the error blamed the interpreter
+        # and told to run `PYTHONPATH=build/python /usr/bin/python3`, which is what the user of
+        # the installed package had done.
+        code = "import sys; sys.modules['numpy'] = None; import crowdsim_bench"
+        done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                              env=dict(os.environ), check=False)
+        self.assertNotEqual(done.returncode, 0)
+        self.assertIn("crowdsim_bench needs numpy, which " + sys.executable + " cannot import: "
+                      "install it (Debian: apt install python3-numpy)", done.stderr)
+        # The folder to put on PYTHONPATH is the one this package was imported from.
+        package_parent = os.path.dirname(os.path.dirname(os.path.abspath(cb.__file__)))
+        self.assertIn("PYTHONPATH=" + package_parent + " ", done.stderr)
+        self.assertNotIn("PYTHONPATH=build/python", done.stderr)
+
     def test_stepping_before_reset_is_an_error(self):
         with self.assertRaisesRegex(ValueError, "before reset"):
             cb.Env(QUICK, row="orca").step([0.5, 0.0])
