@@ -202,6 +202,28 @@ class Evaluate(unittest.TestCase):
                 for key in ("status", "time", "steps", "path_length", "min_human_distance"):
                     self.assertEqual(e[key], cli[key], f"episode {e['episode']} {key}")
 
+    def test_the_clis_report_of_an_evaluate_folder_names_the_python_policy(self):
+        # `crowdsim-bench report` of evaluate()'s folder said "The suite file changed since this
+        # run" (the recorded hash is the suite's with the Python row) and "row not in the suite
+        # file any more" under each outcome; neither was so.
+        cli = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(
+            cb.__file__)))), "bin", "crowdsim-bench")
+        self.assertTrue(os.path.isfile(cli), cli)
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "mine")
+            cb.evaluate(straight_to_goal, QUICK, row="linear", label="mine", out=out, episodes=6)
+            page = os.path.join(tmp, "report.html")
+            done = subprocess.run([cli, "report", out, "--out", page], capture_output=True,
+                                  text=True, check=False)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            self.assertNotIn("suite file changed", done.stderr)
+            with open(page, encoding="utf-8") as f:
+                html = f.read()
+            self.assertNotIn("suite file changed", html)
+            self.assertNotIn("row not in the suite file any more", html)
+            self.assertIn("a Python policy (crowdsim_bench.evaluate), which the report cannot "
+                          "replay", html)
+
     def test_a_raising_policy_ends_its_episodes_as_policy_errors(self):
         def broken(obs):
             raise RuntimeError("my bug")

@@ -79,7 +79,8 @@ void WriteWarnings(std::ostream& html, const ReportInputs& in, std::vector<std::
                        read.first_damage + "): the figures show the readable episodes only.");
   }
   const std::string recorded_hash = ReadManifestField(in.manifest, "config_hash");
-  if (!recorded_hash.empty() && recorded_hash != in.suite.ConfigHash()) {
+  // evaluate()'s hash is of the suite with its Python row, which cannot be made here.
+  if (!recorded_hash.empty() && !in.python_policy && recorded_hash != in.suite.ConfigHash()) {
     warnings.push_back("The suite file changed since this run (config hash " +
                        in.suite.ConfigHash() + " vs " + recorded_hash +
                        "): the figures replay the current suite and may differ from the table.");

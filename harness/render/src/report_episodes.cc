@@ -80,6 +80,9 @@ void WriteRow(std::ostream& thumbs, std::ostream& figures, const ReportInputs& i
     thumbs << "<div class=\"thumb\"><b>first " << pick.outcome << "</b>";
     if (!pick.line) {
       thumbs << "<div class=\"none\">no " << pick.outcome << " in this run</div></div>\n";
+    } else if (in.python_policy) {
+      thumbs << "<div class=\"none\">a Python policy (crowdsim_bench.evaluate), which the report "
+                "cannot replay</div></div>\n";
     } else if (!suite_row) {
       thumbs << "<div class=\"none\">row not in the suite file any more</div></div>\n";
     } else {

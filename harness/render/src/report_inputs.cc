@@ -109,6 +109,7 @@ ReportInputs ReadReportInputs(const fs::path& dir, PluginRegistry& registry,
   in.manifest = dir / "manifest.json";
   in.suite_file = FindSuiteFile(dir, in.manifest, options);
   in.suite = LoadRecordedSuite(in.suite_file, in.manifest, registry);
+  in.python_policy = ReadManifestField(in.manifest, "/rows/0/policy/file") == "<python>";
   // Another suite's file would title the page and label its figures with rows this run does
   // not have (each "not in the suite file any more").
   const std::string ran = ReadManifestField(in.manifest, "suite");

@@ -26,6 +26,10 @@ struct ReportInputs {
   CsvTable table;  ///< table.csv
   TableColumns columns;
   EpisodesCsvRead episodes;  ///< episodes.csv, damaged lines skipped
+  /// Written by crowdsim_bench.evaluate(): its one row is a Python function (the manifest's
+  /// policy file "<python>") in the place of a suite row, which the report cannot replay, and
+  /// its config hash is of the suite with that row, not of the suite file.
+  bool python_policy = false;
 };
 
 /// Reads the folder and loads its suite. Throws ReportError naming the file and the fix.
