@@ -1189,8 +1189,14 @@ TEST_F(RunSuiteTest, AWorldFileGivenAsASuiteSaysWhereItBelongs) {
       "plan.yaml", "# imported\nformat: crowdsim-world/1\nname: plan\nbounds: [0, 0, 4, 4]\n");
   const fs::path set = dir_.Write(
       "rooms.yaml", "format: crowdsim-world-set/1\nworlds:\n  - {name: a, bounds: [0, 0, 4, 4]}\n");
+  // Written by an editor that starts the file with a UTF-8 byte order mark.
+  const fs::path marked =
+      dir_.Write("marked.yaml",
+                 "\xef\xbb\xbf"
+                 "format: crowdsim-world/1\nname: plan\nbounds: [0, 0, 4, 4]\n");
   for (const auto& [file, block] : {std::pair{world, "world: {source: floorplan, file: "},
-                                    std::pair{set, "world: {source: random_rect, file: "}}) {
+                                    std::pair{set, "world: {source: random_rect, file: "},
+                                    std::pair{marked, "world: {source: floorplan, file: "}}) {
     for (const std::string command : {"validate", "run"}) {
       auto [rc, text] = Shell(exe + " " + command + " " + file.string());
       EXPECT_EQ(rc, 2) << text;
