@@ -41,17 +41,13 @@ std::string DescribeRebuiltPlugins(const fs::path& manifest, const Suite& suite)
     record(member(member(row, "humans"), "policy"));
   }
   std::set<std::string> rebuilt;
-  auto compare = [&](const PluginUse& use) {
-    const std::string now = suite_internal::PluginFileContent(use);
-    if (now.empty()) return;  // the harness's own: covered by its commit
-    const auto it = stored.find(use.loaded->path.string());
-    if (it != stored.end() && it->second != now) rebuilt.insert(it->first);
-  };
   for (const RowSpec& row : suite.rows) {
-    compare(row.policy);
-    compare(row.world);
-    for (const PluginUse& sensor : row.sensors) compare(sensor);
-    compare(row.humans.policy);
+    for (const auto& [role, use] : RowPlugins(row)) {
+      const std::string now = suite_internal::PluginFileContent(*use);
+      if (now.empty()) continue;  // the harness's own: covered by its commit
+      const auto it = stored.find(use->loaded->path.string());
+      if (it != stored.end() && it->second != now) rebuilt.insert(it->first);
+    }
   }
   std::string text;
   for (const std::string& file : rebuilt) text += (text.empty() ? "" : ", ") + file;
