@@ -75,14 +75,25 @@ struct Walk {
   }
 };
 
+// The lines of a file that yaml-cpp refused, up to its error's line (0-based `last`), as the
+// hints below read them: a UTF-8 byte order mark, which yaml-cpp counts as no column, taken off
+// the first. Read once for all the hints (an error's path only).
+std::vector<std::string> LinesUpTo(const fs::path& file, int last) {
+  std::vector<std::string> lines;
+  std::ifstream in(file);
+  for (std::string line; static_cast<int>(lines.size()) <= last && std::getline(in, line);) {
+    if (lines.empty() && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
 // yaml-cpp names a tab in an indentation "illegal tab" only at a top-level key; elsewhere it
 // reports what the tab broke ("illegal map value", "illegal block entry"). A tab in the
 // indentation of the error's line or the one before it is said outright.
-std::string TabHint(const fs::path& file, int zero_based_line) {
-  std::ifstream in(file);
-  std::string line;
-  for (int n = 0; std::getline(in, line) && n <= zero_based_line; ++n) {
-    if (n < zero_based_line - 1) continue;
+std::string TabHint(const std::vector<std::string>& lines, int zero_based_line) {
+  for (int n = std::max(0, zero_based_line - 1); n < static_cast<int>(lines.size()); ++n) {
+    const std::string& line = lines[static_cast<std::size_t>(n)];
     const std::size_t indent_end = line.find_first_not_of(" \t");
     if (line.substr(0, indent_end).find('\t') != std::string::npos) {
       return " (line " + std::to_string(n + 1) +
@@ -102,8 +113,8 @@ bool WideText(const std::string& start) {
 // yaml-cpp says "end of map flow not found" (or "sequence flow") where it gave up, often the
 // line after the one whose '{' (or '[') lacks its closing bracket. The innermost such bracket
 // opened before the error (outside quotes and comments) is said, with its line and column.
-std::string UnclosedBracketHint(const fs::path& file, const std::string& message,
-                                const YAML::Mark& at) {
+std::string UnclosedBracketHint(const fs::path& file, const std::vector<std::string>& lines,
+                                const std::string& message, const YAML::Mark& at) {
   const bool map = message.find("end of map flow not found") != std::string::npos;
   if (!map && message.find("end of sequence flow not found") == std::string::npos) return "";
   struct Open {
@@ -111,19 +122,15 @@ std::string UnclosedBracketHint(const fs::path& file, const std::string& message
     int line, column;  // 1-based
   };
   std::vector<Open> open;
-  std::ifstream in(file);
   // Columns are the bytes of UTF-8 text, as yaml-cpp counts them; a UTF-16 or UTF-32 file's
   // bytes are not its characters (the '{' at column 5 said at column 10): no hint there.
+  std::ifstream in(file, std::ios::binary);
   char head[2] = {};
   in.read(head, sizeof(head));
   if (WideText(std::string(head, static_cast<std::size_t>(in.gcount())))) return "";
-  in.clear();
-  in.seekg(0);
-  std::string line;
   char quote = 0;
-  for (int n = 0; std::getline(in, line) && n <= at.line; ++n) {
-    // yaml-cpp counts no column for a UTF-8 byte order mark.
-    if (n == 0 && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);
+  for (int n = 0; n < static_cast<int>(lines.size()) && n <= at.line; ++n) {
+    const std::string& line = lines[static_cast<std::size_t>(n)];
     const std::size_t end =
         n == at.line ? std::min<std::size_t>(line.size(), at.column) : line.size();
     for (std::size_t i = 0; i < end; ++i) {
@@ -168,7 +175,8 @@ std::string UnclosedBracketHint(const fs::path& file, const std::string& message
 // a key indented deeper than the line before, whose value is already given ("episodes: 10" then
 // "  seed: 3"); and "end of map not found" at the start of a key line without its ':' followed
 // by a comment. The line that most likely holds the mistake is named when it is one of these.
-std::string MissingColonHint(const fs::path& file, const std::string& message, int error_line) {
+std::string MissingColonHint(const std::vector<std::string>& lines, const std::string& message,
+                             int error_line) {
   const bool illegal_value = message.find("illegal map value") != std::string::npos;
   if (!illegal_value && message.find("end of map not found") == std::string::npos) return "";
   const auto content = [](const std::string& text) {
@@ -180,10 +188,10 @@ std::string MissingColonHint(const fs::path& file, const std::string& message, i
     return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
   };
   const auto indent = [](const std::string& text) { return text.find_first_not_of(' '); };
-  std::ifstream in(file);
-  std::string line, before, at;
+  std::string before, at;
   int before_line = -1;
-  for (int n = 0; std::getline(in, line) && n <= error_line; ++n) {
+  for (int n = 0; n < static_cast<int>(lines.size()) && n <= error_line; ++n) {
+    const std::string& line = lines[static_cast<std::size_t>(n)];
     if (n == error_line) {
       at = line;
     } else if (!content(line).empty()) {
@@ -259,14 +267,13 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
     errors->push_back({file.string(), 0, 0, "", "cannot read the " + what + " (permissions?)"});
     return YAML::Node(YAML::NodeType::Null);
   } catch (const YAML::Exception& e) {
-    errors->push_back({file.string(), e.mark.line + 1, e.mark.column + 1, "",
-                       "not valid YAML: " + e.msg + UnclosedBracketHint(file, e.msg, e.mark) + [&] {
-                         // A tab said outright; else the line that most likely holds the mistake.
-                         const std::string tab = e.msg.find("tab") == std::string::npos
-                                                     ? TabHint(file, e.mark.line)
-                                                     : "";
-                         return tab.empty() ? MissingColonHint(file, e.msg, e.mark.line) : tab;
-                       }()});
+    const std::vector<std::string> lines = LinesUpTo(file, e.mark.line);
+    // A tab said outright; else the line that most likely holds the mistake.
+    std::string hint = e.msg.find("tab") == std::string::npos ? TabHint(lines, e.mark.line) : "";
+    if (hint.empty()) hint = MissingColonHint(lines, e.msg, e.mark.line);
+    errors->push_back(
+        {file.string(), e.mark.line + 1, e.mark.column + 1, "",
+         "not valid YAML: " + e.msg + UnclosedBracketHint(file, lines, e.msg, e.mark) + hint});
     return YAML::Node(YAML::NodeType::Null);
   }
   const std::size_t before = errors->size();
