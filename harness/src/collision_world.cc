@@ -7,6 +7,8 @@
 #include <cmath>
 #include <mutex>
 
+#include "beam_scan.h"
+
 namespace crowdsim {
 namespace {
 
@@ -20,16 +22,6 @@ constexpr double kBroadphasePad = 1e-3;
 // Bullet keeps pools for contact manifolds and pair algorithms; this world never runs
 // Bullet's narrow phase, so tiny pools save megabytes per CollisionWorld.
 constexpr int kBulletPoolSize = 16;
-
-// A candidate rectangle of one scan, relative to the scan's origin.
-struct RelRect {
-  double x0, y0, x1, y1;
-};
-
-// A candidate disc of one scan, relative to the scan's origin; c = |centre|^2 - radius^2.
-struct RelDisc {
-  double cx, cy, c;
-};
 
 // Per-thread buffers so that scans and sweeps do not allocate once warmed up.
 struct Scratch {
@@ -60,41 +52,6 @@ struct IndexCollector final : btBroadphaseAabbCallback {
 bool Touches(const Rect& a, const Rect& b) {
   return a.min.x() <= b.max.x() && b.min.x() <= a.max.x() && a.min.y() <= b.max.y() &&
          b.min.y() <= a.max.y();
-}
-
-// Slab test of the ray t * (dx, dy) from the origin against a rectangle relative to it;
-// (ix, iy) = (1/dx, 1/dy). Axis-parallel beams take the branch that avoids 0 * inf.
-inline double RelRectHit(const RelRect& r, double dx, double dy, double ix, double iy) {
-  double t_near = -kInfinity;
-  double t_far = kInfinity;
-  if (dx != 0.0) {
-    const double t0 = r.x0 * ix;
-    const double t1 = r.x1 * ix;
-    t_near = std::min(t0, t1);
-    t_far = std::max(t0, t1);
-  } else if (r.x0 > 0.0 || r.x1 < 0.0) {
-    return kInfinity;
-  }
-  if (dy != 0.0) {
-    const double t0 = r.y0 * iy;
-    const double t1 = r.y1 * iy;
-    t_near = std::max(t_near, std::min(t0, t1));
-    t_far = std::min(t_far, std::max(t0, t1));
-  } else if (r.y0 > 0.0 || r.y1 < 0.0) {
-    return kInfinity;
-  }
-  if (t_near > t_far || t_far < 0.0) return kInfinity;
-  return std::max(t_near, 0.0);
-}
-
-// Ray t * (dx, dy) from the origin against a disc relative to it (0 when inside).
-inline double RelDiscHit(const RelDisc& d, double dx, double dy) {
-  if (d.c <= 0.0) return 0.0;
-  const double b = d.cx * dx + d.cy * dy;  // projection of the centre on the beam
-  if (b < 0.0) return kInfinity;
-  const double disc = b * b - d.c;
-  if (disc < 0.0) return kInfinity;
-  return b - std::sqrt(disc);
 }
 
 }  // namespace
@@ -286,16 +243,7 @@ void CollisionWorld::CastRays(const Vec2& origin, std::span<const Vec2> world_di
     s.discs.push_back({c.x(), c.y(), c2 - d.radius * d.radius});
   }
 
-  for (size_t k = 0; k < world_directions.size(); ++k) {
-    const double dx = world_directions[k].x();
-    const double dy = world_directions[k].y();
-    const double ix = 1.0 / dx;
-    const double iy = 1.0 / dy;
-    double best = max_range;
-    for (const RelRect& r : s.rects) best = std::min(best, RelRectHit(r, dx, dy, ix, iy));
-    for (const RelDisc& d : s.discs) best = std::min(best, RelDiscHit(d, dx, dy));
-    ranges[k] = best;
-  }
+  ScanBeams(world_directions, max_range, s.rects, s.discs, ranges);
 }
 
 void CollisionWorld::CastRaysBullet(const Vec2& origin, std::span<const double> world_angles,

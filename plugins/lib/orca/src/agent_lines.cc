@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdlib>
-#include <string_view>
 
 #include "orca/geometry.h"
 
@@ -98,14 +96,6 @@ template <typename Dst>
 
 }  // namespace
 
-bool HaveAvx2() {
-  static const bool have = [] {
-    __builtin_cpu_init();  // may run before the library's own constructors
-    return __builtin_cpu_supports("avx2") != 0;
-  }();
-  return have;
-}
-
 [[gnu::target("avx2")]] void AddAgentLinesAvx2(const OrcaAgent& self,
                                                std::span<const OrcaAgent> neighbours,
                                                const OrcaParams& params, double time_step,
@@ -196,8 +186,6 @@ bool HaveAvx2() {
 
 #else  // no AVX2 path on this target
 
-bool HaveAvx2() { return false; }
-
 void AddAgentLinesAvx2(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
                        const OrcaParams& params, double time_step, OrcaLine* out) {
   AddAgentLinesScalar(self, neighbours, params, time_step, out);
@@ -205,19 +193,13 @@ void AddAgentLinesAvx2(const OrcaAgent& self, std::span<const OrcaAgent> neighbo
 
 #endif
 
-bool SimdDisabled() {
-  const char* simd = std::getenv("CROWDSIM_SIMD");
-  return simd != nullptr && std::string_view(simd) == "off";
-}
-
 void AddAgentLines(const OrcaAgent& self, std::span<const OrcaAgent> neighbours,
                    const OrcaParams& params, double time_step, OrcaLine* out) {
   // Chosen at the first call, then called through: a processor test per call (inlining the
   // scalar path beside it) cost more than the call itself.
   using AgentLinesFn =
       void(const OrcaAgent&, std::span<const OrcaAgent>, const OrcaParams&, double, OrcaLine*);
-  static AgentLinesFn* const fastest =
-      HaveAvx2() && !SimdDisabled() ? &AddAgentLinesAvx2 : &AddAgentLinesScalar;
+  static AgentLinesFn* const fastest = UseAvx2() ? &AddAgentLinesAvx2 : &AddAgentLinesScalar;
   fastest(self, neighbours, params, time_step, out);
 }
 

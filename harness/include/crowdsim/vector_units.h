@@ -1,0 +1,19 @@
+// Which vector units the hot loops may use. A kernel with an AVX2 path computes every lane
+// with the scalar path's IEEE operations in the same order (no fused multiply-add), so both
+// paths give the same bits and a table made on a processor without AVX2 equals one made with it.
+#pragma once
+
+namespace crowdsim {
+
+/// True when this processor and its operating system run AVX2 code.
+bool HaveAvx2();
+
+/// True when the environment variable CROWDSIM_SIMD is "off": every dispatching kernel then
+/// takes its scalar path on any processor (each reads it at its first call), to show on whole
+/// suites that the vector paths change nothing.
+bool SimdDisabled();
+
+/// HaveAvx2() && !SimdDisabled(): what a kernel's dispatcher asks once.
+bool UseAvx2();
+
+}  // namespace crowdsim
