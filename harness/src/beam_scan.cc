@@ -4,12 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "crowdsim/avx2_lanes.h"
 #include "crowdsim/vector_units.h"
-
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define CROWDSIM_BEAM_SCAN_AVX2 1
-#include <immintrin.h>
-#endif
 
 namespace crowdsim {
 namespace {
@@ -66,35 +62,12 @@ void ScanBeamsScalar(std::span<const Vec2> directions, double max_range,
   }
 }
 
-#ifdef CROWDSIM_BEAM_SCAN_AVX2
-
-namespace {
-
-// One IEEE operation per lane, as the scalar code does it. The operand order of min and max
-// is the scalar std::min / std::max's: _mm256_min_pd(a, b) is (a < b ? a : b), so
-// std::min(x, y) = (y < x ? y : x) is Min(y, x), and std::max(x, y) = (x < y ? y : x) is
-// Max(y, x); equal values, signed zeros and NaNs then come out as the scalar code's.
-using V = __m256d;
-[[gnu::target("avx2")]] inline V Add(V a, V b) { return _mm256_add_pd(a, b); }
-[[gnu::target("avx2")]] inline V Sub(V a, V b) { return _mm256_sub_pd(a, b); }
-[[gnu::target("avx2")]] inline V Mul(V a, V b) { return _mm256_mul_pd(a, b); }
-[[gnu::target("avx2")]] inline V Min(V a, V b) { return _mm256_min_pd(a, b); }
-[[gnu::target("avx2")]] inline V Max(V a, V b) { return _mm256_max_pd(a, b); }
-[[gnu::target("avx2")]] inline V Or(V a, V b) { return _mm256_or_pd(a, b); }
-[[gnu::target("avx2")]] inline V And(V a, V b) { return _mm256_and_pd(a, b); }
-// a > b, false where either is NaN (as the scalar comparison).
-[[gnu::target("avx2")]] inline V Greater(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
-// mask ? yes : no, lane by lane.
-[[gnu::target("avx2")]] inline V Select(V mask, V yes, V no) {
-  return _mm256_blendv_pd(no, yes, mask);
-}
-[[gnu::target("avx2")]] inline V Splat(double x) { return _mm256_set1_pd(x); }
-
-}  // namespace
+#ifdef CROWDSIM_AVX2_LANES
 
 [[gnu::target("avx2")]] void ScanBeamsAvx2(std::span<const Vec2> directions, double max_range,
                                            std::span<const RelRect> rects,
                                            std::span<const RelDisc> discs, double* ranges) {
+  using namespace avx2;  // NOLINT(google-build-using-namespace): the lanes' arithmetic
   const V zero = _mm256_setzero_pd();
   const V one = Splat(1.0);
   const V inf = Splat(kInfinity);
@@ -110,11 +83,11 @@ using V = __m256d;
     const V b13 = _mm256_set_m128d(_mm_loadu_pd(beam(3).data()), _mm_loadu_pd(beam(1).data()));
     const V dx = _mm256_unpacklo_pd(b02, b13);
     const V dy = _mm256_unpackhi_pd(b02, b13);
-    const V ix = _mm256_div_pd(one, dx);
-    const V iy = _mm256_div_pd(one, dy);
+    const V ix = Div(one, dx);
+    const V iy = Div(one, dy);
     // The scalar code's dx != 0.0 is false exactly where dx == 0.0 (a NaN is "not zero").
-    const V x_parallel = _mm256_cmp_pd(dx, zero, _CMP_EQ_OQ);
-    const V y_parallel = _mm256_cmp_pd(dy, zero, _CMP_EQ_OQ);
+    const V x_parallel = Equal(dx, zero);
+    const V y_parallel = Equal(dy, zero);
     V best = Splat(max_range);
 
     for (const RelRect& r : rects) {

@@ -28,14 +28,8 @@ class CommittedLearnedRowsTest : public ::testing::Test {
   void SetUp() override {
     // The suites name weights and world files relative to the repository root.
     fs::current_path(testing::SourceDir());
-    if (!fs::exists(testing::PluginDir() / "crowdsim_sarl.so")) {
-      GTEST_SKIP() << "no learned-policy plugins in this build (built without libtorch)";
-    }
-    const char* core = std::getenv("OPENBLAS_CORETYPE");
-    if (core != nullptr && std::string(core) != "Haswell") {
-      GTEST_SKIP() << "OPENBLAS_CORETYPE=" << core << " is set outside the harness; the "
-                   << "committed tables were made with OpenBLAS's Haswell kernels";
-    }
+    const std::string skip = testing::LearnedRowsSkipReason();
+    if (!skip.empty()) GTEST_SKIP() << skip;
   }
 
   // Reruns `row` of suites/<suite>.yaml alone and compares its episodes with results/<suite>/.

@@ -23,14 +23,8 @@ class LidarScalarPathTest : public ::testing::Test {
  protected:
   void SetUp() override {
     fs::current_path(testing::SourceDir());  // the suites name weights from the root
-    if (!fs::exists(testing::PluginDir() / "crowdsim_cadrl.so")) {
-      GTEST_SKIP() << "no learned-policy plugins in this build (built without libtorch)";
-    }
-    const char* core = std::getenv("OPENBLAS_CORETYPE");
-    if (core != nullptr && std::string(core) != "Haswell") {
-      GTEST_SKIP() << "OPENBLAS_CORETYPE=" << core << " is set outside the harness; the "
-                   << "committed tables were made with OpenBLAS's Haswell kernels";
-    }
+    const std::string skip = testing::LearnedRowsSkipReason();
+    if (!skip.empty()) GTEST_SKIP() << skip;
     // Read by the core at its first scan, which comes after this (one test per process).
     setenv("CROWDSIM_SIMD", "off", 1);
   }

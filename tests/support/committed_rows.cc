@@ -1,5 +1,6 @@
 #include "committed_rows.h"
 
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -42,6 +43,20 @@ RowRerun RerunCommittedRow(PluginRegistry& registry, const std::filesystem::path
   result.committed = LinesOfRow(
       WithoutTimingColumns(ReadText(SourceDir() / "results" / suite_name / "episodes.csv")), row);
   return result;
+}
+
+std::string LearnedRowsSkipReason() {
+  if (!std::filesystem::exists(PluginDir() / "crowdsim_sarl.so") ||
+      !std::filesystem::exists(PluginDir() / "crowdsim_cadrl.so")) {
+    return "no learned-policy plugins in this build (built without libtorch)";
+  }
+  const char* core = std::getenv("OPENBLAS_CORETYPE");
+  if (core != nullptr && std::string(core) != "Haswell") {
+    return "OPENBLAS_CORETYPE=" + std::string(core) +
+           " is set outside the harness; the committed tables were made with OpenBLAS's "
+           "Haswell kernels";
+  }
+  return "";
 }
 
 }  // namespace crowdsim::testing

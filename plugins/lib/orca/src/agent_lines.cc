@@ -4,12 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "crowdsim/avx2_lanes.h"
 #include "orca/geometry.h"
-
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define CROWDSIM_ORCA_AVX2 1
-#include <immintrin.h>
-#endif
 
 namespace crowdsim::orca {
 
@@ -53,25 +49,11 @@ void AddAgentLinesScalar(const OrcaAgent& self, std::span<const OrcaAgent> neigh
   }
 }
 
-#ifdef CROWDSIM_ORCA_AVX2
+#ifdef CROWDSIM_AVX2_LANES
 
 namespace {
 
-// Lane-wise helpers for the AVX2 path; each is one IEEE operation per lane, as the scalar
-// code does it. No fused multiply-add is enabled here (target "avx2" only), so a product and
-// a sum stay two roundings, as in the scalar build.
-using V = __m256d;
-[[gnu::target("avx2")]] inline V Add(V a, V b) { return _mm256_add_pd(a, b); }
-[[gnu::target("avx2")]] inline V Sub(V a, V b) { return _mm256_sub_pd(a, b); }
-[[gnu::target("avx2")]] inline V Mul(V a, V b) { return _mm256_mul_pd(a, b); }
-[[gnu::target("avx2")]] inline V Div(V a, V b) { return _mm256_div_pd(a, b); }
-[[gnu::target("avx2")]] inline V Neg(V a) { return _mm256_xor_pd(a, _mm256_set1_pd(-0.0)); }
-// a > b, false where either is NaN (as the scalar comparison).
-[[gnu::target("avx2")]] inline V Greater(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
-// mask ? yes : no, lane by lane.
-[[gnu::target("avx2")]] inline V Select(V mask, V yes, V no) {
-  return _mm256_blendv_pd(no, yes, mask);
-}
+using namespace avx2;  // NOLINT(google-build-using-namespace): the lanes' arithmetic
 
 // Four (x, y) pairs, one per lane group, from four 16-byte vectors: x of each in one register,
 // y in another. a02 holds agents 0 and 2, a13 agents 1 and 3.
