@@ -30,6 +30,17 @@ std::string RowInstance::UnmetSensorNeed() const {
   return "";
 }
 
+std::string RowInstance::HumansNeedRobotOnly() const {
+  if (humans_.empty()) return "";
+  const PolicyNeeds needs = humans_.front()->Needs();
+  const std::string who = "the humans' policy '" + row_.humans.policy.plugin + "'";
+  if (!needs.sensors.empty()) {
+    return who + " needs the sensor '" + needs.sensors.front() + "', which only the robot is given";
+  }
+  if (needs.lookahead) return who + " needs the lookahead, which only the robot is given";
+  return "";
+}
+
 const EpisodeAgents& RowInstance::Agents(size_t humans) {
   while (humans_.size() < humans) {
     humans_.push_back(registry_.MakePolicy(*row_.humans.policy.loaded, row_.humans.policy.params));

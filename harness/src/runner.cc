@@ -58,6 +58,11 @@ PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& regist
     if (const std::string unmet = built.instance->UnmetSensorNeed(); !unmet.empty()) {
       throw RunError(where + ": " + unmet + "; add it to the row's sensors list");
     }
+    if (const std::string unmet = built.instance->HumansNeedRobotOnly(); !unmet.empty()) {
+      throw RunError(where + ": " + unmet +
+                     " (a human sees the others through the neighbour index); give the humans a "
+                     "policy that needs neither, e.g. humans: {policy: orca}");
+    }
     try {
       built.episode0 = MakeEpisodeScenario(suite, row, *built.world, 0);
       CheckScenario(built.episode0, suite.sim);

@@ -1260,6 +1260,11 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
            ", params: {sensors: lidar+person}",
        "the first step of episode 0 fails: the robot's policy failed: the lidar2d reading has 90 "
        "beams"},
+      {"humans' policy that needs a sensor",
+       "policy: linear, humans: {count: 5, policy: sarl, params: {sensors: person}}",
+       "the humans' policy 'sarl' needs the sensor 'person', which only the robot is given (a "
+       "human sees the others through the neighbour index); give the humans a policy that needs "
+       "neither, e.g. humans: {policy: orca}"},
       {"impossible human count",
        "policy: linear, world: {source: random_rect, obstacles: 1, split: test}, humans: {count: "
        "500}",

@@ -17,8 +17,10 @@ enum class AgentRole { kRobot, kHuman };
 
 /// What a policy needs from the harness (checked before the first episode).
 struct PolicyNeeds {
-  bool map = false;        ///< gets EpisodeContext::map (privileged knowledge of the layout)
-  bool lookahead = false;  ///< robot only: gets Observation::lookahead
+  bool map = false;  ///< gets EpisodeContext::map (privileged knowledge of the layout)
+  /// Robot only: gets Observation::lookahead. A humans' policy that sets it is refused before
+  /// the first episode (run, validate, train), as is one that names sensors.
+  bool lookahead = false;
   std::vector<std::string> sensors;  ///< robot only: sensor names that must be configured
   /// Humans only: Observation::frame turned towards the agent's goal (an atan2 and a sincos
   /// per decision). A policy that works in world coordinates (ORCA) sets false and gets the

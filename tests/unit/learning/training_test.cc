@@ -369,6 +369,25 @@ TEST(TrainingTest, PolicyWithoutItsSensorIsRefused) {
   }
 }
 
+// A humans' policy that needs what only the robot is given (a sensor, the lookahead) is refused
+// as the learner's missing sensor is: before the first episode, nothing trained.
+TEST(TrainingTest, HumansPolicyNeedingASensorIsRefused) {
+  TempDir dir;
+  TrainFile f;
+  f.humans = "{count: 1, policy: cadrl, params: {sensors: person}}";
+  f.training = kTiny;
+  const auto file = WriteTrainFile(dir, f);
+  try {
+    Train(file, dir.path() / "out");
+    ADD_FAILURE() << "trained with humans that need a sensor";
+  } catch (const training::TrainRefused& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the humans' policy 'cadrl' needs the sensor 'person', which only the robot is "
+              "given; give the humans a policy that needs neither, e.g. humans: {policy: orca}");
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "weights.pt"));
+}
+
 // A teacher whose weights are missing is named as the teacher: the learner's own missing
 // weights gave the same message, and the user could not tell which one failed.
 TEST(TrainingTest, AMissingTeacherIsNamedAsTheTeacher) {

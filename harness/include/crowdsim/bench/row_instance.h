@@ -27,6 +27,12 @@ class RowInstance {
   /// trainings both check it before their first episode.
   std::string UnmetSensorNeed() const;
 
+  /// What the humans' policy needs that only the robot is given (PolicyNeeds::sensors and
+  /// ::lookahead: a human sees the others through Observation::agents), as "the humans' policy
+  /// 'x' needs the sensor 'person', which only the robot is given"; "" when it needs neither, or
+  /// before Agents made a human. Suite runs check it before their first episode.
+  std::string HumansNeedRobotOnly() const;
+
  private:
   const RowSpec& row_;
   PluginRegistry& registry_;
