@@ -23,6 +23,18 @@ const char* kTiny =
     "target_update_interval: 4, batch_size: 20, train_batches: 3, validation_interval: 6, "
     "validation_episodes: 3, checkpoint_interval: 5}";
 
+/// What a training of `f` (written into `dir`, out to dir/out) is refused with; a failure, and
+/// "", when it is not refused.
+std::string RefusalOf(const TempDir& dir, const TrainFile& f) {
+  try {
+    Train(WriteTrainFile(dir, f), dir.path() / "out");
+  } catch (const training::TrainRefused& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "trained, not refused";
+  return "";
+}
+
 /// Greedy success rates of the trained and the untrained network on the same 100 test episodes.
 std::pair<double, double> Evaluate(const TempDir& dir, const fs::path& weights) {
   const fs::path suite_file =
@@ -359,14 +371,7 @@ TEST(TrainingTest, PolicyWithoutItsSensorIsRefused) {
   TrainFile f;
   f.sensors_param = "lidar+person";
   f.training = kTiny;
-  const auto file = WriteTrainFile(dir, f);
-  try {
-    Train(file, dir.path() / "out");
-    ADD_FAILURE() << "trained without the lidar";
-  } catch (const training::TrainRefused& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "policy 'cadrl' needs the sensor 'lidar2d'; add it to `sensors`");
-  }
+  EXPECT_EQ(RefusalOf(dir, f), "policy 'cadrl' needs the sensor 'lidar2d'; add it to `sensors`");
 }
 
 // A humans' policy that needs what only the robot is given (a sensor, the lookahead) is refused
@@ -376,15 +381,9 @@ TEST(TrainingTest, HumansPolicyNeedingASensorIsRefused) {
   TrainFile f;
   f.humans = "{count: 1, policy: cadrl, params: {sensors: person}}";
   f.training = kTiny;
-  const auto file = WriteTrainFile(dir, f);
-  try {
-    Train(file, dir.path() / "out");
-    ADD_FAILURE() << "trained with humans that need a sensor";
-  } catch (const training::TrainRefused& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "the humans' policy 'cadrl' needs the sensor 'person', which only the robot is "
-              "given; give the humans a policy that needs neither, e.g. humans: {policy: orca}");
-  }
+  EXPECT_EQ(RefusalOf(dir, f),
+            "the humans' policy 'cadrl' needs the sensor 'person', which only the robot is "
+            "given; give the humans a policy that needs neither, e.g. humans: {policy: orca}");
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "weights.pt"));
 }
 
@@ -395,18 +394,13 @@ TEST(TrainingTest, AMissingTeacherIsNamedAsTheTeacher) {
   TrainFile f;
   f.training = std::string(kTiny).substr(0, std::string(kTiny).size() - 1) +
                ", il_policy: cadrl, il_params: {sensors: person, weights: nope/missing.pt}}";
-  const auto file = WriteTrainFile(dir, f);
-  try {
-    Train(file, dir.path() / "out");
-    ADD_FAILURE() << "trained without its teacher";
-  } catch (const training::TrainRefused& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("the imitation teacher (training.il_policy 'cadrl' with "
-                                          "training.il_params): ",
-                                          0),
-              0u)
-        << e.what();
-    EXPECT_NE(std::string(e.what()).find("missing.pt"), std::string::npos) << e.what();
-  }
+  const std::string refusal = RefusalOf(dir, f);
+  EXPECT_EQ(refusal.rfind("the imitation teacher (training.il_policy 'cadrl' with "
+                          "training.il_params): ",
+                          0),
+            0u)
+      << refusal;
+  EXPECT_NE(refusal.find("missing.pt"), std::string::npos) << refusal;
 }
 
 }  // namespace
