@@ -233,6 +233,14 @@ std::string BinaryKind(const fs::path& file) {
 YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
                         std::vector<SuiteError>* errors) {
   std::error_code ec;
+  // Standard input and pipes (`-`, `<(generate)`): a spec is read more than once (its kind,
+  // its text, the hints of an error), and a pipe gives its text to the first read only.
+  const std::string from_a_pipe =
+      "; a " + what + " is read more than once: write it to a file and give that file";
+  if (file == "-") {
+    errors->push_back({file.string(), 0, 0, "", "standard input cannot be read" + from_a_pipe});
+    return YAML::Node(YAML::NodeType::Null);
+  }
   if (!fs::exists(file, ec)) {
     // A relative path the data folder has (`suites/quick.yaml` typed outside a source tree, as
     // the README has it, with the package's suites under PREFIX/share/crowdsim-bench): named.
@@ -253,6 +261,11 @@ YAML::Node LoadYamlFile(const fs::path& file, const std::string& what,
                        ran.empty() ? "is a folder; give the " + what + " (a .yaml file) in it"
                                    : "is the output folder of a run; give the " + what +
                                          " it ran, which its manifest.json names: " + ran});
+    return YAML::Node(YAML::NodeType::Null);
+  }
+  if (!fs::is_regular_file(file, ec)) {
+    errors->push_back(
+        {file.string(), 0, 0, "", "is not a regular file (a pipe or a device)" + from_a_pipe});
     return YAML::Node(YAML::NodeType::Null);
   }
   if (const std::string binary = BinaryKind(file); !binary.empty()) {

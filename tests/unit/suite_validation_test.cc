@@ -1,6 +1,7 @@
 // Suite validation: every error at once, each located (file:line:col), with the key path,
 // the offending value and the valid choices.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -692,6 +693,22 @@ TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
   ASSERT_FALSE(folder.suite);
   EXPECT_NE(Find(folder, "is a folder; give the suite file (a .yaml file) in it"), "")
       << All(folder);
+  // A pipe (`run <(generate)`) and standard input: named as such, not read (a pipe's text went
+  // to the first of the several reads, and the suite seemed empty).
+  const auto fifo = dir_.path() / "generated.yaml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const SuiteLoadResult piped = LoadSuite(fifo, registry_);
+  ASSERT_FALSE(piped.suite);
+  EXPECT_NE(Find(piped,
+                 "is not a regular file (a pipe or a device); a suite file is read more than "
+                 "once: write it to a file and give that file"),
+            "")
+      << All(piped);
+  const SuiteLoadResult stdin_suite = LoadSuite("-", registry_);
+  ASSERT_FALSE(stdin_suite.suite);
+  EXPECT_NE(Find(stdin_suite, "standard input cannot be read; a suite file is read more than once"),
+            "")
+      << All(stdin_suite);
   // A tab in an indentation, where yaml-cpp reports only what it broke.
   const auto tabbed = dir_.path() / "tabbed.yaml";
   std::ofstream(tabbed) << "name: t\nepisodes: 2\nworld: {source: crowdnav}\nrows:\n"
