@@ -1284,6 +1284,16 @@ TEST_F(RunSuiteTest, ValidateFailsWhereRunWouldEachRowNamed) {
     EXPECT_NE(text.find(c.expected), std::string::npos) << c.name << ": " << text;
     EXPECT_EQ(text.find("row 'fine'"), std::string::npos) << c.name << ": " << text;
   }
+  // Humans' policy needs are asked of a row with humans only: with none, the policy never runs.
+  const fs::path no_humans =
+      dir_.Write("no_humans.yaml",
+                 "name: no_humans\nepisodes: 2\nseed: 1\nworld: {source: crowdnav, scenario: "
+                 "circle_crossing}\nhumans: {count: 0, policy: sarl, params: {sensors: person}}\n"
+                 "robot: {sensors: [person]}\nrows:\n  - {label: fine, policy: linear}\n");
+  {
+    auto [rc, text] = Shell(exe + " validate " + no_humans.string());
+    EXPECT_EQ(rc, 0) << text;
+  }
   // The last suite (impossible human count): `run` stops at the same preflight, before any
   // episode, and exits 2 as for any refusal (nothing was run; no folder is made).
   const fs::path out = dir_.path() / "preflight-out";

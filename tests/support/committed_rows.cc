@@ -50,6 +50,12 @@ std::string LearnedRowsSkipReason() {
       !std::filesystem::exists(PluginDir() / "crowdsim_cadrl.so")) {
     return "no learned-policy plugins in this build (built without libtorch)";
   }
+#if defined(__x86_64__)
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
+    return "this processor has no AVX2 and FMA: OpenBLAS cannot run the Haswell kernels the "
+           "committed tables were made with";
+  }
+#endif
   const char* core = std::getenv("OPENBLAS_CORETYPE");
   if (core != nullptr && std::string(core) != "Haswell") {
     return "OPENBLAS_CORETYPE=" + std::string(core) +

@@ -24,8 +24,9 @@ RowRerun RerunCommittedRow(PluginRegistry& registry, const std::filesystem::path
                            const std::string& suite_name, const std::string& row);
 
 /// Why a committed row of a learned policy cannot be expected to rerun identically here, or ""
-/// when it can: no learned-policy plugins in this build (built without libtorch), or an
-/// OPENBLAS_CORETYPE set outside the harness to other kernels than the tables were made with.
+/// when it can: no learned-policy plugins in this build (built without libtorch), a processor
+/// without AVX2 and FMA (no Haswell kernels), or an OPENBLAS_CORETYPE set outside the harness
+/// to other kernels than the tables were made with.
 std::string LearnedRowsSkipReason();
 
 }  // namespace crowdsim::testing

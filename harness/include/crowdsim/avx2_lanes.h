@@ -1,6 +1,9 @@
 // Lane-wise helpers for the AVX2 paths of the hot loops (crowdsim/vector_units.h): each is one
-// IEEE operation per lane, as the scalar code does it. Only "avx2" is enabled for them (no
-// fused multiply-add), so a product and a sum stay two roundings, as in the scalar build.
+// IEEE operation per lane, as the scalar code does it. A product and a sum stay two roundings,
+// as in the scalar code, only while the compiler fuses nothing: build the file that uses them
+// (and its scalar twin) with -ffp-contract=off. GCC's default, -ffp-contract=fast, fuses them
+// wherever the build enables FMA (-march=native, -march=haswell): "avx2" adds to the build's
+// instruction set, it does not replace it.
 // Defines CROWDSIM_AVX2_LANES where the compiler can build them (x86-64, GCC or Clang); a
 // caller runs them only when UseAvx2().
 #pragma once
