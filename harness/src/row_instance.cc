@@ -31,7 +31,7 @@ std::string RowInstance::UnmetSensorNeed() const {
 }
 
 std::string RowInstance::HumansNeedRobotOnly() const {
-  if (humans_.empty()) return "";
+  if (humans_.empty() || row_.humans.count_max <= 0) return "";
   const PolicyNeeds needs = humans_.front()->Needs();
   const std::string who = "the humans' policy '" + row_.humans.policy.plugin + "'";
   if (!needs.sensors.empty()) {

@@ -58,13 +58,9 @@ PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& regist
     if (const std::string unmet = built.instance->UnmetSensorNeed(); !unmet.empty()) {
       throw RunError(where + ": " + unmet + "; add it to the row's sensors list");
     }
-    // Only a row with humans: a policy named for none (count 0) never runs.
-    const std::string unmet_humans =
-        row.humans.count_max > 0 ? built.instance->HumansNeedRobotOnly() : std::string();
-    if (!unmet_humans.empty()) {
-      throw RunError(where + ": " + unmet_humans +
-                     " (a human sees the others through the neighbour index); give the humans a "
-                     "policy that needs neither, e.g. humans: {policy: orca}");
+    if (const std::string unmet = built.instance->HumansNeedRobotOnly(); !unmet.empty()) {
+      throw RunError(where + ": " + unmet + " (a human sees the others through the neighbour " +
+                     "index); " + kPlainHumansPolicy);
     }
     try {
       built.episode0 = MakeEpisodeScenario(suite, row, *built.world, 0);

@@ -15,9 +15,7 @@ RowEpisodes::RowEpisodes(const Suite& suite, const RowSpec& row, PluginRegistry&
     throw std::logic_error("RowEpisodes: the row's robot is not the Python policy");
   instance_->Agents(static_cast<size_t>(row.humans.count));
   if (const std::string unmet = instance_->HumansNeedRobotOnly(); !unmet.empty()) {
-    throw std::invalid_argument(unmet +
-                                "; give the humans a policy that needs neither, e.g. "
-                                "humans: {policy: orca}");
+    throw std::invalid_argument(unmet + "; " + kPlainHumansPolicy);
   }
 }
 

@@ -193,9 +193,7 @@ void Trainer::Build() {
     throw TrainRefused(unmet + "; add it to `sensors`");
   }
   if (const std::string unmet = row_->HumansNeedRobotOnly(); !unmet.empty()) {
-    throw TrainRefused(unmet +
-                       "; give the humans a policy that needs neither, e.g. humans: "
-                       "{policy: orca}");
+    throw TrainRefused(unmet + "; " + kPlainHumansPolicy);
   }
   // The run's constants before imitation, whose targets the learner fits before it drives an
   // episode (a value with a discounted route prior needs the run's gamma); no map: no episode.

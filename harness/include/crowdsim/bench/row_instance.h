@@ -29,8 +29,10 @@ class RowInstance {
 
   /// What the humans' policy needs that only the robot is given (PolicyNeeds::sensors and
   /// ::lookahead: a human sees the others through Observation::agents), as "the humans' policy
-  /// 'x' needs the sensor 'person', which only the robot is given"; "" when it needs neither, or
-  /// before Agents made a human. Suite runs check it before their first episode.
+  /// 'x' needs the sensor 'person', which only the robot is given"; "" when it needs neither,
+  /// when the row has no humans (the policy never runs), or before Agents made a human. Suite
+  /// runs, trainings and the Python env check it before their first episode, and say the fix,
+  /// kPlainHumansPolicy.
   std::string HumansNeedRobotOnly() const;
 
  private:
@@ -41,6 +43,10 @@ class RowInstance {
   std::vector<std::shared_ptr<Policy>> humans_;
   EpisodeAgents agents_;
 };
+
+/// The fix for what HumansNeedRobotOnly reports.
+inline constexpr char kPlainHumansPolicy[] =
+    "give the humans a policy that needs neither, e.g. humans: {policy: orca}";
 
 /// The request a suite run makes for episode `episode` of `row` (seed from the suite seed,
 /// the world's identity and the episode index).
