@@ -5,7 +5,7 @@ TorchScript policy interface, saves it, and writes a suite that runs it beside `
     /usr/bin/python3 examples/python/export_torchscript.py [OUT_DIR]      # default runs/torchscript_example
     build/bin/crowdsim-bench run OUT_DIR/suite.yaml --out OUT_DIR/results
 
-Needs python3-torch (Debian), not the crowdsim_bench package. The interface (plugins/torchscript):
+Needs python3-torch (Debian), not the crowdsim_bench package. The interface (plugins/policies/torchscript):
 forward(obs: Dict[str, Tensor]) -> Tensor, obs with the layout of crowdsim_bench.Env's
 observations as float64 tensors (`robot` (9,), `humans` (H, 5), `humans_mask` (H,) bool,
 `lidar` (beams,) when the row has a lidar, `time` ()), returning (vx, vy) in m/s, world frame

@@ -1,4 +1,4 @@
-# The floor-plan importer (tools/floorplan) and the `floorplan` world plugin (worlds/floorplan),
+# The floor-plan importer (tools/floorplan) and the `floorplan` world plugin (plugins/worlds/floorplan),
 # whose test imports a synthetic plan to have a world.
 if(CROWDSIM_BUILD_TESTS)
   find_package(PNG REQUIRED)  # the tests write RGBA PNGs of their own

@@ -1,4 +1,4 @@
-# The learned policies (plugins/lib/value_rl, cadrl, sarl) and the trainer (harness/src/training).
+# The learned policies (plugins/lib/value_rl, cadrl, sarl) and the trainer (harness/host/train).
 if(CROWDSIM_WITH_TORCH)
   if(CROWDSIM_BUILD_TESTS OR CROWDSIM_BUILD_BENCHMARKS)
     # Training helpers shared by the tests and the benchmarks.
@@ -6,7 +6,7 @@ if(CROWDSIM_WITH_TORCH)
       ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/learning_test_util.cc)
     target_include_directories(crowdsim_learning_test_util PUBLIC
       ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning)
-    target_link_libraries(crowdsim_learning_test_util PUBLIC crowdsim_core crowdsim_test_support
+    target_link_libraries(crowdsim_learning_test_util PUBLIC crowdsim_host crowdsim_test_support
       crowdsim_value_rl)
     target_compile_options(crowdsim_learning_test_util PRIVATE ${CROWDSIM_WARNINGS})
   endif()
@@ -23,7 +23,7 @@ if(CROWDSIM_WITH_TORCH)
     # The trainer's internal pieces (value targets, replay memory, episode log, learning curve).
     crowdsim_add_gtest(value_targets_test unit
       SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/value_targets_test.cc)
-    target_include_directories(value_targets_test PRIVATE ${CMAKE_SOURCE_DIR}/harness/src)
+    target_include_directories(value_targets_test PRIVATE ${CMAKE_SOURCE_DIR}/harness/host)
   endif()
 
   if(CROWDSIM_BUILD_BENCHMARKS)

@@ -1,4 +1,4 @@
-# The OMPL global-planner baseline (plugins/ompl_planner). Skipped with the module.
+# The OMPL global-planner baseline (plugins/policies/ompl_planner). Skipped with the module.
 if(TARGET crowdsim_ompl_planner)
   if(CROWDSIM_BUILD_TESTS)
     foreach(test ompl_planner_config_test global_planner_test action_set_test)

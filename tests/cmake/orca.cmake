@@ -1,4 +1,4 @@
-# The ORCA solver and the `orca` policy plugin (plugins/orca).
+# The ORCA solver and the `orca` policy plugin (plugins/policies/orca).
 if(CROWDSIM_BUILD_TESTS OR CROWDSIM_BUILD_BENCHMARKS)
   # The two-pass crowd simulator the solver tests and benchmarks drive.
   add_library(crowdsim_orca_test_sim STATIC ${CMAKE_CURRENT_SOURCE_DIR}/unit/orca/orca_test_sim.cc)

@@ -1,4 +1,4 @@
-# The `torchscript` policy plugin (plugins/torchscript): tiny modules scripted and saved by the
+# The `torchscript` policy plugin (plugins/policies/torchscript): tiny modules scripted and saved by the
 # test with python3-torch run through the CLI (tests/python/test_torchscript_plugin.py). The
 # test exits 77 (skipped) when python3-torch is missing; the Python package, when built, is on
 # PYTHONPATH for the layout check against crowdsim_bench.evaluate().

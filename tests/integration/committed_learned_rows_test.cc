@@ -3,7 +3,7 @@
 // nearly equal actions now and then (on AMD Zen 4, whose AVX-512 kernels differ from the
 // Haswell kernels the tables were made with: episode 417 of Table 1's line 13, episodes 302
 // and 475 of line 4 with 3 obstacles). The harness pins the Haswell kernels before it loads a
-// plugin (harness/src/blas_kernel.h); this test reruns those rows from their suites and
+// plugin (harness/host/loader/blas_kernel.h); this test reruns those rows from their suites and
 // compares every episode with results/. It needs the learned policies' plugins (a build with
 // libtorch) and must not link libtorch itself: OpenBLAS would be loaded before the pin.
 #include <gtest/gtest.h>
@@ -12,8 +12,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "blas_kernel.h"
 #include "committed_rows.h"
+#include "loader/blas_kernel.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 

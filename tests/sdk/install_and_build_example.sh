@@ -11,7 +11,7 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 cmake --install "$build" --prefix "$work/prefix" > "$work/install.log" || { cat "$work/install.log"; fail "install"; }
-for f in bin/crowdsim-bench lib/libcrowdsim_core.so lib/crowdsim-bench/plugins/crowdsim_orca.so \
+for f in bin/crowdsim-bench lib/libcrowdsim_sdk.so lib/crowdsim-bench/plugins/crowdsim_orca.so \
          include/crowdsim/plugin_abi.h lib/cmake/crowdsim/crowdsimConfig.cmake \
          share/crowdsim-bench/worlds/random_rect share/crowdsim-bench/suites/quick.yaml; do
   [[ -e "$work/prefix/$f" ]] || fail "the install lacks $f"
@@ -21,7 +21,7 @@ done
 # share/doc/crowdsim-bench: a user of the .deb has no source tree to read them in.
 doc="$work/prefix/share/doc/crowdsim-bench"
 for f in README.md docs/plugins.md docs/training.md docs/metrics.md tools/floorplan/README.md \
-         plugins/torchscript/README.md sensors/lidar2d/README.md examples/floorplan/two_rooms.png; do
+         plugins/policies/torchscript/README.md plugins/sensors/lidar2d/README.md examples/floorplan/two_rooms.png; do
   [[ -f "$doc/$f" ]] || fail "the install lacks the documentation share/doc/crowdsim-bench/$f"
 done
 diff -r -x build "$source/examples/my_policy" "$doc/examples/my_policy" > "$work/example.diff" ||
@@ -29,7 +29,7 @@ diff -r -x build "$source/examples/my_policy" "$doc/examples/my_policy" > "$work
 # Exactly the SDK folder's headers are installed (none of the host's bench/), and each one
 # compiles on its own against the prefix.
 installed=$(cd "$work/prefix/include/crowdsim" && find . -type f | sed 's|^\./||' | sort)
-sdk=$(cd "$source/harness/include/crowdsim" && ls *.h | sort)
+sdk=$(cd "$source/harness/sdk/include/crowdsim" && ls *.h | sort)
 [[ "$installed" == "$sdk" ]] || fail "installed headers differ from the SDK folder: $(diff <(echo "$sdk") <(echo "$installed") | tr '\n' ' ')"
 for h in $sdk; do
   echo "#include \"crowdsim/$h\"" | ${CXX:-c++} -std=c++20 -fsyntax-only -x c++ - -I "$work/prefix/include" \
@@ -40,6 +40,24 @@ cmake -S "$source/examples/my_policy" -B "$work/example" -DCMAKE_PREFIX_PATH="$w
   > "$work/configure.log" 2>&1 || { cat "$work/configure.log"; fail "configure the example"; }
 cmake --build "$work/example" > "$work/build.log" 2>&1 || { cat "$work/build.log"; fail "build the example"; }
 [[ -f "$work/example/crowdsim_yielding_straight.so" ]] || fail "the example plugin was not built"
+# The host is never installed, and a plugin built with the installed SDK's crowdsim_add_plugin
+# that calls a host function fails to link (tests/fixtures/host_symbol_plugin.cc).
+[[ -z "$(find "$work/prefix" -name 'libcrowdsim_host*')" ]] || fail "the install holds the host library"
+mkdir -p "$work/host_symbol"
+cat > "$work/host_symbol/CMakeLists.txt" <<CMAKE
+cmake_minimum_required(VERSION 3.22)
+project(host_symbol LANGUAGES CXX)
+find_package(crowdsim REQUIRED)
+crowdsim_add_plugin(host_symbol "$source/tests/fixtures/host_symbol_plugin.cc")
+target_compile_definitions(crowdsim_plugin_host_symbol PRIVATE CROWDSIM_FIXTURE_CALLS_HOST=1)
+CMAKE
+cmake -S "$work/host_symbol" -B "$work/host_symbol/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  > "$work/host_symbol.log" 2>&1 || { cat "$work/host_symbol.log"; fail "configure the host-symbol plugin"; }
+if cmake --build "$work/host_symbol/build" > "$work/host_symbol.log" 2>&1; then
+  fail "a plugin calling a host function linked against the installed SDK"
+fi
+grep -q "undefined reference to .crowdsim::IsShippedPluginName" "$work/host_symbol.log" ||
+  { cat "$work/host_symbol.log"; fail "the host-symbol plugin failed, but not at the link"; }
 
 # The installed CLI searches its own plugin folder, not the build tree's.
 plugins=$(cd "$work" && "$work/prefix/bin/crowdsim-bench" list-plugins)

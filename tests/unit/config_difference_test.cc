@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "config_text.h"
+#include "spec/config_text.h"
 
 namespace crowdsim::suite_internal {
 namespace {

@@ -1,9 +1,9 @@
-// The clock of the robot's decision times (harness/src/decision_clock.h): the time-stamp
+// The clock of the robot's decision times (harness/host/sim/decision_clock.h): the time-stamp
 // counter where the kernel keeps time with it, converted at the rate it keeps against
 // steady_clock. A span it measures must be the span steady_clock measures: long and short
 // spans, in a forked worker (whose first episodes read up to 15% low when the rate was
 // measured from the worker's own first, slow clock read), and once the rate is kept.
-#include "decision_clock.h"
+#include "sim/decision_clock.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>

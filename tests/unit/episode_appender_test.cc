@@ -1,7 +1,7 @@
 // episodes.csv's appender: lines reach the file within the delay without another append, at
 // Finish, at once without a delay, and from a signal handler (Ctrl-C keeps them); a full disk
 // is named with its file and reason.
-#include "episode_appender.h"
+#include "run/episode_appender.h"
 
 #include <gtest/gtest.h>
 

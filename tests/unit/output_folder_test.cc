@@ -1,6 +1,6 @@
 // One writer per output folder: another process or another holder in this process is refused
 // until the holder lets go; the kinds of output do not mix.
-#include "output_folder.h"
+#include "run/output_folder.h"
 
 #include <gtest/gtest.h>
 

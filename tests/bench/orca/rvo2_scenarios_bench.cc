@@ -1,6 +1,6 @@
-// RVO2's own examples run to completion on our ORCA solver (plugins/orca) with the two-pass
-// test simulator, as RVO2's example programs run them: Circle with 250 agents and Blocks with
-// 100. Time per step (preferred velocities + the simulator's step, as in RVO2's loop) and, as
+// RVO2's own examples run to completion on our ORCA solver (plugins/policies/orca) with the
+// two-pass test simulator, as RVO2's example programs run them: Circle with 250 agents and Blocks
+// with 100. Time per step (preferred velocities + the simulator's step, as in RVO2's loop) and, as
 // counters, the steps until every agent arrived, whether all did, and the worst overlap (the
 // deepest pairwise penetration at any step), so that a faster solver that walks agents into
 // each other or never arrives shows here. Issue 14's target: >= 2x RVO2's C++ at -O2 with the

@@ -1,15 +1,15 @@
 // The value targets and the replay memory behind the trainer: TD(0) on a corridor whose values
 // are known in closed form, truncated (timeout) transitions that bootstrap while terminal ones
 // do not, the memory's composition by episode kind, and the per-episode log's resume cut.
-#include "training/value_targets.h"
+#include "train/value_targets.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "temp_dir.h"
-#include "training/episode_log.h"
-#include "training/replay_memory.h"
+#include "train/episode_log.h"
+#include "train/replay_memory.h"
 
 namespace crowdsim::training {
 namespace {

@@ -1,0 +1,13 @@
+// Where the installed libraries live: the SDK finds the data and the host the plugins from it.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace crowdsim::common {
+
+/// PREFIX/lib when the library that calls this is an installed copy (PREFIX/lib/crowdsim-bench/
+/// plugins exists beside it), else none: a build tree uses its own build paths.
+std::optional<std::filesystem::path> InstalledLibDir();
+
+}  // namespace crowdsim::common

@@ -1,0 +1,29 @@
+#include "loader/blas_kernel.h"
+
+#include <cstdlib>
+
+namespace crowdsim {
+
+namespace {
+constexpr const char* kCoreTypeVariable = "OPENBLAS_CORETYPE";
+}  // namespace
+
+void PinBlasKernel() {
+#if defined(__x86_64__)
+  // Once per process (a thread-safe static): later loads find the variable set anyway, and
+  // setenv then never runs beside another thread's getenv.
+  [[maybe_unused]] static const bool pinned = [] {
+    if (std::getenv(kCoreTypeVariable) != nullptr) return false;
+    __builtin_cpu_init();
+    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) return false;
+    return setenv(kCoreTypeVariable, "Haswell", /*overwrite=*/0) == 0;
+  }();
+#endif
+}
+
+std::string BlasCoreType() {
+  const char* value = std::getenv(kCoreTypeVariable);
+  return value != nullptr ? value : "";
+}
+
+}  // namespace crowdsim

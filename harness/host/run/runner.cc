@@ -1,0 +1,647 @@
+#include "crowdsim/bench/runner.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/row_instance.h"
+#include "crowdsim/version.h"
+#include "run/episode_appender.h"
+#include "run/episode_wire.h"
+#include "run/output_folder.h"
+#include "run/run_progress.h"
+#include "run/stored_episodes.h"
+#include "run/worker_process.h"
+#include "spec/config_text.h"
+
+namespace crowdsim {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// How preflight errors name row `r`: "row 'orca' (rows[1])".
+std::string RowPlace(const Suite& suite, size_t r) {
+  return "row '" + suite.rows[r].label + "' (rows[" + std::to_string(r) + "])";
+}
+
+/// A row as its preflight built it: the world, the plugins and episode 0's scenario.
+struct PreflightedRow {
+  std::shared_ptr<WorldSource> world;
+  std::unique_ptr<RowInstance> instance;
+  Scenario episode0;
+};
+
+/// Builds row `r`'s world, sensors and policies once, checks that the robot has the sensors
+/// it needs, and makes and checks episode 0's scenario as the run does (a world too small for
+/// the row's humans fails here, in `validate` too). Throws RunError naming the row.
+PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& registry) {
+  const RowSpec& row = suite.rows[r];
+  const std::string where = RowPlace(suite, r);
+  try {
+    PreflightedRow built;
+    built.world = registry.MakeWorld(*row.world.loaded, row.world.params);
+    built.instance = std::make_unique<RowInstance>(row, registry);
+    built.instance->Agents(1);
+    if (const std::string unmet = built.instance->UnmetSensorNeed(); !unmet.empty()) {
+      throw RunError(where + ": " + unmet + "; add it to the row's sensors list");
+    }
+    if (const std::string unmet = built.instance->HumansNeedRobotOnly(); !unmet.empty()) {
+      throw RunError(where + ": " + unmet + " (a human sees the others through the neighbour " +
+                     "index); " + kPlainHumansPolicy);
+    }
+    try {
+      built.episode0 = MakeEpisodeScenario(suite, row, *built.world, 0);
+      CheckScenario(built.episode0, suite.sim);
+    } catch (const std::exception& e) {
+      throw RunError(where + ": the scenario of episode 0 (world '" +
+                     row.world.loaded->descriptor->name + "') cannot be made: " + e.what());
+    }
+    return built;
+  } catch (const RunError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // A plugin error, or a plugin's own exception from outside its factory (Needs()): the
+    // row named, and refused as nothing has run (a throwing Needs() said only its message).
+    throw RunError(where + ": " + e.what());
+  }
+}
+
+/// The first step of episode 0, played as a run plays it: what fails on every step (a lidar
+/// whose beams do not fit a learned policy, a sensor that throws) fails before the run, not as
+/// a table of policy errors. Only in a row of the harness's own plugins that needs no
+/// isolation under `mode` (RowNeedsIsolation): the others run isolated, and their crash or hang
+/// would end this process; and a plugin of yours may fail at its first step on purpose. Throws
+/// RunError naming the row.
+void CheckFirstStep(const Suite& suite, size_t r, PreflightedRow& built, IsolationMode mode) {
+  const RowSpec& row = suite.rows[r];
+  const std::string where = RowPlace(suite, r);
+  if (!AllHarnessPlugins(row) || RowNeedsIsolation(suite, row, mode)) return;
+  try {
+    const Scenario& scenario = built.episode0;
+    Episode episode(scenario, suite.sim, built.instance->Agents(scenario.humans.size()));
+    if (!episode.done()) episode.Step();
+    if (episode.result().status == EpisodeStatus::kPolicyError) {
+      throw RunError(where + ": the first step of episode 0 fails: " + episode.result().error);
+    }
+  } catch (const RunError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw RunError(where + ": episode 0 cannot start: " + e.what());
+  }
+}
+
+/// The scenarios of the first episode of each of the world's other frozen layouts (episodes
+/// 1 .. min(`episodes`, LayoutCount()) - 1; episode 0's is the preflight's): a crowd that fits
+/// the first room of a world set but not a smaller one stopped the run at that room's first
+/// episode, after `validate` had said ok. `checked` holds the (world, crowd) pairs an earlier
+/// row passed with, whose scenarios this row's would repeat. Only for the harness's own world
+/// plugins: a world of yours that crashes or hangs in one layout costs its episodes in an
+/// isolated run, not the run. Throws RunError naming the row and the episode.
+void CheckEveryLayout(const Suite& suite, size_t r, const WorldSource& world, int episodes,
+                      std::set<std::string>* checked) {
+  const RowSpec& row = suite.rows[r];
+  if (!PluginRegistry::IsHarnessPlugin(*row.world.loaded)) return;
+  const int layouts = std::min(episodes, world.LayoutCount());
+  if (layouts < 2) return;
+  // The world by its canonical text (parameters and the content of the files it reads), not
+  // its Identity(): a world set's identity is its file's name alone, so rooms.yaml of another
+  // folder, other rooms, skipped the check as if it had passed.
+  std::ostringstream crowd;
+  suite_internal::Canonical(row.world, crowd);
+  crowd << " " << row.humans.count << " " << static_cast<int>(row.humans.goal_mode);
+  if (checked->count(crowd.str())) return;
+  for (int k = 1; k < layouts; ++k) {
+    try {
+      CheckScenario(MakeEpisodeScenario(suite, row, world, k), suite.sim);
+    } catch (const std::exception& e) {
+      throw RunError(RowPlace(suite, r) + ": the scenario of episode " + std::to_string(k) +
+                     " (world '" + row.world.loaded->descriptor->name +
+                     "') cannot be made: " + e.what());
+    }
+  }
+  checked->insert(crowd.str());
+}
+
+}  // namespace
+
+std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& registry) {
+  std::vector<std::string> errors;
+  std::set<std::string> checked;
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    try {
+      PreflightedRow built = PreflightRow(suite, r, registry);
+      CheckEveryLayout(suite, r, *built.world, suite.episodes, &checked);
+      CheckFirstStep(suite, r, built, suite.isolation);
+    } catch (const RunError& e) {
+      errors.push_back(e.what());
+    } catch (const std::exception& e) {
+      errors.push_back(RowPlace(suite, r) + ": episode 0 cannot start: " + e.what());
+    }
+  }
+  return errors;
+}
+
+RowsRefused::RowsRefused(std::vector<std::string> errors)
+    : RunRefused([&errors] {
+        std::string joined;
+        for (const std::string& e : errors) joined += (joined.empty() ? "" : "\n") + e;
+        return joined;
+      }()),
+      errors_(std::move(errors)) {}
+
+fs::path DefaultRunDir(const Suite& suite) { return fs::path("runs") / suite.name; }
+
+int ShardOfEpisode(std::size_t row, int episode, int episodes, int shards) {
+  return static_cast<int>(
+             (row * static_cast<std::size_t>(episodes) + static_cast<std::size_t>(episode)) %
+             static_cast<std::size_t>(shards)) +
+         1;
+}
+
+std::string PolicyErrorNote::Format() const {
+  return "row '" + row + "': " + std::to_string(errors) + " of " + std::to_string(episodes) +
+         " episodes ended in policy_error; " + First();
+}
+
+std::string PolicyErrorNote::First() const {
+  return "episode " + std::to_string(first_episode) + ": " + first_error;
+}
+
+namespace {
+
+/// Which (row, episode) pairs a run covers: the first `episodes` of every row, or the shard's
+/// slice of them (row-major position modulo the shard count).
+struct RunScope {
+  int episodes = 0;
+  int shard_index = 1;
+  int shards = 1;
+
+  bool Covers(size_t row, int k) const {
+    return ShardOfEpisode(row, k, episodes, shards) == shard_index;
+  }
+};
+
+RunScope MakeScope(const Suite& suite, const RunOptions& options) {
+  RunScope scope;
+  scope.episodes = options.episodes > 0 ? options.episodes : suite.episodes;
+  scope.shards = std::max(1, options.shard_count);
+  scope.shard_index = options.shard_index;
+  if (scope.shard_index < 1 || scope.shard_index > scope.shards) {
+    throw RunError("shard " + std::to_string(scope.shard_index) + "/" +
+                   std::to_string(scope.shards) + " does not exist (shards are numbered 1.." +
+                   std::to_string(scope.shards) + ")");
+  }
+  return scope;
+}
+
+fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
+  const fs::path dir = options.out_dir.empty() ? DefaultRunDir(suite) : options.out_dir;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) {
+    throw RunError("cannot create the output folder '" + dir.string() + "': " + ec.message() +
+                   ". Choose another with --out.");
+  }
+  // A folder that takes no file (on a read-only disk, a system folder such as /sys) failed
+  // later, at the first table written, naming a temporary file and not --out. A file of its
+  // own is the test: access() lets root pass where the disk or the file system refuses.
+  const fs::path probe = dir / ".crowdsim-bench.write-test";
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw RunError("cannot write in the output folder '" + dir.string() +
+                   "': " + std::strerror(errno) + ". Choose another with --out.");
+  }
+  ::close(fd);
+  fs::remove(probe, ec);
+  return dir;
+}
+
+/// Builds every row's objects once, so a bad parameter stops the run before any episode with
+/// the plugin's own message; returns the rows' worlds and records their identities.
+std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
+                                                        PluginRegistry& registry, RunFacts* facts,
+                                                        IsolationMode mode) {
+  // Every row is checked before any episode, and every row at fault is named (a suite of
+  // three rows with missing weights said only the first); nothing is run then.
+  std::vector<std::shared_ptr<WorldSource>> worlds;
+  std::vector<std::string> errors;
+  std::set<std::string> checked;
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    try {
+      PreflightedRow built = PreflightRow(suite, r, registry);
+      CheckEveryLayout(suite, r, *built.world, facts->episodes, &checked);
+      CheckFirstStep(suite, r, built, mode);
+      worlds.push_back(built.world);
+      facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
+    } catch (const RunError& e) {
+      errors.push_back(e.what());
+    }
+  }
+  if (!errors.empty()) throw RowsRefused(std::move(errors));
+  return worlds;
+}
+
+std::string EpisodesCsvText(const std::vector<const EpisodeLine*>& lines) {
+  std::string text = EpisodeCsvHeader() + "\n";
+  for (const EpisodeLine* line : lines) text += FormatEpisodeLine(*line) + "\n";
+  return text;
+}
+
+struct Task {
+  int row;
+  int episode;
+};
+
+/// The episodes of the scope still to run; `resumed` counts those already stored.
+std::vector<Task> PendingTasks(const Suite& suite, const RunScope& scope, const EpisodeLines& done,
+                               int* resumed) {
+  std::vector<Task> tasks;
+  *resumed = 0;
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    for (int k = 0; k < scope.episodes; ++k) {
+      if (!scope.Covers(r, k)) continue;
+      if (done.count({suite.rows[r].label, k})) {
+        ++*resumed;
+      } else {
+        tasks.push_back({static_cast<int>(r), k});
+      }
+    }
+  }
+  return tasks;
+}
+
+/// Per row with policy_error episodes among `done`: their count and the first one's message.
+std::vector<PolicyErrorNote> PolicyErrorNotes(const Suite& suite, const EpisodeLines& done) {
+  std::vector<PolicyErrorNote> notes;
+  for (const RowSpec& row : suite.rows) {
+    PolicyErrorNote note;
+    note.row = row.label;
+    const EpisodeLine* first = nullptr;
+    for (auto it = done.lower_bound({row.label, 0});
+         it != done.end() && it->first.first == row.label; ++it) {
+      ++note.episodes;
+      if (it->second.outcome.status != EpisodeStatus::kPolicyError) continue;
+      ++note.errors;
+      if (first == nullptr) first = &it->second;
+    }
+    if (first == nullptr) continue;
+    note.first_episode = first->episode;
+    note.first_error = first->outcome.error;
+    notes.push_back(std::move(note));
+  }
+  return notes;
+}
+
+/// One episode as the CLI runs it, with its line for episodes.csv.
+EpisodeLine RunEpisode(const Suite& suite, const RowSpec& row, const WorldSource& world,
+                       RowInstance& instance, int episode_index) {
+  EpisodeLine line;
+  line.row = row.label;
+  line.episode = episode_index;
+  ScenarioRequest req;
+  const Scenario scenario = MakeEpisodeScenario(suite, row, world, episode_index, &req);
+  Episode episode(scenario, suite.sim, instance.Agents(scenario.humans.size()));
+  const EpisodeResult& result = episode.Run();
+  line.seed = req.seed;
+  line.layout = scenario.layout;
+  line.outcome = result;
+  return line;
+}
+
+/// Where finished episodes go: appended to episodes.csv (EpisodeAppender: written within
+/// `max_delay`, at once when zero), counted on the progress line and added to `done`. Not
+/// thread-safe.
+class EpisodeSink {
+ public:
+  EpisodeSink(const fs::path& episodes_csv, std::chrono::milliseconds max_delay, Progress& progress,
+              EpisodeLines* done)
+      : path_(episodes_csv), out_(episodes_csv, max_delay), progress_(progress), done_(done) {}
+
+  /// False when the append failed (a full disk or a lost mount: the run stops, naming the
+  /// cause in *why; the lines written so far stay, a cut last line is skipped on resume).
+  bool Add(EpisodeLine line, std::string* why) {
+    if (!out_.Append(FormatEpisodeLine(line), why)) return false;
+    progress_.Episode(line.outcome.status == EpisodeStatus::kSuccess);
+    (*done_)[{line.row, line.episode}] = std::move(line);
+    return true;
+  }
+
+  /// Writes the pending lines and ends the progress line; throws RunError with `failure`
+  /// (or the failed write) when the run stopped early.
+  void Finish(std::string failure) {
+    std::string why;
+    if (!out_.Finish(&why) && failure.empty()) failure = why;
+    progress_.Finish();
+    if (!failure.empty()) {
+      throw RunError(failure + " (finished episodes are kept in " + path_.string() +
+                     "; rerun to resume)");
+    }
+  }
+
+ private:
+  fs::path path_;
+  EpisodeAppender out_;
+  Progress& progress_;
+  EpisodeLines* done_;
+};
+
+// The failure of a run whose RunOptions::stop_requested said stop.
+constexpr const char* kStopped = "stopped on request";
+
+std::string Where(const RowSpec& row, int episode) {
+  return "row '" + row.label + "', episode " + std::to_string(episode);
+}
+
+/// Runs the tasks on `jobs` threads, each with its own plugin instances. Throws RunError
+/// naming the row and episode of the first failure, or the reason an append failed.
+void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
+                       const std::vector<std::shared_ptr<WorldSource>>& worlds,
+                       const std::vector<Task>& tasks, int jobs,
+                       const std::function<bool()>& stop_requested, EpisodeSink& sink) {
+  std::mutex mutex;
+  std::atomic<size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::string failure;
+  auto worker = [&]() {
+    std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());
+    while (!failed) {
+      if (stop_requested && stop_requested()) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failed) failure = kStopped;
+        failed = true;
+        break;
+      }
+      const size_t t = next.fetch_add(1);
+      if (t >= tasks.size()) break;
+      const Task task = tasks[t];
+      const RowSpec& row = suite.rows[task.row];
+      EpisodeLine line;
+      try {
+        auto& inst = instances[task.row];
+        if (!inst) inst = std::make_unique<RowInstance>(row, registry);
+        line = RunEpisode(suite, row, *worlds[task.row], *inst, task.episode);
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failed) failure = Where(row, task.episode) + ": " + e.what();
+        failed = true;
+        break;
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      std::string why;
+      if (!sink.Add(std::move(line), &why)) {
+        if (!failed) failure = why;
+        failed = true;
+        break;
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& th : threads) th.join();
+  sink.Finish(failure);
+}
+
+/// The plugins a crash of `row` is laid to: those not of the harness (loaded by path or from
+/// CROWDSIM_PLUGIN_PATH), or the robot's policy when all are the harness's own.
+std::string Suspects(const RowSpec& row) {
+  auto name = [](const std::string& role, const PluginUse& u) {
+    return role + " '" + std::string(u.loaded->descriptor->name) + "' (" + u.loaded->path.string() +
+           ")";
+  };
+  std::string named;
+  for (const auto& [role, use] : RowPlugins(row)) {
+    if (!PluginRegistry::IsHarnessPlugin(*use->loaded))
+      named += (named.empty() ? "" : ", ") + name(role, *use);
+  }
+  return named.empty() ? name("policy", row.policy) : named;
+}
+
+/// The line of an episode whose worker died or was killed: no result, its own status.
+EpisodeLine LostEpisodeLine(const Suite& suite, const RowSpec& row, const WorldSource& world,
+                            int episode, const WorkerLoss& loss) {
+  EpisodeLine line;
+  line.row = row.label;
+  line.episode = episode;
+  line.seed = MakeEpisodeRequest(suite, row, world, episode).seed;
+  line.outcome.status = loss.kind == WorkerLoss::Kind::kTimeout ? EpisodeStatus::kPolicyTimeout
+                                                                : EpisodeStatus::kPolicyCrash;
+  line.outcome.error = "worker process " + loss.Describe() + " while running " + Suspects(row);
+  return line;
+}
+
+/// Runs the tasks in `jobs` worker processes (worker_process.h): an episode whose worker dies
+/// or runs past the suite's episode_timeout_s is recorded as policy_crash / policy_timeout,
+/// named on stderr, and the run goes on. Throws RunError as RunTasksInThreads does, and when a
+/// worker was stopped from outside (SIGINT, SIGTERM, SIGHUP).
+void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
+                         const std::vector<std::shared_ptr<WorldSource>>& worlds,
+                         const std::vector<Task>& tasks, int jobs,
+                         const std::function<bool()>& stop_requested, EpisodeSink& sink) {
+  std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());  // a worker's own
+  std::string failure;
+  WorkerPoolCallbacks callbacks;
+  callbacks.run = [&](size_t t) -> std::string {
+    const Task task = tasks[t];
+    const RowSpec& row = suite.rows[task.row];
+    try {
+      auto& inst = instances[task.row];
+      if (!inst) inst = std::make_unique<RowInstance>(row, registry);
+      std::string bytes = "L";
+      bytes += EncodeEpisodeLine(RunEpisode(suite, row, *worlds[task.row], *inst, task.episode));
+      return bytes;
+    } catch (const std::exception& e) {
+      return "E" + Where(row, task.episode) + ": " + e.what();
+    }
+  };
+  callbacks.done = [&](size_t, const std::string& bytes) {
+    if (bytes.starts_with("E")) {
+      failure = bytes.substr(1);
+      return false;
+    }
+    if (!sink.Add(DecodeEpisodeLine(std::string_view(bytes).substr(1)), &failure)) return false;
+    if (stop_requested && stop_requested()) {
+      failure = kStopped;
+      return false;
+    }
+    return true;
+  };
+  callbacks.lost = [&](size_t t, const WorkerLoss& loss) {
+    const Task task = tasks[t];
+    const RowSpec& row = suite.rows[task.row];
+    if (loss.Interrupted()) {
+      failure = Where(row, task.episode) + ": its worker process was " + loss.Describe() +
+                " from outside the run";
+      return false;
+    }
+    EpisodeLine line = LostEpisodeLine(suite, row, *worlds[task.row], task.episode, loss);
+    std::fprintf(stderr, "%s (rows[%d]): %s; recorded as %s, the run goes on\n",
+                 Where(row, task.episode).c_str(), task.row, line.outcome.error.c_str(),
+                 EpisodeStatusName(line.outcome.status));
+    return sink.Add(std::move(line), &failure);
+  };
+  WorkerPoolOptions options;
+  options.workers = jobs;
+  options.task_timeout_s = suite.episode_timeout_s;
+  try {
+    RunInWorkerProcesses(tasks.size(), options, callbacks);
+  } catch (const std::runtime_error& e) {
+    failure = e.what();
+  }
+  sink.Finish(failure);
+}
+
+/// Whether this run's episodes run in worker processes: the suite's `isolation` (or the run's
+/// override); auto = when a timeout is set or a plugin is not one of the harness's own.
+bool Isolated(const Suite& suite, const RunOptions& options) {
+  const IsolationMode mode = options.isolation.value_or(suite.isolation);
+  if (mode == IsolationMode::kOff && suite.episode_timeout_s > 0) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%g", suite.episode_timeout_s);
+    throw RunError("suite '" + suite.name + "' (" + suite.file.string() +
+                   ") sets episode_timeout_s " + seconds +
+                   " but the run's isolation is off; a timeout needs isolated episodes: drop the "
+                   "isolation override or the timeout");
+  }
+  return std::any_of(suite.rows.begin(), suite.rows.end(),
+                     [&](const RowSpec& row) { return RowNeedsIsolation(suite, row, mode); });
+}
+
+/// A shard's files: its episodes in (row, episode) order and a manifest naming the shard; the
+/// tables come from `merge`.
+void WriteShardFiles(const Suite& suite, const RunScope& scope, const EpisodeLines& done,
+                     const RunFacts& facts, RunSummary* summary) {
+  std::vector<const EpisodeLine*> lines;
+  for (size_t r = 0; r < suite.rows.size(); ++r) {
+    for (int k = 0; k < scope.episodes; ++k) {
+      if (scope.Covers(r, k)) lines.push_back(&done.at({suite.rows[r].label, k}));
+    }
+  }
+  WriteFileAtomically(summary->out_dir / "episodes.csv", EpisodesCsvText(lines));
+  WriteFileAtomically(summary->out_dir / "manifest.json", FormatManifestJson(suite, {}, facts));
+  summary->table_markdown = "shard " + facts.shard + " of suite " + suite.name + ": " +
+                            std::to_string(summary->episodes_resumed + summary->episodes_run) +
+                            " episodes; join the shards with `crowdsim-bench merge`\n";
+}
+
+/// A whole run's files: episodes in (row, episode) order, so any job count gives the same file
+/// (stored episodes beyond the requested count kept for a later, longer run), the tables and
+/// the manifest.
+void WriteRunFiles(const Suite& suite, const RunScope& scope, const EpisodeLines& done,
+                   const RunFacts& facts, RunSummary* summary) {
+  std::vector<const EpisodeLine*> lines;
+  std::set<std::string> labels;
+  for (const auto& row : suite.rows) {
+    std::vector<EpisodeOutcome> records;
+    for (int k = 0; k < scope.episodes; ++k) {
+      const EpisodeLine& line = done.at({row.label, k});
+      lines.push_back(&line);
+      records.push_back(line.outcome);
+    }
+    labels.insert(row.label);
+    summary->rows.push_back(TableRow{&row, Aggregate(records, suite.sim.time_limit)});
+  }
+  for (const auto& [key, line] : done) {
+    if (labels.count(key.first) && key.second >= scope.episodes) lines.push_back(&line);
+  }
+  WriteFileAtomically(summary->out_dir / "episodes.csv", EpisodesCsvText(lines));
+  AddSummaryLines(suite, &summary->rows);
+  summary->table_markdown = FormatTableMarkdown(suite, summary->rows);
+  WriteFileAtomically(summary->out_dir / "table.md", summary->table_markdown);
+  WriteFileAtomically(summary->out_dir / "table.csv", FormatTableCsv(suite, summary->rows));
+  WriteFileAtomically(summary->out_dir / "manifest.json",
+                      FormatManifestJson(suite, summary->rows, facts));
+}
+
+}  // namespace
+
+RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const RunScope scope = MakeScope(suite, options);
+  RunFacts facts;
+  facts.started_utc = NowUtc();
+  facts.jobs = std::max(1, options.jobs);
+  facts.episodes = scope.episodes;
+  facts.isolated = Isolated(suite, options);
+  facts.merged = options.merge;
+  if (scope.shards > 1)
+    facts.shard = std::to_string(scope.shard_index) + "/" + std::to_string(scope.shards);
+
+  RunSummary summary;
+  // Before the folder is made.
+  const auto worlds =
+      PreflightRows(suite, registry, &facts, options.isolation.value_or(suite.isolation));
+  summary.out_dir = PrepareOutDir(suite, options);
+  std::string refused;
+  const auto lock = options.out_dir_claimed
+                        ? nullptr
+                        : ClaimOutputFolder(summary.out_dir, "a suite run", &refused);
+  if (!lock && !options.out_dir_claimed) throw RunRefused(refused);
+  if (options.fresh) {
+    // --fresh discards the stored results, those set aside by earlier reruns with them.
+    std::error_code ec;
+    fs::remove(summary.out_dir / "episodes.dropped.csv", ec);
+  }
+  EpisodeLines done =
+      options.fresh ? EpisodeLines{}
+                    : StoredEpisodes(suite, worlds, {summary.out_dir, facts.shard, scope.episodes},
+                                     options.progress);
+  // Rewrite the stored lines cleanly (drops a line cut short by a crash), then append.
+  std::vector<const EpisodeLine*> stored;
+  for (const auto& [key, line] : done) stored.push_back(&line);
+  WriteFileAtomically(summary.out_dir / "episodes.csv", EpisodesCsvText(stored));
+  WriteFileAtomically(summary.out_dir / "manifest.json", FormatManifestJson(suite, {}, facts));
+  // Until this run finishes, no table: an earlier run's (another configuration, or fewer
+  // episodes) would be read as this folder's result if the run is cut short. A shard never
+  // writes one.
+  std::error_code ec;
+  fs::remove(summary.out_dir / "table.md", ec);
+  fs::remove(summary.out_dir / "table.csv", ec);
+
+  const std::vector<Task> tasks = PendingTasks(suite, scope, done, &summary.episodes_resumed);
+  // A shard's counts are its slice's: the line says whose (an MPI rank's line, rank 0's).
+  Progress progress(scope.shards > 1 ? suite.name + " shard " + facts.shard : suite.name,
+                    static_cast<int>(tasks.size()) + summary.episodes_resumed,
+                    summary.episodes_resumed, options.progress);
+  // Threads: lines written within 200 ms (a crash loses at most that). Worker processes
+  // already pay a pipe round trip per episode: each line written at once, and no thread of
+  // ours alive when the workers are forked.
+  EpisodeSink sink(
+      summary.out_dir / "episodes.csv",
+      facts.isolated ? std::chrono::milliseconds(0) : EpisodeAppender::kThreadedRunDelay, progress,
+      &done);
+  if (facts.isolated) {
+    RunTasksInProcesses(suite, registry, worlds, tasks, facts.jobs, options.stop_requested, sink);
+  } else {
+    RunTasksInThreads(suite, registry, worlds, tasks, facts.jobs, options.stop_requested, sink);
+  }
+  summary.episodes_run = static_cast<int>(tasks.size());
+  summary.policy_errors = PolicyErrorNotes(suite, done);
+
+  facts.finished_utc = NowUtc();
+  facts.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  if (scope.shards > 1) {
+    WriteShardFiles(suite, scope, done, facts, &summary);
+  } else {
+    WriteRunFiles(suite, scope, done, facts, &summary);
+  }
+  return summary;
+}
+
+void FlushPendingEpisodesForSignal() noexcept { EpisodeAppender::FlushForSignal(); }
+
+}  // namespace crowdsim

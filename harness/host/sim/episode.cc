@@ -1,0 +1,447 @@
+#include "crowdsim/bench/episode.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include "crowdsim/rng.h"
+#include "sim/decision_clock.h"
+
+namespace crowdsim {
+
+namespace {
+// A plugin that throws something not derived from std::exception (`throw 42;`) gets the same
+// policy_error as any other throw, instead of std::terminate ending the whole run.
+constexpr const char* kNonStandardException =
+    "threw an exception not derived from std::exception (e.g. `throw 42;`); throw a "
+    "std::runtime_error with a message instead";
+}  // namespace
+
+const char* EpisodeStatusName(EpisodeStatus s) {
+  switch (s) {
+    case EpisodeStatus::kRunning:
+      return "running";
+    case EpisodeStatus::kSuccess:
+      return "success";
+    case EpisodeStatus::kCollisionHuman:
+      return "collision_human";
+    case EpisodeStatus::kCollisionObstacle:
+      return "collision_obstacle";
+    case EpisodeStatus::kTimeout:
+      return "timeout";
+    case EpisodeStatus::kPolicyError:
+      return "policy_error";
+    case EpisodeStatus::kPolicyCrash:
+      return "policy_crash";
+    case EpisodeStatus::kPolicyTimeout:
+      return "policy_timeout";
+  }
+  return "unknown";
+}
+
+/// The episode's lookahead for the current step: human actions are already decided (they do
+/// not depend on the robot's choice), so every candidate sees the same next crowd.
+class Episode::StepLookahead final : public Lookahead {
+ public:
+  explicit StepLookahead(const Episode& e) : e_(e) {}
+
+  void Prepare() {
+    next_humans_.assign(e_.humans_.begin(), e_.humans_.end());
+    for (size_t i = 0; i < next_humans_.size(); ++i) {
+      next_humans_[i].velocity = e_.human_actions_[i].velocity;
+      next_humans_[i].position += e_.human_actions_[i].velocity * e_.sim_.time_step;
+    }
+  }
+
+  std::span<const AgentState> NextHumans() const override { return next_humans_; }
+
+  void Evaluate(std::span<const Action> actions,
+                std::vector<LookaheadOutcome>* out) const override {
+    out->resize(actions.size());
+    const double time_after = e_.time_ + e_.sim_.time_step;
+    for (size_t k = 0; k < actions.size(); ++k) {
+      LookaheadOutcome& o = (*out)[k];
+      const Vec2& v = actions[k].velocity;
+      const StepJudgement j =
+          JudgeRobotMove(e_.sim_, e_.world_, e_.robot_, v, e_.humans_, time_after);
+      o.reward = j.reward;
+      o.event = j.event;
+      o.robot = e_.robot_;
+      o.robot.position += v * e_.sim_.time_step;
+      o.robot.velocity = v;
+      o.robot.heading = HeadingToGoal(o.robot);
+      o.frame = Frame::Make(o.robot.position, o.robot.heading);
+      e_.Sense(o.robot, o.frame, next_humans_, &o.readings);
+    }
+  }
+
+ private:
+  const Episode& e_;
+  std::vector<AgentState> next_humans_;
+};
+
+namespace {
+
+// Who decided an action, for the error message: "human i's policy", or the robot's (-1). The
+// name is only spelled out when the check fails (a string per agent per step was a heap
+// allocation: "human 0's policy" is longer than the short-string buffer).
+std::string PolicyName(int human) {
+  return human < 0 ? std::string("the robot's policy")
+                   : "human " + std::to_string(human) + "'s policy";
+}
+
+// A policy's decision, a failure named with whose policy it is ("human 1's policy failed: ...",
+// "the robot's policy failed: ..."): a plugin's own message does not say which agent's policy
+// threw, nor that it was a policy. AbortRun passes through: it stops the whole run.
+Action DecideNamed(Policy& policy, const Observation& obs, int human) {
+  try {
+    return policy.Decide(obs);
+  } catch (const AbortRun&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(PolicyName(human) + " failed: " + e.what());
+  } catch (...) {
+    throw std::runtime_error(PolicyName(human) + " failed: " + kNonStandardException);
+  }
+}
+
+[[gnu::noinline, gnu::cold]] void ThrowTooFast(const Vec2& velocity, double v_pref, int human) {
+  const double speed = velocity.norm();
+  const double limit = kMaxSpeedFactor * v_pref;
+  // Four digits, or as many as tell the speed from the limit ("returned 10 m/s, more than 10 x
+  // v_pref (10 m/s)" read as if an allowed speed had been refused).
+  int digits = 4;
+  for (char a[32], b[32]; digits < 17; ++digits) {
+    std::snprintf(a, sizeof(a), "%.*g", digits, speed);
+    std::snprintf(b, sizeof(b), "%.*g", digits, limit);
+    if (std::strcmp(a, b) != 0) break;
+  }
+  char buf[200];
+  std::snprintf(buf, sizeof(buf),
+                " returned %.*g m/s, more than %.0f x v_pref (%.*g m/s): an action is "
+                "the velocity for the next step, in m/s",
+                digits, speed, kMaxSpeedFactor, digits, limit);
+  throw std::runtime_error(PolicyName(human) + buf);
+}
+
+inline void CheckSpeed(const Vec2& velocity, double v_pref, int human) {
+  // Nearly every action is well below the limit: squares decide those without a square root.
+  if (NormAbove(velocity, kMaxSpeedFactor * v_pref)) ThrowTooFast(velocity, v_pref, human);
+}
+
+}  // namespace
+
+void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
+  // Spelled out only for an error (a string built per episode was a heap allocation).
+  const auto where = [&scenario] {
+    return "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) + ": ";
+  };
+  auto text = [](const Vec2& p) {
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "(%.3f, %.3f)", p.x(), p.y());
+    return std::string(buf);
+  };
+  if (!scenario.robot_start.allFinite() || !scenario.robot_goal.allFinite()) {
+    throw std::invalid_argument(where() + "the robot's start or goal is not a finite point");
+  }
+  if ((scenario.robot_goal - scenario.robot_start).norm() <= sim.goal_radius) {
+    throw std::invalid_argument(
+        where() + "the robot starts at its goal " + text(scenario.robot_goal) +
+        " (within goal_radius): the episode would be a success without a move");
+  }
+  if (!scenario.map) return;
+  const StaticMap& map = *scenario.map;
+  // A disc that starts in an obstacle collides at its first step, whatever its policy does.
+  // `human`: its index, or -1 for the robot (named only for an error).
+  auto overlap = [&](const Vec2& p, double radius, int human) {
+    for (std::size_t k = 0; k < map.rectangles.size(); ++k) {
+      const Rect& r = map.rectangles[k];
+      const Vec2 gap(std::max({r.min.x() - p.x(), 0.0, p.x() - r.max.x()}),
+                     std::max({r.min.y() - p.y(), 0.0, p.y() - r.max.y()}));
+      const double distance = gap.norm();
+      if (distance < radius - kStartOverlapTolerance) {
+        char buf[96];
+        std::snprintf(buf, sizeof(buf), " is %.3f m from obstacle %zu, less than its radius %.3f m",
+                      distance, k, radius);
+        const std::string who = human < 0 ? std::string("the robot's start")
+                                          : "human " + std::to_string(human) + "'s start";
+        throw std::invalid_argument(where() + who + " " + text(p) + buf +
+                                    ": the world must start agents in free space");
+      }
+    }
+  };
+  for (const auto& [name, p] :
+       {std::pair{"start", scenario.robot_start}, std::pair{"goal", scenario.robot_goal}}) {
+    if (map.bounds.Area() > 0.0 && !map.bounds.Contains(p)) {
+      throw std::invalid_argument(where() + "the robot's " + name + " " + text(p) +
+                                  " lies outside the map");
+    }
+    for (std::size_t k = 0; k < map.rectangles.size(); ++k) {
+      const Rect& r = map.rectangles[k];
+      if (p.x() > r.min.x() && p.x() < r.max.x() && p.y() > r.min.y() && p.y() < r.max.y()) {
+        throw std::invalid_argument(where() + "the robot's " + name + " " + text(p) +
+                                    " lies inside obstacle " + std::to_string(k));
+      }
+    }
+  }
+  overlap(scenario.robot_start, sim.robot_radius, -1);
+  for (std::size_t i = 0; i < scenario.humans.size(); ++i) {
+    overlap(scenario.humans[i].start, scenario.humans[i].radius, static_cast<int>(i));
+  }
+}
+
+void CheckHumanCount(const ScenarioRequest& request, const Scenario& scenario) {
+  if (static_cast<int>(scenario.humans.size()) == request.num_humans) return;
+  throw std::invalid_argument(
+      "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) +
+      ": the world made " + std::to_string(scenario.humans.size()) + " human(s) where " +
+      std::to_string(request.num_humans) +
+      " were asked for (the row's humans.count): a world must place every human it is asked "
+      "for, or fail saying why");
+}
+
+Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAgents& agents,
+                 bool record_trajectory)
+    : scenario_(scenario),
+      sim_(sim),
+      agents_(agents),
+      world_(scenario.map),
+      record_(record_trajectory) {
+  if (agents_.robot == nullptr) throw std::invalid_argument("episode needs a robot policy");
+  if (agents_.humans.size() < scenario_.humans.size()) {
+    throw std::invalid_argument("episode needs one human policy per human");
+  }
+  CheckScenario(scenario_, sim_);
+  robot_.position = scenario_.robot_start;
+  robot_.goal = scenario_.robot_goal;
+  robot_.radius = sim_.robot_radius;
+  robot_.v_pref = sim_.robot_v_pref;
+  robot_.heading = HeadingToGoal(robot_);
+  humans_.reserve(scenario_.humans.size());
+  for (const auto& h : scenario_.humans) {
+    AgentState s;
+    s.position = h.start;
+    s.goal = h.goals.empty() ? h.start : h.goals.front();
+    s.radius = h.radius;
+    s.v_pref = h.v_pref;
+    s.heading = HeadingToGoal(s);
+    humans_.push_back(s);
+  }
+  human_goal_index_.assign(humans_.size(), 0);
+  human_reached_.assign(humans_.size(), false);
+  human_actions_.resize(humans_.size());
+  lookahead_ = std::make_unique<StepLookahead>(*this);
+
+  robot_needs_ = agents_.robot->Needs();
+  human_needs_.reserve(humans_.size());
+  for (size_t i = 0; i < humans_.size(); ++i) human_needs_.push_back(agents_.humans[i]->Needs());
+
+  try {
+    // The map reaches only the policies that declare they need it.
+    const StaticMap* map = scenario_.map.get();
+    EpisodeContext ctx{robot_needs_.map ? map : nullptr, sim_, AgentRole::kRobot,
+                       SplitMix64(scenario_.seed), 0};
+    agents_.robot->Reset(ctx);
+    for (size_t i = 0; i < humans_.size(); ++i) {
+      ctx.map = human_needs_[i].map ? map : nullptr;
+      ctx.role = AgentRole::kHuman;
+      ctx.agent_id = static_cast<int>(i) + 1;
+      ctx.seed = SplitMix64(scenario_.seed + i + 1);
+      agents_.humans[i]->Reset(ctx);
+    }
+  } catch (const AbortRun&) {
+    throw;  // the whole run stops: no result for this episode
+  } catch (const std::exception& e) {
+    result_.error = std::string("Reset failed: ") + e.what();
+    Finish(EpisodeStatus::kPolicyError);
+  } catch (...) {
+    result_.error = std::string("Reset failed: a policy ") + kNonStandardException;
+    Finish(EpisodeStatus::kPolicyError);
+  }
+  Record();
+}
+
+Episode::~Episode() = default;
+
+void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
+                    std::vector<SensorReading>* out) const {
+  const std::span<const MountedSensor> sensors = agents_.sensors;
+  out->resize(sensors.size());
+  const SenseInput input{robot, frame, humans, world_};
+  for (size_t s = 0; s < sensors.size(); ++s) {
+    SensorReading& r = (*out)[s];
+    // The readings are reused step after step: most already carry the name (a copy was a call).
+    if (r.sensor != sensors[s].name) r.sensor = sensors[s].name;
+    try {
+      sensors[s].sensor->Sense(input, &r);
+    } catch (const AbortRun&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw std::runtime_error("sensor '" + r.sensor + "' failed: " + e.what());
+    } catch (...) {
+      throw std::runtime_error("sensor '" + r.sensor + "' failed: " + kNonStandardException);
+    }
+  }
+}
+
+void Episode::DecideHumans() {
+  // Humans see each other (and the robot when it is visible) through a neighbour index.
+  human_view_.assign(humans_.begin(), humans_.end());
+  if (sim_.robot_visible) human_view_.push_back(robot_);
+  human_index_.Rebuild(human_view_);
+  human_obs_.time = time_;
+  human_obs_.agents = &human_index_;
+  // The count read once: DecideHuman changes no size, but the compiler cannot know that.
+  const int count = static_cast<int>(humans_.size());
+  for (int i = 0; i < count; ++i) DecideHuman(i);
+}
+
+void Episode::DecideHuman(int i) {
+  // Next goal of a goal sequence once this one is reached.
+  AgentState& h = humans_[i];
+  const auto& goals = scenario_.humans[i].goals;
+  if (NormBelow(h.position - h.goal, h.radius)) {
+    human_reached_[i] = true;
+    if (human_goal_index_[i] + 1 < goals.size()) h.goal = goals[++human_goal_index_[i]];
+  }
+  human_obs_.self = h;
+  human_obs_.frame = human_needs_[i].heading_frame ? Frame::Make(h.position, HeadingToGoal(h))
+                                                   : Frame{.origin = h.position};
+  human_obs_.self_index = i;
+  human_actions_[i] = DecideNamed(*agents_.humans[i], human_obs_, i);
+  if (!human_actions_[i].velocity.allFinite()) {
+    throw std::runtime_error(PolicyName(i) + " returned a non-finite velocity");
+  }
+  CheckSpeed(human_actions_[i].velocity, h.v_pref, i);
+}
+
+void Episode::FillRobotObservation() {
+  robot_.heading = HeadingToGoal(robot_);
+  robot_obs_.time = time_;
+  robot_obs_.self = robot_;
+  robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
+  Sense(robot_, robot_obs_.frame, humans_, &robot_obs_.readings);
+  robot_obs_.lookahead = nullptr;
+}
+
+const Observation& Episode::ObserveRobot() {
+  if (!robot_obs_current_) FillRobotObservation();
+  robot_obs_.lookahead = nullptr;
+  robot_obs_current_ = true;
+  return robot_obs_;
+}
+
+StepInfo Episode::Step() {
+  StepInfo info;
+  if (done()) return info;
+  const double dt = sim_.time_step;
+  try {
+    DecideHumans();
+    // Sensing sees positions, velocities and radii only, which deciding does not change: an
+    // observation made by ObserveRobot since the last move is this step's (no second scan).
+    if (!robot_obs_current_) FillRobotObservation();
+    robot_obs_current_ = false;  // the move below changes what the robot would see
+    if (robot_needs_.lookahead) {
+      lookahead_->Prepare();
+      robot_obs_.lookahead = lookahead_.get();
+    } else {
+      robot_obs_.lookahead = nullptr;
+    }
+    const std::uint64_t t0 = DecisionClock::Now();
+    info.robot_action = DecideNamed(*agents_.robot, robot_obs_, -1);
+    decision_ticks_ += DecisionClock::Now() - t0;
+    if (!info.robot_action.velocity.allFinite()) {
+      throw std::runtime_error(PolicyName(-1) + " returned a non-finite velocity");
+    }
+    CheckSpeed(info.robot_action.velocity, robot_.v_pref, -1);
+  } catch (const AbortRun&) {
+    throw;  // the whole run stops: no result for this episode
+  } catch (const std::exception& e) {
+    result_.error = e.what();
+    Finish(EpisodeStatus::kPolicyError);
+    return info;
+  } catch (...) {
+    result_.error = PolicyName(-1) + " " + kNonStandardException;
+    Finish(EpisodeStatus::kPolicyError);
+    return info;
+  }
+
+  // Check (on the pre-move state, CrowdNav's order), then move everybody at once.
+  const double time_after = (step_index_ + 1) * dt;
+  const StepJudgement j =
+      JudgeRobotMove(sim_, world_, robot_, info.robot_action.velocity, humans_, time_after);
+  info.event = j.event;
+  info.reward = j.reward;
+  info.min_human_distance = j.min_human_distance;
+  result_.collided_human = j.human;
+  result_.collided_rect = j.rect;
+
+  const Vec2& v = info.robot_action.velocity;
+  robot_.position += v * dt;
+  robot_.velocity = v;
+  result_.path_length += v.norm() * dt;
+  result_.max_speed = std::max(result_.max_speed, v.norm());
+  for (size_t i = 0; i < humans_.size(); ++i) {
+    humans_[i].velocity = human_actions_[i].velocity;
+    humans_[i].position += human_actions_[i].velocity * dt;
+  }
+
+  // Record.
+  // Most steps earn nothing: their term is +0, and adding it changes no sum (the sum starts
+  // at +0 and a non-zero term never makes it -0), so the pow is taken only for a reward.
+  if (info.reward != 0.0) {
+    result_.discounted_return +=
+        std::pow(sim_.gamma, step_index_ * dt * sim_.robot_v_pref) * info.reward;
+  }
+  result_.min_human_distance = std::min(result_.min_human_distance, j.min_human_distance);
+  if (j.event == StepEvent::kDanger) ++result_.danger_steps;
+  ++step_index_;
+  time_ = step_index_ * dt;
+  Record();
+  switch (j.event) {
+    case StepEvent::kSuccess:
+      Finish(EpisodeStatus::kSuccess);
+      break;
+    case StepEvent::kCollisionHuman:
+      Finish(EpisodeStatus::kCollisionHuman);
+      break;
+    case StepEvent::kCollisionObstacle:
+      Finish(EpisodeStatus::kCollisionObstacle);
+      break;
+    case StepEvent::kTimeout:
+      Finish(EpisodeStatus::kTimeout);
+      break;
+    default:
+      break;
+  }
+  return info;
+}
+
+const EpisodeResult& Episode::Run() {
+  while (!done()) Step();
+  return result_;
+}
+
+void Episode::Finish(EpisodeStatus status) {
+  result_.status = status;
+  result_.time = time_;
+  result_.steps = step_index_;
+  result_.decision_time_us =
+      step_index_ > 0 ? DecisionClock::Microseconds(decision_ticks_) / step_index_ : 0.0;
+  int at_goal = 0;
+  for (size_t i = 0; i < humans_.size(); ++i) {
+    if (human_reached_[i] || NormBelow(humans_[i].position - humans_[i].goal, humans_[i].radius)) {
+      ++at_goal;
+    }
+  }
+  result_.humans_at_goal = at_goal;
+}
+
+void Episode::Record() {
+  if (!record_) return;
+  result_.trajectory.push_back(EpisodeFrame{time_, robot_, humans_});
+}
+
+}  // namespace crowdsim

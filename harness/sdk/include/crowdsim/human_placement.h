@@ -1,0 +1,105 @@
+// Where the humans of a scenario start and where they walk to: shared by every world plugin
+// that places people in free space (random rooms, floor plans).
+//
+// The caller provides the free space (a predicate) and a way to draw candidate points; the
+// placement only adds the social rules (separation, goal distance) and bounded retries.
+// Reachability is the caller's promise: the free space must be one connected region for the
+// disc (random layouts reject disconnected rooms, floor plans keep their largest component).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "crowdsim/export.h"
+#include "crowdsim/rng.h"
+#include "crowdsim/scenario.h"
+#include "crowdsim/static_map.h"
+#include "crowdsim/world_source.h"
+
+namespace crowdsim {
+
+/// Placement failed (the room is too small for the request); what() says what and the fix.
+class CROWDSIM_SDK_API PlacementError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Points where a disc of `clearance` fits: inside the bounds and touching no rectangle.
+class CROWDSIM_SDK_API DiscFreeSpace {
+ public:
+  /// `clearance` is the agent radius plus any safety margin (m, >= 0).
+  DiscFreeSpace(std::shared_ptr<const StaticMap> map, double clearance);
+  /// True if the disc centred at `p` lies inside the bounds and overlaps no rectangle.
+  bool Contains(const Vec2& p) const;
+  /// The clearance this space was built with (m).
+  double clearance() const { return clearance_; }
+
+ private:
+  std::shared_ptr<const StaticMap> map_;
+  double clearance_;
+  Rect inner_;               // where the disc's centre keeps inside the bounds
+  std::vector<Rect> reach_;  // each rectangle grown by the clearance (and a hair): the
+                             // points outside it cannot touch the rectangle
+};
+
+/// Candidate points for starts and goals; the placement filters them with the predicate.
+using PointSampler = std::function<Vec2(Rng&)>;
+
+/// Uniform candidates in `region` (rooms generated from rectangles).
+CROWDSIM_SDK_API PointSampler UniformSampler(const Rect& region);
+/// Candidates drawn uniformly from a fixed list (floor plans' free points); `points` non-empty.
+CROWDSIM_SDK_API PointSampler ListSampler(std::vector<Vec2> points);
+
+/// Free space and candidate points of one world.
+struct CROWDSIM_SDK_API PlacementArea {
+  std::function<bool(const Vec2&)> is_free;  ///< true where a human's centre may stand
+  PointSampler sample;                       ///< candidate centres
+  /// Optional, stricter rule for goals: where a human may stop without closing a passage
+  /// (a human who stays on its goal must leave room for another to pass). Relaxed to
+  /// `is_free` over the second half of the tries when the world has too little such room.
+  std::function<bool(const Vec2&)> is_goal_free;
+  /// Optional (zero area: none): a rectangle holding the whole free space. When `sample` gives
+  /// no place for a point within max_tries (a floor plan's list of free points is used up
+  /// long before its floor is full), candidates are then drawn uniformly from it for as many
+  /// tries again; and a failure's message gives the crowd's density in the free space.
+  Rect region;
+};
+
+/// The worlds' default `passage_padding` (m): 0.01, the radius padding CrowdNav's ORCA humans use.
+inline constexpr double kDefaultPassagePadding = 0.01;
+
+/// Centre clearance from obstacles that leaves room for another human to pass a human
+/// standing there: its own radius plus a passer's diameter, each radius plus `padding` (the
+/// world's `passage_padding` parameter).
+CROWDSIM_SDK_API double PassableGoalClearance(double human_radius, double padding);
+
+/// The rules of human placement (defaults: paper settings).
+struct CROWDSIM_SDK_API HumanPlacementOptions {
+  double human_radius = 0.3;     ///< m
+  double human_v_pref = 1.0;     ///< m/s
+  double robot_radius = 0.3;     ///< m
+  double discomfort_dist = 0.2;  ///< m; extra gap between agents' discs at start and at goal
+  double goal_min_dist = 3.0;    ///< m; a goal's distance from the previous point, if room allows
+  int new_goal_count = 16;       ///< goals per human in HumanGoalMode::kNewGoal (>= 1)
+  int max_tries = 2000;          ///< candidate draws per point before giving up (>= 1)
+
+  /// Options from a request's radii, speeds and discomfort distance (other fields default).
+  static HumanPlacementOptions FromRequest(const ScenarioRequest& request);
+};
+
+/// Places request.num_humans humans: starts and goals in free space; starts at least
+/// 2 r_h + discomfort_dist apart and r_h + r_robot + discomfort_dist from the robot's start;
+/// goals likewise from each other (goal k against goal k) and from the robot's goal; each goal
+/// at least goal_min_dist from the point before it and where area.is_goal_free holds (if
+/// set), both relaxed over the second half of the tries when the room is too small. kStay gives one
+/// goal, kNewGoal new_goal_count goals. Candidates come from area.sample, then (for a point it
+/// gives no place) from area.region if set. Deterministic for a given rng state. Throws
+/// PlacementError when a point cannot be placed, with the density when area.region is set.
+CROWDSIM_SDK_API std::vector<HumanSpec> PlaceHumans(const PlacementArea& area,
+                                                    const Vec2& robot_start, const Vec2& robot_goal,
+                                                    const ScenarioRequest& request,
+                                                    const HumanPlacementOptions& options, Rng& rng);
+
+}  // namespace crowdsim

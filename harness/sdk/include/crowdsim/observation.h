@@ -1,0 +1,59 @@
+// What a policy sees at one step.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "crowdsim/agent_state.h"
+#include "crowdsim/export.h"
+#include "crowdsim/sim_config.h"
+#include "crowdsim/static_map.h"
+
+namespace crowdsim {
+
+class AgentIndex;
+class Lookahead;
+
+/// One person seen by a person sensor, in the sensor frame (x towards the robot's goal).
+struct CROWDSIM_SDK_API PersonObservation {
+  Vec2 position = Vec2::Zero();
+  Vec2 velocity = Vec2::Zero();
+  double radius = 0.3;
+};
+
+/// The output of one sensor. A person sensor fills `people`; a range sensor fills `ranges`
+/// and `angles` (beam angles in the sensor frame, rad) and `max_range`; any other sensor
+/// fills `values`, a fixed-length feature vector its README documents (e.g. route).
+struct CROWDSIM_SDK_API SensorReading {
+  std::string sensor;  ///< the sensor's plugin name (e.g. "lidar2d", "person")
+  std::vector<PersonObservation> people;
+  std::vector<double> ranges;  ///< m, max_range when nothing is hit
+  std::vector<double> angles;  ///< rad, relative to the frame's x axis
+  double max_range = 0.0;
+  std::vector<double> values;  ///< other sensors' features, sensor frame where spatial
+};
+
+/// Everything one policy receives at one decision.
+struct CROWDSIM_SDK_API Observation {
+  double time = 0.0;                    ///< s since the episode start
+  AgentState self;                      ///< own state, world frame
+  Frame frame;                          ///< sensor frame (robot: x towards the goal)
+  std::vector<SensorReading> readings;  ///< robot only: one per configured sensor, in order
+  /// Ground-truth agents this policy may react to (humans: the other humans, plus the robot
+  /// when visible), with its own index in `self_index` (-1 if absent). Null for the robot.
+  const AgentIndex* agents = nullptr;
+  int self_index = -1;
+  /// One-step lookahead, given only to robot policies that declare they need it.
+  const Lookahead* lookahead = nullptr;
+
+  /// The first reading from the sensor named `name`, or null.
+  const SensorReading* Reading(std::string_view name) const {
+    for (const auto& r : readings) {
+      if (r.sensor == name) return &r;
+    }
+    return nullptr;
+  }
+};
+
+}  // namespace crowdsim

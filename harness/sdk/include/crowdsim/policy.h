@@ -1,0 +1,68 @@
+// Policy plugin interface: decides a velocity for the robot or a human.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "crowdsim/action.h"
+#include "crowdsim/export.h"
+#include "crowdsim/observation.h"
+#include "crowdsim/sim_config.h"
+#include "crowdsim/static_map.h"
+
+namespace crowdsim {
+
+enum class AgentRole { kRobot, kHuman };
+
+/// What a policy needs from the harness (checked before the first episode).
+struct CROWDSIM_SDK_API PolicyNeeds {
+  bool map = false;  ///< gets EpisodeContext::map (privileged knowledge of the layout)
+  /// Robot only: gets Observation::lookahead. A humans' policy that sets it is refused before
+  /// the first episode (run, validate, train), as is one that names sensors.
+  bool lookahead = false;
+  std::vector<std::string> sensors;  ///< robot only: sensor names that must be configured
+  /// Humans only: Observation::frame turned towards the agent's goal (an atan2 and a sincos
+  /// per decision). A policy that works in world coordinates (ORCA) sets false and gets the
+  /// world-aligned frame at its own position (heading 0). The robot's frame always turns
+  /// towards its goal: its sensors report in it.
+  bool heading_frame = true;
+};
+
+/// Per-episode context handed to Reset: the one way a policy learns the episode's constants
+/// (the time step between decisions and the rest of the sim settings, the map); Observation
+/// carries only what changes from step to step.
+struct CROWDSIM_SDK_API EpisodeContext {
+  /// The static map, given only to policies whose Needs().map is set (ORCA, planners); null
+  /// for the others.
+  const StaticMap* map = nullptr;
+  SimConfig sim;  ///< sim.time_step: s between decisions
+  AgentRole role = AgentRole::kRobot;
+  std::uint64_t seed = 0;  ///< this agent's own stream for the episode
+  int agent_id = 0;        ///< 0 = robot, 1.. = humans
+};
+
+class CROWDSIM_SDK_API Policy {
+ public:
+  virtual ~Policy();
+  /// What the harness must provide; called once after construction.
+  virtual PolicyNeeds Needs() const { return {}; }
+  /// Called at the start of every episode (reset internal state, keep the episode's constants).
+  virtual void Reset(const EpisodeContext& ctx);
+  /// The action for this step. Throwing ends the episode with status policy_error.
+  virtual Action Decide(const Observation& obs) = 0;
+};
+
+/// Thrown by a plugin (policy, sensor or world) to stop the whole run rather than end one
+/// episode: no line is written for the episode it interrupts, the finished episodes are kept
+/// for a resume, and the run fails with this message. For what makes every further episode
+/// pointless (the user pressed Ctrl-C inside a Python policy, a resource is gone); a bad
+/// decision is an ordinary exception (policy_error, the run goes on).
+class CROWDSIM_SDK_API AbortRun : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+  ~AbortRun() override;
+};
+
+}  // namespace crowdsim
