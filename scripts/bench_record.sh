@@ -100,7 +100,7 @@ for name in "${benches[@]}"; do
     status=1
     continue
   fi
-  command="build/bench/$name ${args[*]:1}"
+  command="build/bench/$name$(printf ' %q' "${args[@]:1}")"
   python3 - "$tmp/$name.json" "$tmp/rows.csv" "$date" "$commit" "$name" "$command" "$note" <<'EOF'
 import csv, json, sys
 path, rows_path, date, commit, exe, command, note = sys.argv[1:]
@@ -121,14 +121,16 @@ with open(rows_path, "a", newline="") as f:
         if aggregated and (r.get("run_type") != "aggregate" or r.get("aggregate_name") != "median"):
             continue
         name = r.get("run_name", r["name"])
-        extra = f"real_time {r['real_time']:.6g} {r['time_unit']}; iterations {r.get('iterations', '')}"
-        if aggregated:
-            extra += f"; median of {r.get('repetitions', '')}"
+        extra = f"real_time {r['real_time']:.6g} {r['time_unit']}; "
+        # An aggregate's iterations are its repetitions.
+        extra += (f"median of {r.get('repetitions', '')} repetitions" if aggregated
+                  else f"iterations {r.get('iterations', '')}")
         out.writerow([date, commit, f"{exe}/{name}", "cpu_time", f"{r['cpu_time']:.6g}",
                       r["time_unit"], "", "", command, "; ".join(x for x in (note, extra) if x)])
         for key, value in r.items():
             if key not in standard and isinstance(value, (int, float)):
-                out.writerow([date, commit, f"{exe}/{name}", key, f"{value:.6g}", "", "", "",
+                unit = "1/s" if key.endswith("_per_second") else ""
+                out.writerow([date, commit, f"{exe}/{name}", key, f"{value:.6g}", unit, "", "",
                               command, note])
 EOF
 done
