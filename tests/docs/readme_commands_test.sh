@@ -31,7 +31,7 @@ for d in "$build"/*; do ln -s "$d" "$work/build/$(basename "$d")"; done
 # its own order; a page must not depend on another page's outputs.
 pages=("$src/README.md")
 [[ -f "$src/CONTRIBUTING.md" ]] && pages+=("$src/CONTRIBUTING.md")
-for p in "$src"/docs/*.md; do pages+=("$p"); done
+for p in "$src"/docs/*.md; do [[ -f "$p" ]] && pages+=("$p"); done
 commands=()
 for p in "${pages[@]}"; do
   mapfile -t page_commands < <(awk '
