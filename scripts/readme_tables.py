@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""Writes the paper-table blocks of README.md from the committed results, so the README cannot
-drift from results/<suite>/table.csv: each block between `<!-- table:NAME begin -->` and
-`<!-- table:NAME end -->` is the suite NAME's rows, ours (success with its 95% interval) beside
-the paper's values where the row has them.
+"""Writes the paper-table blocks of README.md and docs/*.md from the committed results, so the
+pages cannot drift from results/<suite>/table.csv: each block between `<!-- table:NAME begin -->`
+and `<!-- table:NAME end -->` is the suite NAME's rows, ours (success with its 95% interval)
+beside the paper's values where the row has them. A block `table:NAME:compact` has only the
+rows' description, the success and the paper's success. Every suite of REQUIRED has a full
+block on some page.
 
-    scripts/readme_tables.py            # rewrite README.md's blocks
-    scripts/readme_tables.py --check    # exit 1 (and say which) when a block is out of date
+    scripts/readme_tables.py            # rewrite the pages' blocks
+    scripts/readme_tables.py --check    # exit 1 (and say which) when a block is out of date or missing
 """
 import csv
 import pathlib
@@ -13,8 +15,11 @@ import re
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+) begin -->\n)(?P<body>.*?)(<!-- table:(?P=name) end -->)",
-                   re.S)
+BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact)?) begin -->\n)(?P<body>.*?)"
+                   r"(<!-- table:(?P=name)(?P=form) end -->)", re.S)
+# The pages that hold blocks, and the suites whose full table one of them must hold.
+PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
+REQUIRED = ["table1", "table1_3obs", "table2", "table1_route", "table2_route"]
 INFO = ["line", "model", "sensor(s)", "# of obstacles", "humans", "floor plan", "seed", "weights",
         "procedure"]
 # The paper's column names where they need a word more out of the paper's context.
@@ -30,7 +35,7 @@ def paper(row, key):
     return f"{float(value):.3f}" if value else "-"
 
 
-def table(name: str) -> str:
+def table(name: str, compact: bool = False) -> str:
     path = ROOT / "results" / name / "table.csv"
     if not path.is_file():
         raise SystemExit(f"readme_tables: {path} does not exist (run the suite {name} first)")
@@ -38,6 +43,8 @@ def table(name: str) -> str:
         rows = list(csv.DictReader(f))
     info = [c for c in INFO if rows and c in rows[0]]
     with_paper = any(r.get("paper success") for r in rows)
+    if compact:
+        return compact_table(rows, [c for c in info if c not in ("weights", "procedure")], with_paper)
     head = info + ["success [95% CI]"] + (["paper"] if with_paper else []) + \
         ["collision"] + (["paper"] if with_paper else []) + ["timeout"] + \
         (["paper"] if with_paper else []) + ["nav. time"] + (["paper"] if with_paper else [])
@@ -58,29 +65,53 @@ def table(name: str) -> str:
     return "\n".join(lines) + "\n"
 
 
+def compact_table(rows, info, with_paper: bool) -> str:
+    head = info + ["success [95% CI]"] + (["paper"] if with_paper else [])
+    lines = ["| " + " | ".join(HEADER.get(c, c) for c in head) + " |",
+             "|" + "|".join("---" if c in info else "---:" for c in head) + "|"]
+    for r in rows:
+        cells = [r[c] for c in info]
+        cells.append(f"{rate(r, 'success rate')} [{float(r['success 95% low']):.3f}, "
+                     f"{float(r['success 95% high']):.3f}]")
+        if with_paper:
+            cells.append(paper(r, "success"))
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def main() -> int:
     check = "--check" in sys.argv[1:]
-    readme = ROOT / "README.md"
-    text = readme.read_text()
     stale = []
+    full = set()
+    for page in PAGES:
+        text = page.read_text()
+        name = page.relative_to(ROOT).as_posix()
 
-    def fill(m):
-        body = table(m.group("name"))
-        if body != m.group("body"):
-            stale.append(m.group("name"))
-        return m.group(1) + body + m.group(4)
+        def fill(m):
+            compact = m.group("form") == ":compact"
+            if not compact:
+                full.add(m.group("name"))
+            body = table(m.group("name"), compact)
+            if body != m.group("body"):
+                stale.append(f"{name}: {m.group('name')}{m.group('form')}")
+            return m.group(1) + body + m.group(5)
 
-    new = BLOCK.sub(fill, text)
+        new = BLOCK.sub(fill, text)
+        if not check and new != text:
+            page.write_text(new)
+    missing = [s for s in REQUIRED if s not in full]
+    if missing:
+        print("readme_tables: no page has a table block for " + ", ".join(missing) +
+              " (<!-- table:NAME begin --> ... <!-- table:NAME end -->)")
+        return 1
     if check:
         if stale:
-            print("readme_tables: README.md's tables are out of date for " + ", ".join(stale) +
+            print("readme_tables: tables out of date: " + "; ".join(stale) +
                   ": run scripts/readme_tables.py")
             return 1
-        print("readme_tables: README.md's tables match results/")
+        print(f"readme_tables: the tables of {len(PAGES)} pages match results/")
         return 0
-    if new != text:
-        readme.write_text(new)
-    print("readme_tables: " + (", ".join(stale) + " rewritten" if stale else "nothing to change"))
+    print("readme_tables: " + ("; ".join(stale) + " rewritten" if stale else "nothing to change"))
     return 0
 
 

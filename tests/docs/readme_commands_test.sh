@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
-# Runs every command of the README's shell blocks, on small budgets, and the script that redraws
-# its figures, so the README cannot drift from the program (its own figure command had stopped
-# working).
+# Runs every command of the shell blocks of README.md, CONTRIBUTING.md and docs/*.md, on small
+# budgets, and the script that redraws their figures, so the pages cannot drift from the program.
 #
 #   tests/docs/readme_commands_test.sh BUILD_DIR SOURCE_DIR [PYTHON]
 #
 # Taken: each line of a ```sh block that starts with build/bin/, mpirun, for, source or
-# PYTHONPATH=build/python (run with PYTHON, the interpreter the package was built for; skipped
-# without it). The `make` lines are what CI runs anyway. Budgets: every `run` gets --episodes 3, every `train` a
-# few imitation and RL episodes, the PyTorch example 10 updates (skipped without python3-torch). The commands run in order in a scratch copy of the checkout's
-# suites, worlds and examples, with the committed results linked in (read only), so they write
-# nothing into the checkout. mpirun lines are skipped when the CLI was built without MPI.
+# PYTHONPATH=build/python (run with PYTHON, the interpreter the package was built
+# for; skipped without it), page by page, each page top to bottom. The `make` lines are what CI
+# runs anyway. Budgets: every `run` gets --episodes 3, every `train` a few imitation and RL
+# episodes, the PyTorch example 10 updates (skipped without python3-torch). The commands run in
+# order in a scratch copy of the checkout's suites, worlds and examples, with the committed
+# results linked in (read only), so they write nothing into the checkout. mpirun lines are
+# skipped when the CLI was built without MPI.
 set -uo pipefail
 
 build="$(cd "$1" && pwd)"
@@ -26,12 +27,24 @@ for r in "$src"/results/*; do
 done
 for d in "$build"/*; do ln -s "$d" "$work/build/$(basename "$d")"; done
 
-mapfile -t commands < <(awk '
-  /^```/ { sh = ($0 ~ /^```sh/) && !sh; next }
-  sh { line = $0; sub(/^[ \t]+/, "", line)
-       if (line ~ /^(build\/bin\/|mpirun |for |source |PYTHONPATH=build\/python )/) { sub(/[ \t]+#.*$/, "", line); print line } }' \
-  "$src/README.md")
-[[ ${#commands[@]} -ge 10 ]] || { echo "FAIL: found only ${#commands[@]} commands in README.md"; exit 1; }
+# The pages: the README, the contributing guide and every docs page. Each page's commands run in
+# its own order; a page must not depend on another page's outputs.
+pages=("$src/README.md")
+[[ -f "$src/CONTRIBUTING.md" ]] && pages+=("$src/CONTRIBUTING.md")
+for p in "$src"/docs/*.md; do [[ -f "$p" ]] && pages+=("$p"); done
+commands=()
+for p in "${pages[@]}"; do
+  mapfile -t page_commands < <(awk '
+    /^```/ { sh = ($0 ~ /^```sh/) && !sh; next }
+    sh { line = $0; sub(/^[ \t]+/, "", line)
+         if (line ~ /^(build\/bin\/|mpirun |for |source |PYTHONPATH=build\/python )/) { sub(/[ \t]+#.*$/, "", line); print line } }' \
+    "$p")
+  echo "${p#"$src"/}: ${#page_commands[@]} commands"
+  commands+=("${page_commands[@]}")
+done
+# The README alone had 30 commands before they moved to the docs pages: every one stays tested.
+[[ ${#commands[@]} -ge 30 ]] || { echo "FAIL: found only ${#commands[@]} commands in ${#pages[@]} pages"; exit 1; }
+[[ -f "$src/docs/usage.md" ]] || { echo "FAIL: docs/usage.md, the page of the CLI's commands, is missing"; exit 1; }
 
 small_train='--set training.il_episodes=3 --set training.il_epochs=1 --set training.rl_episodes=2 --set training.validation_interval=2 --set training.validation_episodes=2 --set training.checkpoint_interval=2'
 with_mpi=0
@@ -68,7 +81,7 @@ for c in "${commands[@]}"; do
   fi
   ran=$((ran + 1))
 done
-# The README's picture and the gallery are redrawn from the committed results by a script:
+# The README's picture and the gallery (docs/gallery.md) are redrawn from the committed results by a script:
 # it must run too (into the scratch folder).
 echo "RUN  scripts/make_gallery.sh"
 if ! out=$(cd "$src" && timeout 300 bash scripts/make_gallery.sh --bin "$build/bin/crowdsim-bench" --out "$work/docs" 2>&1); then
@@ -81,5 +94,5 @@ for f in episode.png gallery/success.png gallery/collision_human.png gallery/col
          gallery/timeout.png gallery/floorplan.png gallery/lidar.png gallery/compare.png; do
   [[ -s "$work/docs/$f" ]] || { echo "FAIL: make_gallery.sh wrote no docs/$f"; failed=$((failed + 1)); }
 done
-echo "$ran README commands run, $failed failed"
+echo "$ran commands of ${#pages[@]} pages run, $failed failed"
 [[ $failed == 0 ]]
