@@ -18,7 +18,7 @@ namespace crowdsim {
 
 class EpisodeAppender {
  public:
-  /// The runner's delay when episodes run in threads (README: what a crash can lose).
+  /// The runner's delay when episodes run in threads (docs/usage.md, "What a run writes").
   static constexpr std::chrono::milliseconds kThreadedRunDelay{200};
 
   /// Opens `path` for appending (created if missing); throws RunError naming it.
