@@ -109,6 +109,71 @@ def _discrete_space(n: int):
     return _spaces.Discrete(n) if _spaces is not None else _DiscreteSpace(n)
 
 
+# Sensors whose readings' bounds this package knows (sensors/*/README.md).
+_KNOWN_SENSORS = ("person", "lidar2d", "route")
+# Slack on bounds that the core reaches through a rotation or a product (route's waypoint):
+# rounding may pass them by an ulp or two.
+_ROUNDING = 1e-9
+
+
+def _last_time(time_limit: float, time_step: float) -> float:
+    """The latest `time` an observation can hold: that of the step which times the episode out,
+    the first k * time_step at or past time_limit - 1e-9 (the core's rule and arithmetic), which
+    passes time_limit when the time step does not divide it."""
+    k = max(1, math.ceil((time_limit - 1e-9) / time_step))
+    while k > 1 and (k - 1) * time_step >= time_limit - 1e-9:
+        k -= 1
+    while k * time_step < time_limit - 1e-9:
+        k += 1
+    return k * time_step
+
+
+def _observation_spaces(core, probe: dict) -> dict:
+    """One observation's spaces by key, bounded where the suite row fixes the bounds: `time` by
+    the timeout step, `lidar` by the range sensor's max_range, `route`'s waypoint by its
+    lookahead (and its distance >= 0), `humans_mask` 0/1, the robot's heading by +-pi and
+    radii and v_pref >= 0. Positions and velocities stay unbounded (a world declares no
+    extent). `core`: a _core.Env of the row; `probe`: one of its observations (the keys and
+    shapes of the other sensors' features)."""
+    inf = np.inf
+    sensors = list(core.sensor_params)  # [(plugin name, {parameter: value})], the row's order
+    humans = core.humans
+    robot_low = np.array([-inf] * 6 + [0.0, 0.0, -np.pi])  # radius, v_pref >= 0; heading
+    robot_high = np.array([inf] * 8 + [np.pi])
+    humans_low = np.full((humans, 5), -inf)
+    humans_low[:, 4] = 0.0  # radius (0 in the padding rows)
+    spaces = {
+        "robot": _box(robot_low, robot_high, (9,)),
+        "time": _box(0.0, _last_time(core.time_limit, core.time_step), ()),
+        "humans": _box(humans_low, inf, (humans, 5)),
+        "humans_mask": _box(0, 1, (humans,), dtype=np.bool_),
+    }
+    if "lidar" in probe:
+        # The ranges of the first sensor giving any: a lidar2d's unless a sensor this package
+        # does not know comes before it (it may give ranges of its own).
+        max_range = inf
+        for name, params in sensors:
+            if name == "lidar2d":
+                max_range = float(params["max_range"])
+                break
+            if name not in _KNOWN_SENSORS:
+                break
+        spaces["lidar"] = _box(0.0, max_range, np.shape(probe["lidar"]))
+    for name, value in probe.items():  # other sensors' features under their name (route, ...)
+        if name in spaces:
+            continue
+        shape = np.shape(value)
+        params = next((p for n, p in sensors if n == name), None)
+        if name == "route" and params is not None and shape == (3,):
+            # Path distance (m) and the waypoint, at most `lookahead` from the robot.
+            reach = float(params["lookahead"]) * (1.0 + _ROUNDING)
+            spaces[name] = _box(np.array([0.0, -reach, -reach]), np.array([inf, reach, reach]),
+                                shape)
+        else:
+            spaces[name] = _box(-inf, inf, shape)
+    return spaces
+
+
 def holonomic_actions(v_pref: float = 1.0, speeds: int = 5, rotations: int = 16,
                       stop: bool = True) -> np.ndarray:
     """CrowdNav's holonomic action set as velocities (n, 2): `speeds` exponentially spaced
@@ -189,7 +254,10 @@ class Env(_ClosedByWith, _Base):
     people the person sensor sees, in the robot's frame (x towards the goal), padded to the row's
     human count with `humans_mask` (H,) marking real rows; `lidar` (beams,) ranges in m (only
     when the row has a range sensor); and under its name each sensor reporting other features
-    (`route` (3,): path distance to the goal, waypoint x, y in the robot's frame). Action: a velocity (vx, vy) in m/s, world frame, or with
+    (`route` (3,): path distance to the goal, waypoint x, y in the robot's frame); `time` ()
+    in s. The observation space bounds what the row fixes: `time` by the timeout step, `lidar`
+    by the sensor's max_range, `route`'s waypoint by its lookahead, `humans_mask` 0/1; positions
+    and velocities are unbounded. Action: a velocity (vx, vy) in m/s, world frame, or with
     `discrete=True` an index into `actions` (CrowdNav's 81 holonomic actions). Reward: the
     harness's (success 1, collision -0.25, discomfort penalty). `terminated` on success or
     collision, `truncated` on timeout; `info["status"]` names the outcome.
@@ -214,19 +282,7 @@ class Env(_ClosedByWith, _Base):
             self.action_space = _discrete_space(len(self.actions))
         else:
             self.action_space = _box(-v, v, (2,))
-        obs_spaces = {
-            "robot": _box(-np.inf, np.inf, (9,)),
-            "time": _box(0.0, np.inf, ()),
-            "humans": _box(-np.inf, np.inf, (self._env.humans, 5)),
-            "humans_mask": _box(0, 1, (self._env.humans,), dtype=np.bool_),
-        }
-        probe = self._env.reset(0, False)
-        if "lidar" in probe:
-            obs_spaces["lidar"] = _box(0.0, np.inf, probe["lidar"].shape)
-        for name, value in probe.items():  # other sensors' features (route, ...)
-            if name not in obs_spaces:
-                obs_spaces[name] = _box(-np.inf, np.inf, np.shape(value))
-        self.observation_space = _dict(obs_spaces)
+        self.observation_space = _dict(_observation_spaces(self._env, self._env.reset(0, False)))
 
     # -- Gymnasium API -----------------------------------------------------------------------
     def reset(self, *, seed: int | None = None, options: dict | None = None):

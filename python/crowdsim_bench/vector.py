@@ -31,7 +31,8 @@ class VectorEnv(_ClosedByWith):
 
     def __init__(self, suite: str, row: str | int = 1, num_envs: int = 16, *,
                  set: Sequence[str] | str = (), discrete: bool = False, threads: int = 1):
-        from . import _box, _dict, _discrete_space, _is_whole, _settings, holonomic_actions
+        from . import (_box, _dict, _discrete_space, _is_whole, _observation_spaces, _settings,
+                       holonomic_actions)
         for name, count in (("num_envs", num_envs), ("threads", threads)):
             if not _is_whole(count) or count < 1:  # 2.5 ran 2, threads=0 or -3 ran one
                 raise ValueError(f"{name} must be a whole number >= 1, got {count!r}")
@@ -41,28 +42,18 @@ class VectorEnv(_ClosedByWith):
         self.discrete = discrete
         probe = _core.Env(str(suite), row, settings)
         self.actions = holonomic_actions(probe.v_pref)
-        n, h = self.num_envs, self._env.humans
+        n = self.num_envs
         if discrete:
             self.single_action_space = _discrete_space(len(self.actions))
             self.action_space = _box(0, len(self.actions) - 1, (n,), dtype=np.int64)
         else:
             self.single_action_space = _box(-probe.v_pref, probe.v_pref, (2,))
             self.action_space = _box(-probe.v_pref, probe.v_pref, (n, 2))
-        single = {"robot": _box(-np.inf, np.inf, (9,)), "time": _box(0.0, np.inf, ()),
-                  "humans": _box(-np.inf, np.inf, (h, 5)),
-                  "humans_mask": _box(0, 1, (h,), dtype=np.bool_)}
-        batch = {"robot": _box(-np.inf, np.inf, (n, 9)), "time": _box(0.0, np.inf, (n,)),
-                 "humans": _box(-np.inf, np.inf, (n, h, 5)),
-                 "humans_mask": _box(0, 1, (n, h), dtype=np.bool_)}
-        if self._env.beams >= 0:
-            single["lidar"] = _box(0.0, np.inf, (self._env.beams,))
-            batch["lidar"] = _box(0.0, np.inf, (n, self._env.beams))
-        for name, value in probe.reset(0, False).items():  # other sensors' features (route)
-            if name not in single and name != "lidar":
-                single[name] = _box(-np.inf, np.inf, np.shape(value))
-                batch[name] = _box(-np.inf, np.inf, (n,) + np.shape(value))
+        single = _observation_spaces(probe, probe.reset(0, False))  # the Env's bounds
         self.single_observation_space = _dict(single)
-        self.observation_space = _dict(batch)
+        self.observation_space = _dict({
+            k: _box(np.broadcast_to(s.low, (n,) + s.shape), np.broadcast_to(s.high, (n,) + s.shape),
+                    (n,) + s.shape, dtype=s.dtype) for k, s in single.items()})
 
     @property
     def threads(self) -> int:

@@ -511,6 +511,108 @@ class VectorEnvContract(unittest.TestCase):
             np.testing.assert_array_equal(a[4]["episode"], b[4]["episode"])
 
 
+ROUTE = ["rows[orca].sensors=[person, {type: lidar2d, beams: 45}, route]"]
+# The observation and action configurations the package has: (Env kwargs, what they are).
+CONFIGURATIONS = [
+    ({}, "person + lidar, continuous"),
+    ({"discrete": True}, "person + lidar, discrete"),
+    ({"render_mode": "rgb_array"}, "rgb_array"),
+    ({"set": ROUTE}, "person + lidar + route"),
+    ({"set": "robot.sensors=[{type: lidar2d, beams: 9, fov_deg: 360, max_range: 3}]"},
+     "lidar alone"),
+    ({"set": "robot.sensors=[person]"}, "person alone"),
+]
+
+
+def sampled_episodes(env, episodes):
+    """(obs, info) of every reset and step of `episodes` episodes with sampled actions."""
+    env.action_space.seed(0)
+    for k in range(episodes):
+        obs, info = env.reset(seed=k)
+        yield obs, info
+        while True:
+            obs, _, terminated, truncated, info = env.step(env.action_space.sample())
+            yield obs, info
+            if terminated or truncated:
+                break
+
+
+def outside(space, obs):
+    """The keys of a dict observation its Dict space does not contain (for the messages)."""
+    return [k for k in obs if not space[k].contains(obs[k])]
+
+
+class SpacesAndInfosAsGymnasiumWantsThem(unittest.TestCase):
+    """What Gymnasium's check_env and wrappers rely on, checked with or without gymnasium:
+    bounded observation spaces that hold every observation."""
+
+    def test_observation_bounds_are_the_rows_own(self):
+        # Every Box was (-inf, inf): lidar ranges, time and the route's waypoint have bounds.
+        space = cb.Env(QUICK, row="orca").observation_space
+        np.testing.assert_array_equal(space["lidar"].low, np.zeros(45))
+        np.testing.assert_array_equal(space["lidar"].high, np.full(45, 5.0))  # max_range: 5
+        self.assertEqual((float(space["time"].low), float(space["time"].high)), (0.0, 25.0))
+        self.assertEqual(space["humans_mask"].dtype, np.bool_)
+        self.assertEqual((space["humans_mask"].low.min(), space["humans_mask"].high.max()),
+                         (False, True))
+        self.assertEqual((space["robot"].low[8], space["robot"].high[8]), (-math.pi, math.pi))
+        self.assertEqual(space["robot"].low[6], 0.0)  # radius
+        self.assertTrue(np.all(space["humans"].low[:, 4] == 0.0))  # radii
+        route = cb.Env(QUICK, row="orca", set=ROUTE).observation_space["route"]
+        self.assertEqual(route.low[0], 0.0)  # path distance
+        np.testing.assert_allclose(route.high[1:], 1.0, rtol=1e-8)  # lookahead 1 m
+        np.testing.assert_allclose(route.low[1:], -1.0, rtol=1e-8)
+        # The row's own sensor parameters, set= included.
+        lidar = cb.Env(QUICK, row="orca", set=CONFIGURATIONS[4][0]["set"]).observation_space
+        self.assertEqual(lidar["lidar"].shape, (9,))
+        np.testing.assert_array_equal(lidar["lidar"].high, np.full(9, 3.0))
+        near = cb.Env(QUICK, row="orca", set=[
+            "rows[orca].sensors=[person, {type: lidar2d, beams: 45}, "
+            "{type: route, lookahead: 2.5}]"]).observation_space["route"]
+        np.testing.assert_allclose(near.high[1:], 2.5, rtol=1e-8)
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=3)
+        for key, single in venv.single_observation_space.items():
+            np.testing.assert_array_equal(single.high, space[key].high, key)
+            np.testing.assert_array_equal(venv.observation_space[key].low[2], single.low, key)
+            np.testing.assert_array_equal(venv.observation_space[key].high[2], single.high, key)
+
+    def test_the_time_bound_is_the_timeout_steps_time(self):
+        # 0.3 s does not divide 25 s: the 84th step (25.2 s) times the episode out.
+        env = cb.Env(QUICK, row="orca", set="sim.time_step=0.3")
+        self.assertAlmostEqual(float(env.observation_space["time"].high), 25.2, places=12)
+        for seed in range(10):  # standing still until a timeout (a human may walk into it)
+            env.reset(seed=seed)
+            while True:
+                obs, _, terminated, truncated, info = env.step([0.0, 0.0])
+                self.assertTrue(env.observation_space["time"].contains(obs["time"]))
+                if terminated or truncated:
+                    break
+            if truncated:
+                self.assertEqual(float(obs["time"]), float(env.observation_space["time"].high))
+                break
+        self.assertTrue(truncated, "no episode of 10 timed out")
+
+    def test_every_observation_is_in_the_space(self):
+        for kwargs, what in CONFIGURATIONS:
+            env = cb.Env(QUICK, row="orca", **kwargs)
+            for n, (obs, _) in enumerate(sampled_episodes(env, 12)):
+                self.assertEqual(set(obs), set(env.observation_space.keys()), what)
+                self.assertTrue(env.observation_space.contains(obs),
+                                f"{what}, observation {n}: {outside(env.observation_space, obs)}")
+        for discrete in (False, True):
+            venv = cb.VectorEnv(QUICK, row="orca", num_envs=4, set=ROUTE, discrete=discrete)
+            venv.action_space.seed(1)
+            obs, _ = venv.reset(seed=0)
+            for step in range(150):  # random velocities: episodes of ~17 steps, autoresets
+                self.assertTrue(venv.observation_space.contains(obs),
+                                f"step {step}: {outside(venv.observation_space, obs)}")
+                for i in range(4):
+                    self.assertTrue(venv.single_observation_space.contains(
+                        {k: v[i] for k, v in obs.items()}))
+                self.assertTrue(venv.action_space.contains(venv.action_space.sample()))
+                obs, *_ = venv.step(venv.action_space.sample())
+
+
 class UserMistakes(unittest.TestCase):
     """What a user gets wrong first: each a clear Python error, never a crash or a silent
     stand-in."""
