@@ -10,7 +10,8 @@
     venv = cb.VectorEnv("suites/quick.yaml", row="orca", num_envs=16)  # batches, stepped in C++
 
 Env follows the Gymnasium API (reset/step/action_space/observation_space); it subclasses
-gymnasium.Env when gymnasium is installed and works the same without it. Episodes are those of
+gymnasium.Env (and VectorEnv gymnasium.vector.VectorEnv) when gymnasium is installed, passes
+gymnasium.utils.env_checker.check_env, and works the same without it. Episodes are those of
 the suite: `reset(seed=k)` (or `options={"episode": k}`) is episode k of the row, exactly as
 `crowdsim-bench run` simulates it, so a policy stepped from Python meets the same scenarios.
 """
@@ -47,10 +48,18 @@ __version__ = _core.__version__
 
 try:  # optional: Debian 12 has no gymnasium package
     import gymnasium as _gym
+    import gymnasium.vector  # noqa: F401  (VectorEnv's base, batch_space)
     from gymnasium import spaces as _spaces
 except ImportError:  # pragma: no cover - depends on the machine
     _gym = None
     _spaces = None
+
+# Info keys Gymnasium's wrappers and vector environments write themselves (RecordEpisodeStatistics:
+# `episode`; same-step autoreset: `final_obs`, `final_info`; a vector info's masks: `_` + key):
+# an info of Env or VectorEnv holding one made them fail (the suite's episode index is
+# `episode_index`).
+RESERVED_INFO_KEYS = frozenset(
+    k for key in ("episode", "final_obs", "final_info") for k in (key, "_" + key))
 
 
 class Box:
@@ -107,6 +116,19 @@ def _dict(spaces: dict):
 
 def _discrete_space(n: int):
     return _spaces.Discrete(n) if _spaces is not None else _DiscreteSpace(n)
+
+
+def _batch_space(space, n: int):
+    """`n` of a space side by side, as a vector environment's batch (gymnasium's batch_space:
+    a Box gains a leading axis, a Discrete becomes a MultiDiscrete)."""
+    if _spaces is not None:
+        return _gym.vector.utils.batch_space(space, n)
+    if isinstance(space, Dict):
+        return Dict({k: _batch_space(v, n) for k, v in space.items()})
+    if isinstance(space, _DiscreteSpace):
+        return Box(0, space.n - 1, (n,), dtype=np.int64)
+    return Box(np.broadcast_to(space.low, (n,) + space.shape),
+               np.broadcast_to(space.high, (n,) + space.shape), (n,) + space.shape, space.dtype)
 
 
 # Sensors whose readings' bounds this package knows (sensors/*/README.md).
@@ -231,7 +253,34 @@ def _action_indices(actions, count: int, shape: tuple) -> np.ndarray:
     return a.astype(np.int64)
 
 
-_Base = _gym.Env if _gym is not None else object
+class _SeededWithoutGymnasium:
+    """gymnasium.Env's and gymnasium.vector.VectorEnv's own part, for machines without
+    gymnasium (Debian 12): `reset(seed=k)` seeds `np_random` (numpy's default generator, as
+    Gymnasium's seeding makes it), and `unwrapped` is the environment itself."""
+
+    _np_random = None
+
+    def reset(self, *, seed: int | None = None, options: dict | None = None):
+        if seed is not None:
+            self._np_random = np.random.default_rng(seed)
+
+    @property
+    def np_random(self) -> np.random.Generator:
+        if self._np_random is None:  # unseeded: from fresh entropy, as Gymnasium's
+            self._np_random = np.random.default_rng()
+        return self._np_random
+
+    @property
+    def unwrapped(self):
+        return self
+
+
+def _python_int(seed):
+    """A numpy integer seed as a Python int (Gymnasium's seeding takes only those)."""
+    return int(seed) if isinstance(seed, np.integer) else seed
+
+
+_Base = _gym.Env if _gym is not None else _SeededWithoutGymnasium
 
 
 class _ClosedByWith:
@@ -260,7 +309,9 @@ class Env(_ClosedByWith, _Base):
     and velocities are unbounded. Action: a velocity (vx, vy) in m/s, world frame, or with
     `discrete=True` an index into `actions` (CrowdNav's 81 holonomic actions). Reward: the
     harness's (success 1, collision -0.25, discomfort penalty). `terminated` on success or
-    collision, `truncated` on timeout; `info["status"]` names the outcome.
+    collision, `truncated` on timeout; `info["status"]` names the outcome and
+    `info["episode_index"]` the suite's episode (never `episode`, which Gymnasium's
+    RecordEpisodeStatistics writes: RESERVED_INFO_KEYS).
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 4}
@@ -291,7 +342,8 @@ class Env(_ClosedByWith, _Base):
         episode k of `crowdsim-bench run`, not a random seed; without either, the episode after
         the last one (0 first). A world of frozen layouts reuses them in turn (random_rect's 100:
         episode k + 100 has episode k's layout), so train on another split (set=
-        "world.split=train") than the one tested. info: `episode`, `layout` (the world's name)."""
+        "world.split=train") than the one tested. `seed` also seeds `np_random` (Gymnasium's
+        rule). info: `episode_index` (the suite's episode k), `layout` (the world's name)."""
         if options and "episode" in options:
             episode = _episode_index(options["episode"], 'options["episode"]')
         elif seed is not None:
@@ -301,10 +353,11 @@ class Env(_ClosedByWith, _Base):
             if episode > _MAX_EPISODE:
                 raise ValueError(f"episode {self._episode} was the last episode index: call "
                                  f"reset(seed=k) with k in [0, {_MAX_EPISODE}]")
+        super().reset(seed=_python_int(seed))  # seeds np_random (gymnasium.Env's or the stand-in)
         obs = self._env.reset(episode, self._record)
         self._episode = episode
         self._done = False
-        return self._obs(obs), {"episode": episode, "layout": self._env.result()["layout"]}
+        return self._obs(obs), {"episode_index": episode, "layout": self._env.result()["layout"]}
 
     def step(self, action):
         """Moves the robot for one time step and returns (obs, reward, terminated, truncated,
@@ -312,7 +365,8 @@ class Env(_ClosedByWith, _Base):
         numbers), or with `discrete=True` an index into `actions`. `terminated` on success,
         collision or policy_error (a velocity above 10 x v_pref), `truncated` on timeout;
         info["status"] names the outcome and, at the episode's end, info also holds its metrics
-        (those of `result()`). Stepping an ended episode is an error: call reset()."""
+        (those of `result()`, the episode index as `episode_index`). Stepping an ended episode
+        is an error: call reset()."""
         if self._episode < 0:
             raise ValueError("step() before reset(): call reset() first (Gymnasium's order)")
         if self.discrete:
@@ -328,7 +382,9 @@ class Env(_ClosedByWith, _Base):
         if error:
             info["error"] = error
         if terminated or truncated:
-            info.update(self._env.result())
+            result = self._env.result()
+            result["episode_index"] = result.pop("episode")  # `episode` is Gymnasium's
+            info.update(result)
         return self._obs(obs), float(reward), terminated, truncated, info
 
     def render(self):
@@ -344,11 +400,6 @@ class Env(_ClosedByWith, _Base):
         and running evaluate() at once); the Env cannot be used afterwards."""
         self._env = _Closed("Env")
 
-    # gymnasium.Env's `unwrapped`, for machines without gymnasium (Debian 12)
-    @property
-    def unwrapped(self):
-        return self
-
     # -- extras ------------------------------------------------------------------------------
     @property
     def episodes(self) -> int:
@@ -360,7 +411,8 @@ class Env(_ClosedByWith, _Base):
         return self._env.time_step
 
     def result(self) -> dict:
-        """The current episode's metrics (status, time, path length, ...)."""
+        """The current episode's metrics (status, time, path length, ...; `episode`: its index,
+        as in episodes.csv)."""
         self._require_episode("result()")
         return self._env.result()
 
@@ -498,4 +550,5 @@ def run_suite(suite: str, *, out: str | os.PathLike | None = None, jobs: int = 1
 
 from .vector import STATUS_NAMES, VectorEnv  # noqa: E402  (uses the helpers above)
 
-__all__ = ["Env", "VectorEnv", "STATUS_NAMES", "evaluate", "run_suite", "holonomic_actions", "Box", "Dict", "__version__"]
+__all__ = ["Env", "VectorEnv", "STATUS_NAMES", "RESERVED_INFO_KEYS", "evaluate", "run_suite",
+           "holonomic_actions", "Box", "Dict", "__version__"]

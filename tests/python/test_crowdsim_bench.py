@@ -92,9 +92,9 @@ class EnvContract(unittest.TestCase):
         for k in a:
             np.testing.assert_array_equal(a[k], b[k])
         c, info_c = self.env.reset(options={"episode": 8})
-        self.assertEqual(info_c["episode"], 8)
+        self.assertEqual(info_c["episode_index"], 8)
         d, info_d = self.env.reset()  # the next episode
-        self.assertEqual(info_d["episode"], 9)
+        self.assertEqual(info_d["episode_index"], 9)
         self.assertFalse(np.array_equal(a["robot"], c["robot"]))
 
     def test_standing_still_times_out_as_truncated_not_terminated(self):
@@ -438,7 +438,7 @@ class VectorEnvContract(unittest.TestCase):
         self.assertTrue(venv.observation_space.contains(obs))
         self.assertTrue(venv.single_observation_space.contains({k: v[0] for k, v in obs.items()}))
         self.assertEqual(obs["lidar"].shape, (4, 45))
-        self.assertEqual(list(info["episode"]), [0, 1, 2, 3])
+        self.assertEqual(list(info["episode_index"]), [0, 1, 2, 3])
         obs, reward, terminated, truncated, info = venv.step(np.zeros((4, 2)))
         self.assertEqual(reward.shape, (4,))
         self.assertEqual(terminated.dtype, np.bool_)
@@ -475,7 +475,7 @@ class VectorEnvContract(unittest.TestCase):
             for t, (bobs, reward, terminated, truncated, info) in enumerate(log[1:], start=1):
                 if ended:  # the step after the end: the next episode of this sub-environment
                     self.assertEqual(reward[i], 0.0)
-                    self.assertEqual(info["episode"][i], episode + self.N)
+                    self.assertEqual(info["episode_index"][i], episode + self.N)
                     self.assertEqual(bobs["time"][i], 0.0)
                     obs, _ = cb.Env(QUICK, row="linear").reset(seed=episode + self.N)
                     np.testing.assert_array_equal(bobs["robot"][i], obs["robot"])
@@ -508,7 +508,7 @@ class VectorEnvContract(unittest.TestCase):
                 np.testing.assert_array_equal(a[0][key], b[0][key])
             for k in range(1, 4):
                 np.testing.assert_array_equal(a[k], b[k])
-            np.testing.assert_array_equal(a[4]["episode"], b[4]["episode"])
+            np.testing.assert_array_equal(a[4]["episode_index"], b[4]["episode_index"])
 
 
 ROUTE = ["rows[orca].sensors=[person, {type: lidar2d, beams: 45}, route]"]
@@ -543,8 +543,10 @@ def outside(space, obs):
 
 
 class SpacesAndInfosAsGymnasiumWantsThem(unittest.TestCase):
-    """What Gymnasium's check_env and wrappers rely on, checked with or without gymnasium:
-    bounded observation spaces that hold every observation."""
+    """What Gymnasium's check_env and wrappers rely on, checked with or without gymnasium
+    (test_gymnasium.py runs Gymnasium's own tools when it is installed): bounded observation
+    spaces that hold every observation, info keys clear of the names Gymnasium writes itself,
+    and reset(seed=) seeding np_random."""
 
     def test_observation_bounds_are_the_rows_own(self):
         # Every Box was (-inf, inf): lidar ranges, time and the route's waypoint have bounds.
@@ -611,6 +613,89 @@ class SpacesAndInfosAsGymnasiumWantsThem(unittest.TestCase):
                         {k: v[i] for k, v in obs.items()}))
                 self.assertTrue(venv.action_space.contains(venv.action_space.sample()))
                 obs, *_ = venv.step(venv.action_space.sample())
+
+    def test_info_keys_avoid_the_names_gymnasium_writes(self):
+        # reset()'s info had `episode`, which RecordEpisodeStatistics writes at an episode's
+        # end (it asserted), as did the last step's info and VectorEnv's every info.
+        self.assertEqual(cb.RESERVED_INFO_KEYS, {"episode", "_episode", "final_obs",
+                                                 "_final_obs", "final_info", "_final_info"})
+        env = cb.Env(QUICK, row="orca")
+        ends = 0
+        for obs, info in sampled_episodes(env, 5):
+            self.assertFalse(cb.RESERVED_INFO_KEYS & set(info), sorted(info))
+            ends += "steps" in info  # the metrics of the episode's end
+            if "steps" in info or obs["time"] == 0.0:
+                self.assertIn("episode_index", info)
+        self.assertEqual(ends, 5)
+        _, info = env.reset(seed=4)
+        self.assertEqual(info["episode_index"], 4)
+        self.assertEqual(env.result()["episode"], 4)  # result() keeps episodes.csv's name
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=3)
+        infos = [venv.reset(seed=6)[1]] + [venv.step(np.zeros((3, 2)))[4] for _ in range(3)]
+        for info in infos:
+            self.assertFalse(cb.RESERVED_INFO_KEYS & set(info), sorted(info))
+            for key in [k for k in info if not k.startswith("_")]:
+                np.testing.assert_array_equal(info["_" + key], np.ones(3, bool), key)
+        np.testing.assert_array_equal(infos[0]["episode_index"], [6, 7, 8])
+        self.assertEqual(set(infos[1]), {"status", "_status", "episode_index", "_episode_index"})
+
+    def test_a_reset_mask_is_refused(self):
+        # Gymnasium's reset(options={"reset_mask": ...}) resets some sub-environments only: it
+        # started them all again, without a word.
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=2)
+        venv.reset(seed=0)
+        with self.assertRaisesRegex(ValueError, "reset_mask.*not supported"):
+            venv.reset(options={"reset_mask": np.array([True, False])})
+
+    def test_reset_seed_seeds_np_random(self):
+        # check_env: "Expects the random number generator to have been generated given a seed
+        # was passed to reset".
+        for env in (cb.Env(QUICK, row="orca"), cb.VectorEnv(QUICK, row="orca", num_envs=2)):
+            env.reset(seed=123)
+            first = env.np_random.integers(1 << 30, size=4)
+            env.reset()
+            env.reset(seed=np.int64(123))  # a numpy seed too (an episode index, as before)
+            np.testing.assert_array_equal(env.np_random.integers(1 << 30, size=4), first)
+            env.reset(seed=456)
+            self.assertFalse(np.array_equal(env.np_random.integers(1 << 30, size=4), first))
+
+    def test_without_gymnasium_the_package_works_the_same(self):
+        # Debian 12 has no gymnasium: the stand-in spaces, seeding and info keys.
+        code = """if True:
+            import sys, json
+            sys.modules["gymnasium"] = None
+            import numpy as np
+            import crowdsim_bench as cb
+            env = cb.Env("suites/quick.yaml", row="orca")
+            obs, info = env.reset(seed=5)
+            a = env.np_random.integers(1000)
+            env.reset(seed=5)
+            venv = cb.VectorEnv("suites/quick.yaml", row="orca", num_envs=2, discrete=True)
+            vobs, vinfo = venv.reset(seed=5)
+            _, _, _, _, step_info = venv.step(np.array([0, 80]))
+            print(json.dumps({
+                "box": type(env.observation_space["lidar"]).__name__,
+                "lidar_high": float(env.observation_space["lidar"].high.max()),
+                "time_high": float(env.observation_space["time"].high),
+                "contains": bool(env.observation_space.contains(obs)
+                                 and venv.observation_space.contains(vobs)),
+                "info": sorted(info), "vinfo": sorted(vinfo), "step_info": sorted(step_info),
+                "seeded": bool(a == env.np_random.integers(1000)),
+                "autoreset": venv.metadata["autoreset_mode"],
+                "unwrapped": venv.unwrapped is venv and env.unwrapped is env}))
+        """
+        done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                              env=dict(os.environ), check=False)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        import json
+        got = json.loads(done.stdout)
+        self.assertEqual(got, {
+            "box": "Box", "lidar_high": 5.0, "time_high": 25.0, "contains": True,
+            "info": ["episode_index", "layout"],
+            "vinfo": ["_episode_index", "episode_index"],
+            "step_info": ["_episode_index", "_status", "episode_index", "status"],
+            "seeded": True, "autoreset": "next_step",
+            "unwrapped": True})
 
 
 class UserMistakes(unittest.TestCase):
