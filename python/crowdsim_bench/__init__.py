@@ -14,6 +14,8 @@ gymnasium.Env (and VectorEnv gymnasium.vector.VectorEnv) when gymnasium is insta
 gymnasium.utils.env_checker.check_env, and works the same without it. Episodes are those of
 the suite: `reset(seed=k)` (or `options={"episode": k}`) is episode k of the row, exactly as
 `crowdsim-bench run` simulates it, so a policy stepped from Python meets the same scenarios.
+With gymnasium, importing the package registers ids such as "crowdsim_bench/Table1-v0" for
+gymnasium.make (ENV_IDS; docs/gymnasium.md).
 """
 from __future__ import annotations
 
@@ -548,7 +550,17 @@ def run_suite(suite: str, *, out: str | os.PathLike | None = None, jobs: int = 1
     return rows
 
 
-from .vector import STATUS_NAMES, VectorEnv  # noqa: E402  (uses the helpers above)
+def data_root() -> str:
+    """The folder the package and the CLI find the project's data in (suites/, worlds/,
+    results/models/): $CROWDSIM_DATA_DIR, else PREFIX/share/crowdsim-bench of an installed copy,
+    else the source tree the build came from."""
+    return _core.data_root()
 
-__all__ = ["Env", "VectorEnv", "STATUS_NAMES", "RESERVED_INFO_KEYS", "evaluate", "run_suite",
-           "holonomic_actions", "Box", "Dict", "__version__"]
+
+from .vector import STATUS_NAMES, VectorEnv  # noqa: E402  (uses the helpers above)
+from .registration import ENV_IDS, register_envs  # noqa: E402
+
+register_envs()  # gymnasium.make("crowdsim_bench/Table1-v0"), ...; nothing without gymnasium
+
+__all__ = ["Env", "VectorEnv", "STATUS_NAMES", "ENV_IDS", "RESERVED_INFO_KEYS", "evaluate",
+           "run_suite", "holonomic_actions", "data_root", "Box", "Dict", "__version__"]

@@ -660,7 +660,7 @@ class SpacesAndInfosAsGymnasiumWantsThem(unittest.TestCase):
             self.assertFalse(np.array_equal(env.np_random.integers(1 << 30, size=4), first))
 
     def test_without_gymnasium_the_package_works_the_same(self):
-        # Debian 12 has no gymnasium: the stand-in spaces, seeding and info keys.
+        # Debian 12 has no gymnasium: the stand-in spaces, seeding and info keys, no ids.
         code = """if True:
             import sys, json
             sys.modules["gymnasium"] = None
@@ -681,6 +681,7 @@ class SpacesAndInfosAsGymnasiumWantsThem(unittest.TestCase):
                                  and venv.observation_space.contains(vobs)),
                 "info": sorted(info), "vinfo": sorted(vinfo), "step_info": sorted(step_info),
                 "seeded": bool(a == env.np_random.integers(1000)),
+                "ids": sorted(cb.ENV_IDS)[:1],
                 "autoreset": venv.metadata["autoreset_mode"],
                 "unwrapped": venv.unwrapped is venv and env.unwrapped is env}))
         """
@@ -694,7 +695,7 @@ class SpacesAndInfosAsGymnasiumWantsThem(unittest.TestCase):
             "info": ["episode_index", "layout"],
             "vinfo": ["_episode_index", "episode_index"],
             "step_info": ["_episode_index", "_status", "episode_index", "status"],
-            "seeded": True, "autoreset": "next_step",
+            "seeded": True, "ids": ["crowdsim_bench/CrowdNav-v0"], "autoreset": "next_step",
             "unwrapped": True})
 
 
