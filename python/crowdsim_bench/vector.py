@@ -30,7 +30,7 @@ class VectorEnv(_ClosedByWith, _VectorBase):
     velocities (m/s, world frame) or, with `discrete=True`, (n,) indices into `actions`, and
     returns obs, reward (n,), terminated (n,), truncated (n,), info with `status` (n,) codes
     into STATUS_NAMES and `episode_index` (n,), each with its Gymnasium mask (`_status`,
-    `_episode_index`: all True). Autoreset is Gymnasium's "next step" mode
+    `_episode_index`: all True, one read-only array). Autoreset is Gymnasium's "next step" mode
     (`metadata["autoreset_mode"]`): the step after a sub-environment ended resets it, ignores
     its action and returns the new episode's first observation with reward 0. `threads` > 1
     steps the sub-environments on that many threads (the caller's included; the GIL is
@@ -59,6 +59,9 @@ class VectorEnv(_ClosedByWith, _VectorBase):
         self.action_space = _batch_space(self.single_action_space, self.num_envs)
         self.single_observation_space = _dict(_observation_spaces(probe, probe.reset(0, False)))
         self.observation_space = _batch_space(self.single_observation_space, self.num_envs)
+        # The info keys' masks (every sub-environment has each key): one read-only array.
+        self._everyone = np.ones(self.num_envs, dtype=np.bool_)
+        self._everyone.flags.writeable = False
 
     @property
     def threads(self) -> int:
@@ -84,7 +87,7 @@ class VectorEnv(_ClosedByWith, _VectorBase):
         super().reset(seed=_python_int(seed))  # seeds np_random (Gymnasium's or the stand-in)
         obs = self._env.reset(first)
         episode = obs.pop("episode")
-        return obs, self._info(episode_index=episode)
+        return obs, {"episode_index": episode, "_episode_index": self._everyone}
 
     def step(self, actions):
         """Steps every sub-environment: `actions` (n, 2) velocities (m/s, world frame) or, with
@@ -104,7 +107,10 @@ class VectorEnv(_ClosedByWith, _VectorBase):
             raise ValueError(f"actions must be finite velocities; not those of sub-environments "
                              f"{bad}")
         obs, reward, terminated, truncated, status, episode = self._env.step(velocities)
-        return obs, reward, terminated, truncated, self._info(status=status, episode_index=episode)
+        # Gymnasium's vector info: each key beside its mask `_key`.
+        return obs, reward, terminated, truncated, {
+            "status": status, "_status": self._everyone,
+            "episode_index": episode, "_episode_index": self._everyone}
 
     def close(self, **kwargs):
         """Releases the environments and the suite row; the VectorEnv cannot be used
@@ -112,12 +118,3 @@ class VectorEnv(_ClosedByWith, _VectorBase):
         from . import _Closed
         self._env = _Closed("VectorEnv")
         self.closed = True
-
-    def _info(self, **arrays) -> dict:
-        """A vector info as Gymnasium's: each key beside its mask `_key` (which sub-environments
-        have it: all of them here)."""
-        info = {}
-        for key, value in arrays.items():
-            info[key] = value
-            info["_" + key] = np.ones(self.num_envs, dtype=np.bool_)
-        return info
