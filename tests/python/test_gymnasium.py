@@ -144,7 +144,7 @@ class Wrappers(unittest.TestCase):
 
 @unittest.skipIf(gymnasium is None, NO_GYMNASIUM)
 class RegisteredIds(unittest.TestCase):
-    def test_make_works_for_every_registered_id(self):
+    def test_make_and_check_env_work_for_every_registered_id(self):
         self.assertIn("crowdsim_bench/Table1-v0", cb.ENV_IDS)
         self.assertIn("crowdsim_bench/FloorPlanHard-v0", cb.ENV_IDS)
         for env_id, (suite, row) in cb.ENV_IDS.items():
@@ -159,12 +159,12 @@ class RegisteredIds(unittest.TestCase):
                 self.assertTrue(env.observation_space.contains(obs))
                 obs, *_ = env.step(env.action_space.sample())
                 self.assertTrue(env.observation_space.contains(obs))
+                # With a spec, check_env also remakes the env in each render mode (rgb_array)
+                # and closes one twice.
+                self.assertEqual(checked(env.unwrapped), [])
                 env.close()
 
-    def test_check_env_passes_on_a_made_env_with_its_render_modes(self):
-        # With a spec, check_env also remakes the env in each render mode and closes it twice.
-        env = gymnasium.make("crowdsim_bench/Table1-v0")
-        self.assertEqual(checked(env.unwrapped), [])
+    def test_a_made_env_renders_frame_lists(self):
         frames = gymnasium.make("crowdsim_bench/Table1-v0", render_mode="rgb_array_list")
         frames.reset(seed=1)
         frames.step(frames.action_space.sample())
