@@ -11,7 +11,9 @@ STATUS_NAMES = tuple(_core.STATUS_NAMES)
 
 if _gym is not None:
     _VectorBase = _gym.vector.VectorEnv
-    _NEXT_STEP = _gym.vector.AutoresetMode.NEXT_STEP
+    # Gymnasium >= 1.1 names the mode with an enum; 1.0 knew next-step autoreset alone.
+    _MODES = getattr(_gym.vector, "AutoresetMode", None)
+    _NEXT_STEP = _MODES.NEXT_STEP if _MODES is not None else "next_step"
 else:  # Debian 12: no gymnasium
     _VectorBase = _SeededWithoutGymnasium
     _NEXT_STEP = "next_step"

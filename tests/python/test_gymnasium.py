@@ -109,7 +109,9 @@ class Wrappers(unittest.TestCase):
         n = 4
         venv = cb.VectorEnv(QUICK, row="orca", num_envs=n, threads=2)
         self.assertIsInstance(venv, gymnasium.vector.VectorEnv)
-        self.assertIs(venv.metadata["autoreset_mode"], gymnasium.vector.AutoresetMode.NEXT_STEP)
+        modes = getattr(gymnasium.vector, "AutoresetMode", None)  # gymnasium >= 1.1
+        self.assertIs(venv.metadata["autoreset_mode"],
+                      modes.NEXT_STEP if modes is not None else "next_step")
         self.assertEqual(venv.single_action_space, cb.Env(QUICK, row="orca").action_space)
         wrappers = gymnasium.wrappers.vector
         stats = envs = wrappers.RecordEpisodeStatistics(venv)
