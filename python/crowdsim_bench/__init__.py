@@ -10,9 +10,12 @@
     venv = cb.VectorEnv("suites/quick.yaml", row="orca", num_envs=16)  # batches, stepped in C++
 
 Env follows the Gymnasium API (reset/step/action_space/observation_space); it subclasses
-gymnasium.Env when gymnasium is installed and works the same without it. Episodes are those of
+gymnasium.Env (and VectorEnv gymnasium.vector.VectorEnv) when gymnasium is installed, passes
+gymnasium.utils.env_checker.check_env, and works the same without it. Episodes are those of
 the suite: `reset(seed=k)` (or `options={"episode": k}`) is episode k of the row, exactly as
 `crowdsim-bench run` simulates it, so a policy stepped from Python meets the same scenarios.
+With gymnasium, importing the package registers ids such as "crowdsim_bench/Table1-v0" for
+gymnasium.make (ENV_IDS; docs/gymnasium.md).
 """
 from __future__ import annotations
 
@@ -47,10 +50,18 @@ __version__ = _core.__version__
 
 try:  # optional: Debian 12 has no gymnasium package
     import gymnasium as _gym
+    import gymnasium.vector  # noqa: F401  (VectorEnv's base, batch_space)
     from gymnasium import spaces as _spaces
 except ImportError:  # pragma: no cover - depends on the machine
     _gym = None
     _spaces = None
+
+# Info keys Gymnasium's wrappers and vector environments write themselves (RecordEpisodeStatistics:
+# `episode`; same-step autoreset: `final_obs`, `final_info`; a vector info's masks: `_` + key):
+# an info of Env or VectorEnv holding one made them fail (the suite's episode index is
+# `episode_index`).
+RESERVED_INFO_KEYS = frozenset(
+    k for key in ("episode", "final_obs", "final_info") for k in (key, "_" + key))
 
 
 class Box:
@@ -107,6 +118,84 @@ def _dict(spaces: dict):
 
 def _discrete_space(n: int):
     return _spaces.Discrete(n) if _spaces is not None else _DiscreteSpace(n)
+
+
+def _batch_space(space, n: int):
+    """`n` of a space side by side, as a vector environment's batch (gymnasium's batch_space:
+    a Box gains a leading axis, a Discrete becomes a MultiDiscrete)."""
+    if _spaces is not None:
+        return _gym.vector.utils.batch_space(space, n)
+    if isinstance(space, Dict):
+        return Dict({k: _batch_space(v, n) for k, v in space.items()})
+    if isinstance(space, _DiscreteSpace):
+        return Box(0, space.n - 1, (n,), dtype=np.int64)
+    return Box(np.broadcast_to(space.low, (n,) + space.shape),
+               np.broadcast_to(space.high, (n,) + space.shape), (n,) + space.shape, space.dtype)
+
+
+# Sensors whose readings' bounds this package knows (sensors/*/README.md).
+_KNOWN_SENSORS = ("person", "lidar2d", "route")
+# Slack on bounds that the core reaches through a rotation or a product (route's waypoint):
+# rounding may pass them by an ulp or two.
+_ROUNDING = 1e-9
+
+
+def _last_time(time_limit: float, time_step: float) -> float:
+    """The latest `time` an observation can hold: that of the step which times the episode out,
+    the first k * time_step at or past time_limit - 1e-9 (the core's rule and arithmetic), which
+    passes time_limit when the time step does not divide it."""
+    k = max(1, math.ceil((time_limit - 1e-9) / time_step))
+    while k > 1 and (k - 1) * time_step >= time_limit - 1e-9:
+        k -= 1
+    while k * time_step < time_limit - 1e-9:
+        k += 1
+    return k * time_step
+
+
+def _observation_spaces(core, probe: dict) -> dict:
+    """One observation's spaces by key, bounded where the suite row fixes the bounds: `time` by
+    the timeout step, `lidar` by the range sensor's max_range, `route`'s waypoint by its
+    lookahead (and its distance >= 0), `humans_mask` 0/1, the robot's heading by +-pi and
+    radii and v_pref >= 0. Positions and velocities stay unbounded (a world declares no
+    extent). `core`: a _core.Env of the row; `probe`: one of its observations (the keys and
+    shapes of the other sensors' features)."""
+    inf = np.inf
+    sensors = list(core.sensor_params)  # [(plugin name, {parameter: value})], the row's order
+    humans = core.humans
+    robot_low = np.array([-inf] * 6 + [0.0, 0.0, -np.pi])  # radius, v_pref >= 0; heading
+    robot_high = np.array([inf] * 8 + [np.pi])
+    humans_low = np.full((humans, 5), -inf)
+    humans_low[:, 4] = 0.0  # radius (0 in the padding rows)
+    spaces = {
+        "robot": _box(robot_low, robot_high, (9,)),
+        "time": _box(0.0, _last_time(core.time_limit, core.time_step), ()),
+        "humans": _box(humans_low, inf, (humans, 5)),
+        "humans_mask": _box(0, 1, (humans,), dtype=np.bool_),
+    }
+    if "lidar" in probe:
+        # The ranges of the first sensor giving any: a lidar2d's unless a sensor this package
+        # does not know comes before it (it may give ranges of its own).
+        max_range = inf
+        for name, params in sensors:
+            if name == "lidar2d":
+                max_range = float(params["max_range"])
+                break
+            if name not in _KNOWN_SENSORS:
+                break
+        spaces["lidar"] = _box(0.0, max_range, np.shape(probe["lidar"]))
+    for name, value in probe.items():  # other sensors' features under their name (route, ...)
+        if name in spaces:
+            continue
+        shape = np.shape(value)
+        params = next((p for n, p in sensors if n == name), None)
+        if name == "route" and params is not None and shape == (3,):
+            # Path distance (m) and the waypoint, at most `lookahead` from the robot.
+            reach = float(params["lookahead"]) * (1.0 + _ROUNDING)
+            spaces[name] = _box(np.array([0.0, -reach, -reach]), np.array([inf, reach, reach]),
+                                shape)
+        else:
+            spaces[name] = _box(-inf, inf, shape)
+    return spaces
 
 
 def holonomic_actions(v_pref: float = 1.0, speeds: int = 5, rotations: int = 16,
@@ -166,7 +255,34 @@ def _action_indices(actions, count: int, shape: tuple) -> np.ndarray:
     return a.astype(np.int64)
 
 
-_Base = _gym.Env if _gym is not None else object
+class _SeededWithoutGymnasium:
+    """gymnasium.Env's and gymnasium.vector.VectorEnv's own part, for machines without
+    gymnasium (Debian 12): `reset(seed=k)` seeds `np_random` (numpy's default generator, as
+    Gymnasium's seeding makes it), and `unwrapped` is the environment itself."""
+
+    _np_random = None
+
+    def reset(self, *, seed: int | None = None, options: dict | None = None):
+        if seed is not None:
+            self._np_random = np.random.default_rng(seed)
+
+    @property
+    def np_random(self) -> np.random.Generator:
+        if self._np_random is None:  # unseeded: from fresh entropy, as Gymnasium's
+            self._np_random = np.random.default_rng()
+        return self._np_random
+
+    @property
+    def unwrapped(self):
+        return self
+
+
+def _python_int(seed):
+    """A numpy integer seed as a Python int (Gymnasium's seeding takes only those)."""
+    return int(seed) if isinstance(seed, np.integer) else seed
+
+
+_Base = _gym.Env if _gym is not None else _SeededWithoutGymnasium
 
 
 class _ClosedByWith:
@@ -189,10 +305,15 @@ class Env(_ClosedByWith, _Base):
     people the person sensor sees, in the robot's frame (x towards the goal), padded to the row's
     human count with `humans_mask` (H,) marking real rows; `lidar` (beams,) ranges in m (only
     when the row has a range sensor); and under its name each sensor reporting other features
-    (`route` (3,): path distance to the goal, waypoint x, y in the robot's frame). Action: a velocity (vx, vy) in m/s, world frame, or with
+    (`route` (3,): path distance to the goal, waypoint x, y in the robot's frame); `time` ()
+    in s. The observation space bounds what the row fixes: `time` by the timeout step, `lidar`
+    by the sensor's max_range, `route`'s waypoint by its lookahead, `humans_mask` 0/1; positions
+    and velocities are unbounded. Action: a velocity (vx, vy) in m/s, world frame, or with
     `discrete=True` an index into `actions` (CrowdNav's 81 holonomic actions). Reward: the
     harness's (success 1, collision -0.25, discomfort penalty). `terminated` on success or
-    collision, `truncated` on timeout; `info["status"]` names the outcome.
+    collision, `truncated` on timeout; `info["status"]` names the outcome and
+    `info["episode_index"]` the suite's episode (never `episode`, which Gymnasium's
+    RecordEpisodeStatistics writes: RESERVED_INFO_KEYS).
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 4}
@@ -214,19 +335,7 @@ class Env(_ClosedByWith, _Base):
             self.action_space = _discrete_space(len(self.actions))
         else:
             self.action_space = _box(-v, v, (2,))
-        obs_spaces = {
-            "robot": _box(-np.inf, np.inf, (9,)),
-            "time": _box(0.0, np.inf, ()),
-            "humans": _box(-np.inf, np.inf, (self._env.humans, 5)),
-            "humans_mask": _box(0, 1, (self._env.humans,), dtype=np.bool_),
-        }
-        probe = self._env.reset(0, False)
-        if "lidar" in probe:
-            obs_spaces["lidar"] = _box(0.0, np.inf, probe["lidar"].shape)
-        for name, value in probe.items():  # other sensors' features (route, ...)
-            if name not in obs_spaces:
-                obs_spaces[name] = _box(-np.inf, np.inf, np.shape(value))
-        self.observation_space = _dict(obs_spaces)
+        self.observation_space = _dict(_observation_spaces(self._env, self._env.reset(0, False)))
 
     # -- Gymnasium API -----------------------------------------------------------------------
     def reset(self, *, seed: int | None = None, options: dict | None = None):
@@ -235,7 +344,8 @@ class Env(_ClosedByWith, _Base):
         episode k of `crowdsim-bench run`, not a random seed; without either, the episode after
         the last one (0 first). A world of frozen layouts reuses them in turn (random_rect's 100:
         episode k + 100 has episode k's layout), so train on another split (set=
-        "world.split=train") than the one tested. info: `episode`, `layout` (the world's name)."""
+        "world.split=train") than the one tested. `seed` also seeds `np_random` (Gymnasium's
+        rule). info: `episode_index` (the suite's episode k), `layout` (the world's name)."""
         if options and "episode" in options:
             episode = _episode_index(options["episode"], 'options["episode"]')
         elif seed is not None:
@@ -245,10 +355,11 @@ class Env(_ClosedByWith, _Base):
             if episode > _MAX_EPISODE:
                 raise ValueError(f"episode {self._episode} was the last episode index: call "
                                  f"reset(seed=k) with k in [0, {_MAX_EPISODE}]")
+        super().reset(seed=_python_int(seed))  # seeds np_random (gymnasium.Env's or the stand-in)
         obs = self._env.reset(episode, self._record)
         self._episode = episode
         self._done = False
-        return self._obs(obs), {"episode": episode, "layout": self._env.result()["layout"]}
+        return self._obs(obs), {"episode_index": episode, "layout": self._env.result()["layout"]}
 
     def step(self, action):
         """Moves the robot for one time step and returns (obs, reward, terminated, truncated,
@@ -256,7 +367,8 @@ class Env(_ClosedByWith, _Base):
         numbers), or with `discrete=True` an index into `actions`. `terminated` on success,
         collision or policy_error (a velocity above 10 x v_pref), `truncated` on timeout;
         info["status"] names the outcome and, at the episode's end, info also holds its metrics
-        (those of `result()`). Stepping an ended episode is an error: call reset()."""
+        (those of `result()`, the episode index as `episode_index`). Stepping an ended episode
+        is an error: call reset()."""
         if self._episode < 0:
             raise ValueError("step() before reset(): call reset() first (Gymnasium's order)")
         if self.discrete:
@@ -272,7 +384,9 @@ class Env(_ClosedByWith, _Base):
         if error:
             info["error"] = error
         if terminated or truncated:
-            info.update(self._env.result())
+            result = self._env.result()
+            result["episode_index"] = result.pop("episode")  # `episode` is Gymnasium's
+            info.update(result)
         return self._obs(obs), float(reward), terminated, truncated, info
 
     def render(self):
@@ -288,11 +402,6 @@ class Env(_ClosedByWith, _Base):
         and running evaluate() at once); the Env cannot be used afterwards."""
         self._env = _Closed("Env")
 
-    # gymnasium.Env's `unwrapped`, for machines without gymnasium (Debian 12)
-    @property
-    def unwrapped(self):
-        return self
-
     # -- extras ------------------------------------------------------------------------------
     @property
     def episodes(self) -> int:
@@ -304,7 +413,8 @@ class Env(_ClosedByWith, _Base):
         return self._env.time_step
 
     def result(self) -> dict:
-        """The current episode's metrics (status, time, path length, ...)."""
+        """The current episode's metrics (status, time, path length, ...; `episode`: its index,
+        as in episodes.csv)."""
         self._require_episode("result()")
         return self._env.result()
 
@@ -440,6 +550,17 @@ def run_suite(suite: str, *, out: str | os.PathLike | None = None, jobs: int = 1
     return rows
 
 
-from .vector import STATUS_NAMES, VectorEnv  # noqa: E402  (uses the helpers above)
+def data_root() -> str:
+    """The folder the package and the CLI find the project's data in (suites/, worlds/,
+    results/models/): $CROWDSIM_DATA_DIR, else PREFIX/share/crowdsim-bench of an installed copy,
+    else the source tree the build came from."""
+    return _core.data_root()
 
-__all__ = ["Env", "VectorEnv", "STATUS_NAMES", "evaluate", "run_suite", "holonomic_actions", "Box", "Dict", "__version__"]
+
+from .vector import STATUS_NAMES, VectorEnv  # noqa: E402  (uses the helpers above)
+from .registration import ENV_IDS, register_envs  # noqa: E402
+
+register_envs()  # gymnasium.make("crowdsim_bench/Table1-v0"), ...; nothing without gymnasium
+
+__all__ = ["Env", "VectorEnv", "STATUS_NAMES", "ENV_IDS", "RESERVED_INFO_KEYS", "evaluate",
+           "run_suite", "holonomic_actions", "data_root", "Box", "Dict", "__version__"]

@@ -24,6 +24,7 @@
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
+#include "crowdsim/data_root.h"
 #include "crowdsim/version.h"
 #include "observation_arrays.h"
 #include "python_policy.h"
@@ -156,6 +157,20 @@ class Env {
   int humans() const { return row_->row.humans.count; }
   std::string label() const { return row_->row.label; }
   std::vector<std::string> sensors() const { return SensorNames(row_->row); }
+
+  /// The row's sensors in their order as (plugin name, {parameter: value}), the schema's
+  /// defaults included: the Python side bounds its observation spaces by them (lidar2d's
+  /// max_range, route's lookahead).
+  py::list sensor_params() const {
+    py::list out;
+    for (const PluginUse& s : row_->row.sensors) {
+      py::dict params;
+      for (const auto& [name, value] : s.params.values())
+        params[py::str(name)] = std::visit([](const auto& v) { return py::cast(v); }, value);
+      out.append(py::make_tuple(s.loaded->descriptor->name, params));
+    }
+    return out;
+  }
 
  private:
   const Episode& Current() const {
@@ -307,6 +322,8 @@ PYBIND11_MODULE(_core, m) {
   m.attr("MAX_EPISODES") = crowdsim::kMaxEpisodes;
   m.attr("__version__") =
       std::string(crowdsim::Version()) + " (commit " + crowdsim::GitCommit() + ")";
+  // Where the CLI finds its data (the Python side registers Gymnasium ids by its suites).
+  m.def("data_root", [] { return crowdsim::DataRoot().string(); });
   py::class_<Env>(m, "Env")
       .def(py::init<const std::string&, const py::object&, const std::vector<std::string>&>(),
            py::arg("suite"), py::arg("row"), py::arg("set") = std::vector<std::string>{})
@@ -321,7 +338,8 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("v_pref", &Env::v_pref)
       .def_property_readonly("humans", &Env::humans)
       .def_property_readonly("label", &Env::label)
-      .def_property_readonly("sensors", &Env::sensors);
+      .def_property_readonly("sensors", &Env::sensors)
+      .def_property_readonly("sensor_params", &Env::sensor_params);
   py::class_<VectorEnv>(m, "VectorEnv")
       .def(py::init([](const std::string& suite, const py::object& row, int num_envs,
                        const std::vector<std::string>& set, int threads) {

@@ -92,9 +92,9 @@ class EnvContract(unittest.TestCase):
         for k in a:
             np.testing.assert_array_equal(a[k], b[k])
         c, info_c = self.env.reset(options={"episode": 8})
-        self.assertEqual(info_c["episode"], 8)
+        self.assertEqual(info_c["episode_index"], 8)
         d, info_d = self.env.reset()  # the next episode
-        self.assertEqual(info_d["episode"], 9)
+        self.assertEqual(info_d["episode_index"], 9)
         self.assertFalse(np.array_equal(a["robot"], c["robot"]))
 
     def test_standing_still_times_out_as_truncated_not_terminated(self):
@@ -438,7 +438,7 @@ class VectorEnvContract(unittest.TestCase):
         self.assertTrue(venv.observation_space.contains(obs))
         self.assertTrue(venv.single_observation_space.contains({k: v[0] for k, v in obs.items()}))
         self.assertEqual(obs["lidar"].shape, (4, 45))
-        self.assertEqual(list(info["episode"]), [0, 1, 2, 3])
+        self.assertEqual(list(info["episode_index"]), [0, 1, 2, 3])
         obs, reward, terminated, truncated, info = venv.step(np.zeros((4, 2)))
         self.assertEqual(reward.shape, (4,))
         self.assertEqual(terminated.dtype, np.bool_)
@@ -475,7 +475,7 @@ class VectorEnvContract(unittest.TestCase):
             for t, (bobs, reward, terminated, truncated, info) in enumerate(log[1:], start=1):
                 if ended:  # the step after the end: the next episode of this sub-environment
                     self.assertEqual(reward[i], 0.0)
-                    self.assertEqual(info["episode"][i], episode + self.N)
+                    self.assertEqual(info["episode_index"][i], episode + self.N)
                     self.assertEqual(bobs["time"][i], 0.0)
                     obs, _ = cb.Env(QUICK, row="linear").reset(seed=episode + self.N)
                     np.testing.assert_array_equal(bobs["robot"][i], obs["robot"])
@@ -508,7 +508,195 @@ class VectorEnvContract(unittest.TestCase):
                 np.testing.assert_array_equal(a[0][key], b[0][key])
             for k in range(1, 4):
                 np.testing.assert_array_equal(a[k], b[k])
-            np.testing.assert_array_equal(a[4]["episode"], b[4]["episode"])
+            np.testing.assert_array_equal(a[4]["episode_index"], b[4]["episode_index"])
+
+
+ROUTE = ["rows[orca].sensors=[person, {type: lidar2d, beams: 45}, route]"]
+# The observation and action configurations the package has: (Env kwargs, what they are).
+CONFIGURATIONS = [
+    ({}, "person + lidar, continuous"),
+    ({"discrete": True}, "person + lidar, discrete"),
+    ({"render_mode": "rgb_array"}, "rgb_array"),
+    ({"set": ROUTE}, "person + lidar + route"),
+    ({"set": "robot.sensors=[{type: lidar2d, beams: 9, fov_deg: 360, max_range: 3}]"},
+     "lidar alone"),
+    ({"set": "robot.sensors=[person]"}, "person alone"),
+]
+
+
+def sampled_episodes(env, episodes):
+    """(obs, info) of every reset and step of `episodes` episodes with sampled actions."""
+    env.action_space.seed(0)
+    for k in range(episodes):
+        obs, info = env.reset(seed=k)
+        yield obs, info
+        while True:
+            obs, _, terminated, truncated, info = env.step(env.action_space.sample())
+            yield obs, info
+            if terminated or truncated:
+                break
+
+
+def outside(space, obs):
+    """The keys of a dict observation its Dict space does not contain (for the messages)."""
+    return [k for k in obs if not space[k].contains(obs[k])]
+
+
+class SpacesAndInfosAsGymnasiumWantsThem(unittest.TestCase):
+    """What Gymnasium's check_env and wrappers rely on, checked with or without gymnasium
+    (test_gymnasium.py runs Gymnasium's own tools when it is installed): bounded observation
+    spaces that hold every observation, info keys clear of the names Gymnasium writes itself,
+    and reset(seed=) seeding np_random."""
+
+    def test_observation_bounds_are_the_rows_own(self):
+        # Every Box was (-inf, inf): lidar ranges, time and the route's waypoint have bounds.
+        space = cb.Env(QUICK, row="orca").observation_space
+        np.testing.assert_array_equal(space["lidar"].low, np.zeros(45))
+        np.testing.assert_array_equal(space["lidar"].high, np.full(45, 5.0))  # max_range: 5
+        self.assertEqual((float(space["time"].low), float(space["time"].high)), (0.0, 25.0))
+        self.assertEqual(space["humans_mask"].dtype, np.bool_)
+        self.assertEqual((space["humans_mask"].low.min(), space["humans_mask"].high.max()),
+                         (False, True))
+        self.assertEqual((space["robot"].low[8], space["robot"].high[8]), (-math.pi, math.pi))
+        self.assertEqual(space["robot"].low[6], 0.0)  # radius
+        self.assertTrue(np.all(space["humans"].low[:, 4] == 0.0))  # radii
+        route = cb.Env(QUICK, row="orca", set=ROUTE).observation_space["route"]
+        self.assertEqual(route.low[0], 0.0)  # path distance
+        np.testing.assert_allclose(route.high[1:], 1.0, rtol=1e-8)  # lookahead 1 m
+        np.testing.assert_allclose(route.low[1:], -1.0, rtol=1e-8)
+        # The row's own sensor parameters, set= included.
+        lidar = cb.Env(QUICK, row="orca", set=CONFIGURATIONS[4][0]["set"]).observation_space
+        self.assertEqual(lidar["lidar"].shape, (9,))
+        np.testing.assert_array_equal(lidar["lidar"].high, np.full(9, 3.0))
+        near = cb.Env(QUICK, row="orca", set=[
+            "rows[orca].sensors=[person, {type: lidar2d, beams: 45}, "
+            "{type: route, lookahead: 2.5}]"]).observation_space["route"]
+        np.testing.assert_allclose(near.high[1:], 2.5, rtol=1e-8)
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=3)
+        for key, single in venv.single_observation_space.items():
+            np.testing.assert_array_equal(single.high, space[key].high, key)
+            np.testing.assert_array_equal(venv.observation_space[key].low[2], single.low, key)
+            np.testing.assert_array_equal(venv.observation_space[key].high[2], single.high, key)
+
+    def test_the_time_bound_is_the_timeout_steps_time(self):
+        # 0.3 s does not divide 25 s: the 84th step (25.2 s) times the episode out.
+        env = cb.Env(QUICK, row="orca", set="sim.time_step=0.3")
+        self.assertAlmostEqual(float(env.observation_space["time"].high), 25.2, places=12)
+        for seed in range(10):  # standing still until a timeout (a human may walk into it)
+            env.reset(seed=seed)
+            while True:
+                obs, _, terminated, truncated, info = env.step([0.0, 0.0])
+                self.assertTrue(env.observation_space["time"].contains(obs["time"]))
+                if terminated or truncated:
+                    break
+            if truncated:
+                self.assertEqual(float(obs["time"]), float(env.observation_space["time"].high))
+                break
+        self.assertTrue(truncated, "no episode of 10 timed out")
+
+    def test_every_observation_is_in_the_space(self):
+        for kwargs, what in CONFIGURATIONS:
+            env = cb.Env(QUICK, row="orca", **kwargs)
+            for n, (obs, _) in enumerate(sampled_episodes(env, 12)):
+                self.assertEqual(set(obs), set(env.observation_space.keys()), what)
+                self.assertTrue(env.observation_space.contains(obs),
+                                f"{what}, observation {n}: {outside(env.observation_space, obs)}")
+        for discrete in (False, True):
+            venv = cb.VectorEnv(QUICK, row="orca", num_envs=4, set=ROUTE, discrete=discrete)
+            venv.action_space.seed(1)
+            obs, _ = venv.reset(seed=0)
+            for step in range(150):  # random velocities: episodes of ~17 steps, autoresets
+                self.assertTrue(venv.observation_space.contains(obs),
+                                f"step {step}: {outside(venv.observation_space, obs)}")
+                for i in range(4):
+                    self.assertTrue(venv.single_observation_space.contains(
+                        {k: v[i] for k, v in obs.items()}))
+                self.assertTrue(venv.action_space.contains(venv.action_space.sample()))
+                obs, *_ = venv.step(venv.action_space.sample())
+
+    def test_info_keys_avoid_the_names_gymnasium_writes(self):
+        # reset()'s info had `episode`, which RecordEpisodeStatistics writes at an episode's
+        # end (it asserted), as did the last step's info and VectorEnv's every info.
+        self.assertEqual(cb.RESERVED_INFO_KEYS, {"episode", "_episode", "final_obs",
+                                                 "_final_obs", "final_info", "_final_info"})
+        env = cb.Env(QUICK, row="orca")
+        ends = 0
+        for obs, info in sampled_episodes(env, 5):
+            self.assertFalse(cb.RESERVED_INFO_KEYS & set(info), sorted(info))
+            ends += "steps" in info  # the metrics of the episode's end
+            if "steps" in info or obs["time"] == 0.0:
+                self.assertIn("episode_index", info)
+        self.assertEqual(ends, 5)
+        _, info = env.reset(seed=4)
+        self.assertEqual(info["episode_index"], 4)
+        self.assertEqual(env.result()["episode"], 4)  # result() keeps episodes.csv's name
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=3)
+        infos = [venv.reset(seed=6)[1]] + [venv.step(np.zeros((3, 2)))[4] for _ in range(3)]
+        for info in infos:
+            self.assertFalse(cb.RESERVED_INFO_KEYS & set(info), sorted(info))
+            for key in [k for k in info if not k.startswith("_")]:
+                np.testing.assert_array_equal(info["_" + key], np.ones(3, bool), key)
+        np.testing.assert_array_equal(infos[0]["episode_index"], [6, 7, 8])
+        self.assertEqual(set(infos[1]), {"status", "_status", "episode_index", "_episode_index"})
+
+    def test_a_reset_mask_is_refused(self):
+        # Gymnasium's reset(options={"reset_mask": ...}) resets some sub-environments only: it
+        # started them all again, without a word.
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=2)
+        venv.reset(seed=0)
+        with self.assertRaisesRegex(ValueError, "reset_mask.*not supported"):
+            venv.reset(options={"reset_mask": np.array([True, False])})
+
+    def test_reset_seed_seeds_np_random(self):
+        # check_env: "Expects the random number generator to have been generated given a seed
+        # was passed to reset".
+        for env in (cb.Env(QUICK, row="orca"), cb.VectorEnv(QUICK, row="orca", num_envs=2)):
+            env.reset(seed=123)
+            first = env.np_random.integers(1 << 30, size=4)
+            env.reset()
+            env.reset(seed=np.int64(123))  # a numpy seed too (an episode index, as before)
+            np.testing.assert_array_equal(env.np_random.integers(1 << 30, size=4), first)
+            env.reset(seed=456)
+            self.assertFalse(np.array_equal(env.np_random.integers(1 << 30, size=4), first))
+
+    def test_without_gymnasium_the_package_works_the_same(self):
+        # Debian 12 has no gymnasium: the stand-in spaces, seeding and info keys, no ids.
+        code = """if True:
+            import sys, json
+            sys.modules["gymnasium"] = None
+            import numpy as np
+            import crowdsim_bench as cb
+            env = cb.Env("suites/quick.yaml", row="orca")
+            obs, info = env.reset(seed=5)
+            a = env.np_random.integers(1000)
+            env.reset(seed=5)
+            venv = cb.VectorEnv("suites/quick.yaml", row="orca", num_envs=2, discrete=True)
+            vobs, vinfo = venv.reset(seed=5)
+            _, _, _, _, step_info = venv.step(np.array([0, 80]))
+            print(json.dumps({
+                "box": type(env.observation_space["lidar"]).__name__,
+                "lidar_high": float(env.observation_space["lidar"].high.max()),
+                "time_high": float(env.observation_space["time"].high),
+                "contains": bool(env.observation_space.contains(obs)
+                                 and venv.observation_space.contains(vobs)),
+                "info": sorted(info), "vinfo": sorted(vinfo), "step_info": sorted(step_info),
+                "seeded": bool(a == env.np_random.integers(1000)),
+                "ids": sorted(cb.ENV_IDS)[:1],
+                "autoreset": venv.metadata["autoreset_mode"],
+                "unwrapped": venv.unwrapped is venv and env.unwrapped is env}))
+        """
+        done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                              env=dict(os.environ), check=False)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        import json
+        got = json.loads(done.stdout)
+        self.assertEqual(got, {
+            "box": "Box", "lidar_high": 5.0, "time_high": 25.0, "contains": True,
+            "info": ["episode_index", "layout"],
+            "vinfo": ["_episode_index", "episode_index"],
+            "step_info": ["_episode_index", "_status", "episode_index", "status"],
+            "seeded": True, "ids": ["crowdsim_bench/CrowdNav-v0"], "autoreset": "next_step",
+            "unwrapped": True})
 
 
 class UserMistakes(unittest.TestCase):
