@@ -48,12 +48,9 @@ def table(name: str, compact: bool = False) -> str:
     head = info + ["success [95% CI]"] + (["paper"] if with_paper else []) + \
         ["collision"] + (["paper"] if with_paper else []) + ["timeout"] + \
         (["paper"] if with_paper else []) + ["nav. time"] + (["paper"] if with_paper else [])
-    lines = ["| " + " | ".join(HEADER.get(c, c) for c in head) + " |",
-             "|" + "|".join("---" if c in info else "---:" for c in head) + "|"]
+    lines = header_lines(head, info)
     for r in rows:
-        cells = [r[c] for c in info]
-        cells.append(f"{rate(r, 'success rate')} [{float(r['success 95% low']):.3f}, "
-                     f"{float(r['success 95% high']):.3f}]")
+        cells = [r[c] for c in info] + [success_cell(r)]
         for ours, theirs in (("success rate", "success"), ("collision rate", "collision"),
                              ("timeout rate", "timeout"), ("nav. time", "nav. time")):
             if ours != "success rate":
@@ -65,14 +62,23 @@ def table(name: str, compact: bool = False) -> str:
     return "\n".join(lines) + "\n"
 
 
+def header_lines(head, info):
+    """A Markdown table's header and alignment rows: info columns left, figures right."""
+    return ["| " + " | ".join(HEADER.get(c, c) for c in head) + " |",
+            "|" + "|".join("---" if c in info else "---:" for c in head) + "|"]
+
+
+def success_cell(r) -> str:
+    """The success rate with its 95% interval."""
+    return (f"{rate(r, 'success rate')} [{float(r['success 95% low']):.3f}, "
+            f"{float(r['success 95% high']):.3f}]")
+
+
 def compact_table(rows, info, with_paper: bool) -> str:
     head = info + ["success [95% CI]"] + (["paper"] if with_paper else [])
-    lines = ["| " + " | ".join(HEADER.get(c, c) for c in head) + " |",
-             "|" + "|".join("---" if c in info else "---:" for c in head) + "|"]
+    lines = header_lines(head, info)
     for r in rows:
-        cells = [r[c] for c in info]
-        cells.append(f"{rate(r, 'success rate')} [{float(r['success 95% low']):.3f}, "
-                     f"{float(r['success 95% high']):.3f}]")
+        cells = [r[c] for c in info] + [success_cell(r)]
         if with_paper:
             cells.append(paper(r, "success"))
         lines.append("| " + " | ".join(cells) + " |")

@@ -64,6 +64,11 @@ for c in "${commands[@]}"; do
       continue
     fi
     c="${c/ \/usr\/bin\/python3 / $python }"
+    # docs/gymnasium.md's commands run in a venv with gymnasium (not a Debian 12 package).
+    if [[ "$c" == *"~/venv-gym/bin/python"* ]] && [[ ! -x "$HOME/venv-gym/bin/python" ]]; then
+      echo "SKIP (no ~/venv-gym with gymnasium, docs/gymnasium.md): $c"
+      continue
+    fi
     if [[ "$c" == *_torch.py* ]] && ! "$python" -c "import torch" 2>/dev/null; then
       echo "SKIP (no python3-torch): $c"
       continue

@@ -5,7 +5,9 @@ test says it was skipped and how to get gymnasium (test_crowdsim_bench.py checks
 contract without gymnasium). Run by ctest (python_package) from the source root with the
 build's python/ folder on PYTHONPATH."""
 import math
+import os
 import re
+import sys
 import unittest
 import warnings
 
@@ -20,17 +22,10 @@ except ImportError:  # Debian 12 has no python3-gymnasium
 
 import crowdsim_bench as cb
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from test_crowdsim_bench import CONFIGURATIONS, ROUTE  # noqa: E402  the same configurations
+
 QUICK = "suites/quick.yaml"
-ROUTE = ["rows[orca].sensors=[person, {type: lidar2d, beams: 45}, route]"]
-CONFIGURATIONS = [  # as test_crowdsim_bench.py's
-    ({}, "person + lidar, continuous"),
-    ({"discrete": True}, "person + lidar, discrete"),
-    ({"render_mode": "rgb_array"}, "rgb_array"),
-    ({"set": ROUTE}, "person + lidar + route"),
-    ({"set": "robot.sensors=[{type: lidar2d, beams: 9, fov_deg: 360, max_range: 3}]"},
-     "lidar alone"),
-    ({"set": "robot.sensors=[person]"}, "person alone"),
-]
 NO_GYMNASIUM = (
     "gymnasium is not installed (Debian 12 has no package of it); to run this test: apt install "
     "python3-venv, python3 -m venv --system-site-packages ~/venv-gym, ~/venv-gym/bin/pip install "
