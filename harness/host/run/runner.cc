@@ -24,131 +24,24 @@
 #include "run/output_folder.h"
 #include "run/run_progress.h"
 #include "run/stored_episodes.h"
+#include "run/suite_row.h"
 #include "run/worker_process.h"
 #include "spec/config_text.h"
 
 namespace crowdsim {
 namespace fs = std::filesystem;
 
-namespace {
-
-/// How preflight errors name row `r`: "row 'orca' (rows[1])".
-std::string RowPlace(const Suite& suite, size_t r) {
-  return "row '" + suite.rows[r].label + "' (rows[" + std::to_string(r) + "])";
-}
-
-/// A row as its preflight built it: the world, the plugins and episode 0's scenario.
-struct PreflightedRow {
-  std::shared_ptr<WorldSource> world;
-  std::unique_ptr<RowInstance> instance;
-  Scenario episode0;
-};
-
-/// Builds row `r`'s world, sensors and policies once, checks that the robot has the sensors
-/// it needs, and makes and checks episode 0's scenario as the run does (a world too small for
-/// the row's humans fails here, in `validate` too). Throws RunError naming the row.
-PreflightedRow PreflightRow(const Suite& suite, size_t r, PluginRegistry& registry) {
-  const RowSpec& row = suite.rows[r];
-  const std::string where = RowPlace(suite, r);
-  try {
-    PreflightedRow built;
-    built.world = registry.MakeWorld(*row.world.loaded, row.world.params);
-    built.instance = std::make_unique<RowInstance>(row, registry);
-    built.instance->Agents(1);
-    if (const std::string unmet = built.instance->UnmetSensorNeed(); !unmet.empty()) {
-      throw RunError(where + ": " + unmet + "; add it to the row's sensors list");
-    }
-    if (const std::string unmet = built.instance->HumansNeedRobotOnly(); !unmet.empty()) {
-      throw RunError(where + ": " + unmet + " (a human sees the others through the neighbour " +
-                     "index); " + kPlainHumansPolicy);
-    }
-    try {
-      built.episode0 = MakeEpisodeScenario(suite, row, *built.world, 0);
-      CheckScenario(built.episode0, suite.sim);
-    } catch (const std::exception& e) {
-      throw RunError(where + ": the scenario of episode 0 (world '" +
-                     row.world.loaded->descriptor->name + "') cannot be made: " + e.what());
-    }
-    return built;
-  } catch (const RunError&) {
-    throw;
-  } catch (const std::exception& e) {
-    // A plugin error, or a plugin's own exception from outside its factory (Needs()): the
-    // row named, and refused as nothing has run (a throwing Needs() said only its message).
-    throw RunError(where + ": " + e.what());
-  }
-}
-
-/// The first step of episode 0, played as a run plays it: what fails on every step (a lidar
-/// whose beams do not fit a learned policy, a sensor that throws) fails before the run, not as
-/// a table of policy errors. Only in a row of the harness's own plugins that needs no
-/// isolation under `mode` (RowNeedsIsolation): the others run isolated, and their crash or hang
-/// would end this process; and a plugin of yours may fail at its first step on purpose. Throws
-/// RunError naming the row.
-void CheckFirstStep(const Suite& suite, size_t r, PreflightedRow& built, IsolationMode mode) {
-  const RowSpec& row = suite.rows[r];
-  const std::string where = RowPlace(suite, r);
-  if (!AllHarnessPlugins(row) || RowNeedsIsolation(suite, row, mode)) return;
-  try {
-    const Scenario& scenario = built.episode0;
-    Episode episode(scenario, suite.sim, built.instance->Agents(scenario.humans.size()));
-    if (!episode.done()) episode.Step();
-    if (episode.result().status == EpisodeStatus::kPolicyError) {
-      throw RunError(where + ": the first step of episode 0 fails: " + episode.result().error);
-    }
-  } catch (const RunError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw RunError(where + ": episode 0 cannot start: " + e.what());
-  }
-}
-
-/// The scenarios of the first episode of each of the world's other frozen layouts (episodes
-/// 1 .. min(`episodes`, LayoutCount()) - 1; episode 0's is the preflight's): a crowd that fits
-/// the first room of a world set but not a smaller one stopped the run at that room's first
-/// episode, after `validate` had said ok. `checked` holds the (world, crowd) pairs an earlier
-/// row passed with, whose scenarios this row's would repeat. Only for the harness's own world
-/// plugins: a world of yours that crashes or hangs in one layout costs its episodes in an
-/// isolated run, not the run. Throws RunError naming the row and the episode.
-void CheckEveryLayout(const Suite& suite, size_t r, const WorldSource& world, int episodes,
-                      std::set<std::string>* checked) {
-  const RowSpec& row = suite.rows[r];
-  if (!PluginRegistry::IsHarnessPlugin(*row.world.loaded)) return;
-  const int layouts = std::min(episodes, world.LayoutCount());
-  if (layouts < 2) return;
-  // The world by its canonical text (parameters and the content of the files it reads), not
-  // its Identity(): a world set's identity is its file's name alone, so rooms.yaml of another
-  // folder, other rooms, skipped the check as if it had passed.
-  std::ostringstream crowd;
-  suite_internal::Canonical(row.world, crowd);
-  crowd << " " << row.humans.count << " " << static_cast<int>(row.humans.goal_mode);
-  if (checked->count(crowd.str())) return;
-  for (int k = 1; k < layouts; ++k) {
-    try {
-      CheckScenario(MakeEpisodeScenario(suite, row, world, k), suite.sim);
-    } catch (const std::exception& e) {
-      throw RunError(RowPlace(suite, r) + ": the scenario of episode " + std::to_string(k) +
-                     " (world '" + row.world.loaded->descriptor->name +
-                     "') cannot be made: " + e.what());
-    }
-  }
-  checked->insert(crowd.str());
-}
-
-}  // namespace
-
 std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& registry) {
   std::vector<std::string> errors;
   std::set<std::string> checked;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
+    SuiteRow row(suite, r);
     try {
-      PreflightedRow built = PreflightRow(suite, r, registry);
-      CheckEveryLayout(suite, r, *built.world, suite.episodes, &checked);
-      CheckFirstStep(suite, r, built, suite.isolation);
+      row.Preflight(registry, suite.episodes, suite.isolation, &checked);
     } catch (const RunError& e) {
       errors.push_back(e.what());
     } catch (const std::exception& e) {
-      errors.push_back(RowPlace(suite, r) + ": episode 0 cannot start: " + e.what());
+      errors.push_back(row.Place() + ": episode 0 cannot start: " + e.what());
     }
   }
   return errors;
@@ -229,29 +122,25 @@ fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
   return dir;
 }
 
-/// Builds every row's objects once, so a bad parameter stops the run before any episode with
-/// the plugin's own message; returns the rows' worlds and records their identities.
-std::vector<std::shared_ptr<WorldSource>> PreflightRows(const Suite& suite,
-                                                        PluginRegistry& registry, RunFacts* facts,
-                                                        IsolationMode mode) {
-  // Every row is checked before any episode, and every row at fault is named (a suite of
-  // three rows with missing weights said only the first); nothing is run then.
-  std::vector<std::shared_ptr<WorldSource>> worlds;
+/// Preflights every row (SuiteRow::Preflight), so a bad parameter stops the run before any
+/// episode with the plugin's own message, every row at fault named; records the worlds'
+/// identities.
+std::vector<SuiteRow> PreflightRows(const Suite& suite, PluginRegistry& registry, RunFacts* facts,
+                                    IsolationMode mode) {
+  std::vector<SuiteRow> rows;
   std::vector<std::string> errors;
   std::set<std::string> checked;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
+    rows.emplace_back(suite, r);
     try {
-      PreflightedRow built = PreflightRow(suite, r, registry);
-      CheckEveryLayout(suite, r, *built.world, facts->episodes, &checked);
-      CheckFirstStep(suite, r, built, mode);
-      worlds.push_back(built.world);
-      facts->world_identities[suite.rows[r].label] = worlds.back()->Identity();
+      rows.back().Preflight(registry, facts->episodes, mode, &checked);
+      facts->world_identities[suite.rows[r].label] = rows.back().world()->Identity();
     } catch (const RunError& e) {
       errors.push_back(e.what());
     }
   }
   if (!errors.empty()) throw RowsRefused(std::move(errors));
-  return worlds;
+  return rows;
 }
 
 std::string EpisodesCsvText(const std::vector<const EpisodeLine*>& lines) {
@@ -305,22 +194,6 @@ std::vector<PolicyErrorNote> PolicyErrorNotes(const Suite& suite, const EpisodeL
   return notes;
 }
 
-/// One episode as the CLI runs it, with its line for episodes.csv.
-EpisodeLine RunEpisode(const Suite& suite, const RowSpec& row, const WorldSource& world,
-                       RowInstance& instance, int episode_index) {
-  EpisodeLine line;
-  line.row = row.label;
-  line.episode = episode_index;
-  ScenarioRequest req;
-  const Scenario scenario = MakeEpisodeScenario(suite, row, world, episode_index, &req);
-  Episode episode(scenario, suite.sim, instance.Agents(scenario.humans.size()));
-  const EpisodeResult& result = episode.Run();
-  line.seed = req.seed;
-  line.layout = scenario.layout;
-  line.outcome = result;
-  return line;
-}
-
 /// Where finished episodes go: appended to episodes.csv (EpisodeAppender: written within
 /// `max_delay`, at once when zero), counted on the progress line and added to `done`. Not
 /// thread-safe.
@@ -361,14 +234,9 @@ class EpisodeSink {
 // The failure of a run whose RunOptions::stop_requested said stop.
 constexpr const char* kStopped = "stopped on request";
 
-std::string Where(const RowSpec& row, int episode) {
-  return "row '" + row.label + "', episode " + std::to_string(episode);
-}
-
 /// Runs the tasks on `jobs` threads, each with its own plugin instances. Throws RunError
 /// naming the row and episode of the first failure, or the reason an append failed.
-void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
-                       const std::vector<std::shared_ptr<WorldSource>>& worlds,
+void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& registry,
                        const std::vector<Task>& tasks, int jobs,
                        const std::function<bool()>& stop_requested, EpisodeSink& sink) {
   std::mutex mutex;
@@ -376,7 +244,7 @@ void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
   std::atomic<bool> failed{false};
   std::string failure;
   auto worker = [&]() {
-    std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());
+    std::vector<std::unique_ptr<RowInstance>> instances(rows.size());
     while (!failed) {
       if (stop_requested && stop_requested()) {
         std::lock_guard<std::mutex> lock(mutex);
@@ -387,15 +255,15 @@ void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
       const size_t t = next.fetch_add(1);
       if (t >= tasks.size()) break;
       const Task task = tasks[t];
-      const RowSpec& row = suite.rows[task.row];
+      const SuiteRow& row = rows[task.row];
       EpisodeLine line;
       try {
         auto& inst = instances[task.row];
-        if (!inst) inst = std::make_unique<RowInstance>(row, registry);
-        line = RunEpisode(suite, row, *worlds[task.row], *inst, task.episode);
+        if (!inst) inst = std::make_unique<RowInstance>(row.spec(), registry);
+        line = row.Run(*inst, task.episode);
       } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(mutex);
-        if (!failed) failure = Where(row, task.episode) + ": " + e.what();
+        if (!failed) failure = row.Where(task.episode) + ": " + e.what();
         failed = true;
         break;
       }
@@ -415,56 +283,27 @@ void RunTasksInThreads(const Suite& suite, PluginRegistry& registry,
   sink.Finish(failure);
 }
 
-/// The plugins a crash of `row` is laid to: those not of the harness (loaded by path or from
-/// CROWDSIM_PLUGIN_PATH), or the robot's policy when all are the harness's own.
-std::string Suspects(const RowSpec& row) {
-  auto name = [](const std::string& role, const PluginUse& u) {
-    return role + " '" + std::string(u.loaded->descriptor->name) + "' (" + u.loaded->path.string() +
-           ")";
-  };
-  std::string named;
-  for (const auto& [role, use] : RowPlugins(row)) {
-    if (!PluginRegistry::IsHarnessPlugin(*use->loaded))
-      named += (named.empty() ? "" : ", ") + name(role, *use);
-  }
-  return named.empty() ? name("policy", row.policy) : named;
-}
-
-/// The line of an episode whose worker died or was killed: no result, its own status.
-EpisodeLine LostEpisodeLine(const Suite& suite, const RowSpec& row, const WorldSource& world,
-                            int episode, const WorkerLoss& loss) {
-  EpisodeLine line;
-  line.row = row.label;
-  line.episode = episode;
-  line.seed = MakeEpisodeRequest(suite, row, world, episode).seed;
-  line.outcome.status = loss.kind == WorkerLoss::Kind::kTimeout ? EpisodeStatus::kPolicyTimeout
-                                                                : EpisodeStatus::kPolicyCrash;
-  line.outcome.error = "worker process " + loss.Describe() + " while running " + Suspects(row);
-  return line;
-}
-
 /// Runs the tasks in `jobs` worker processes (worker_process.h): an episode whose worker dies
 /// or runs past the suite's episode_timeout_s is recorded as policy_crash / policy_timeout,
 /// named on stderr, and the run goes on. Throws RunError as RunTasksInThreads does, and when a
 /// worker was stopped from outside (SIGINT, SIGTERM, SIGHUP).
-void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
-                         const std::vector<std::shared_ptr<WorldSource>>& worlds,
-                         const std::vector<Task>& tasks, int jobs,
+void RunTasksInProcesses(const Suite& suite, const std::vector<SuiteRow>& rows,
+                         PluginRegistry& registry, const std::vector<Task>& tasks, int jobs,
                          const std::function<bool()>& stop_requested, EpisodeSink& sink) {
-  std::vector<std::unique_ptr<RowInstance>> instances(suite.rows.size());  // a worker's own
+  std::vector<std::unique_ptr<RowInstance>> instances(rows.size());  // a worker's own
   std::string failure;
   WorkerPoolCallbacks callbacks;
   callbacks.run = [&](size_t t) -> std::string {
     const Task task = tasks[t];
-    const RowSpec& row = suite.rows[task.row];
+    const SuiteRow& row = rows[task.row];
     try {
       auto& inst = instances[task.row];
-      if (!inst) inst = std::make_unique<RowInstance>(row, registry);
+      if (!inst) inst = std::make_unique<RowInstance>(row.spec(), registry);
       std::string bytes = "L";
-      bytes += EncodeEpisodeLine(RunEpisode(suite, row, *worlds[task.row], *inst, task.episode));
+      bytes += EncodeEpisodeLine(row.Run(*inst, task.episode));
       return bytes;
     } catch (const std::exception& e) {
-      return "E" + Where(row, task.episode) + ": " + e.what();
+      return "E" + row.Where(task.episode) + ": " + e.what();
     }
   };
   callbacks.done = [&](size_t, const std::string& bytes) {
@@ -481,15 +320,15 @@ void RunTasksInProcesses(const Suite& suite, PluginRegistry& registry,
   };
   callbacks.lost = [&](size_t t, const WorkerLoss& loss) {
     const Task task = tasks[t];
-    const RowSpec& row = suite.rows[task.row];
+    const SuiteRow& row = rows[task.row];
     if (loss.Interrupted()) {
-      failure = Where(row, task.episode) + ": its worker process was " + loss.Describe() +
+      failure = row.Where(task.episode) + ": its worker process was " + loss.Describe() +
                 " from outside the run";
       return false;
     }
-    EpisodeLine line = LostEpisodeLine(suite, row, *worlds[task.row], task.episode, loss);
+    EpisodeLine line = row.Lost(task.episode, loss);
     std::fprintf(stderr, "%s (rows[%d]): %s; recorded as %s, the run goes on\n",
-                 Where(row, task.episode).c_str(), task.row, line.outcome.error.c_str(),
+                 row.Where(task.episode).c_str(), task.row, line.outcome.error.c_str(),
                  EpisodeStatusName(line.outcome.status));
     return sink.Add(std::move(line), &failure);
   };
@@ -582,8 +421,10 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
 
   RunSummary summary;
   // Before the folder is made.
-  const auto worlds =
+  const std::vector<SuiteRow> rows =
       PreflightRows(suite, registry, &facts, options.isolation.value_or(suite.isolation));
+  std::vector<std::shared_ptr<WorldSource>> worlds;
+  for (const SuiteRow& row : rows) worlds.push_back(row.world());
   summary.out_dir = PrepareOutDir(suite, options);
   std::string refused;
   const auto lock = options.out_dir_claimed
@@ -624,9 +465,9 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
       facts.isolated ? std::chrono::milliseconds(0) : EpisodeAppender::kThreadedRunDelay, progress,
       &done);
   if (facts.isolated) {
-    RunTasksInProcesses(suite, registry, worlds, tasks, facts.jobs, options.stop_requested, sink);
+    RunTasksInProcesses(suite, rows, registry, tasks, facts.jobs, options.stop_requested, sink);
   } else {
-    RunTasksInThreads(suite, registry, worlds, tasks, facts.jobs, options.stop_requested, sink);
+    RunTasksInThreads(rows, registry, tasks, facts.jobs, options.stop_requested, sink);
   }
   summary.episodes_run = static_cast<int>(tasks.size());
   summary.policy_errors = PolicyErrorNotes(suite, done);

@@ -1,0 +1,135 @@
+#include "run/suite_row.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "crowdsim/bench/runner.h"
+#include "spec/config_text.h"
+
+namespace crowdsim {
+
+std::string SuiteRow::Place() const {
+  return "row '" + spec().label + "' (rows[" + std::to_string(index_) + "])";
+}
+
+std::string SuiteRow::Where(int episode) const {
+  return "row '" + spec().label + "', episode " + std::to_string(episode);
+}
+
+void SuiteRow::Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
+                         std::set<std::string>* checked) {
+  const RowSpec& row = spec();
+  std::unique_ptr<RowInstance> instance;
+  Scenario episode0;
+  try {
+    world_ = registry.MakeWorld(*row.world.loaded, row.world.params);
+    instance = std::make_unique<RowInstance>(row, registry);
+    instance->Agents(1);
+    if (const std::string unmet = instance->UnmetSensorNeed(); !unmet.empty()) {
+      throw RunError(Place() + ": " + unmet + "; add it to the row's sensors list");
+    }
+    if (const std::string unmet = instance->HumansNeedRobotOnly(); !unmet.empty()) {
+      throw RunError(Place() + ": " + unmet + " (a human sees the others through the neighbour " +
+                     "index); " + kPlainHumansPolicy);
+    }
+    try {
+      episode0 = MakeEpisodeScenario(suite_, row, *world_, 0);
+      CheckScenario(episode0, suite_.sim);
+    } catch (const std::exception& e) {
+      throw RunError(Place() + ": the scenario of episode 0 (world '" +
+                     row.world.loaded->descriptor->name + "') cannot be made: " + e.what());
+    }
+  } catch (const RunError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // A plugin's error, or its own exception outside its factory (Needs()): the row named.
+    throw RunError(Place() + ": " + e.what());
+  }
+  CheckEveryLayout(episodes, checked);
+  CheckFirstStep(*instance, episode0, mode);
+}
+
+// The first scenario of each other frozen layout among the first `episodes` (episode 0's is
+// checked already): a crowd may fit one room of a world set and not a smaller one. Only for
+// the harness's own worlds: one of yours that fails in a layout costs its episodes, isolated.
+void SuiteRow::CheckEveryLayout(int episodes, std::set<std::string>* checked) const {
+  const RowSpec& row = spec();
+  if (!PluginRegistry::IsHarnessPlugin(*row.world.loaded)) return;
+  const int layouts = std::min(episodes, world_->LayoutCount());
+  if (layouts < 2) return;
+  // A world is known by its canonical text (parameters and file contents), not Identity(),
+  // which names a world set by its file name alone.
+  std::ostringstream crowd;
+  suite_internal::Canonical(row.world, crowd);
+  crowd << " " << row.humans.count << " " << static_cast<int>(row.humans.goal_mode);
+  if (checked->count(crowd.str())) return;
+  for (int k = 1; k < layouts; ++k) {
+    try {
+      CheckScenario(MakeEpisodeScenario(suite_, row, *world_, k), suite_.sim);
+    } catch (const std::exception& e) {
+      throw RunError(Place() + ": the scenario of episode " + std::to_string(k) + " (world '" +
+                     row.world.loaded->descriptor->name + "') cannot be made: " + e.what());
+    }
+  }
+  checked->insert(crowd.str());
+}
+
+// Episode 0's first step, as a run plays it: what fails on every step (a lidar that does not
+// fit a model) fails before the run. Only in rows of the harness's own plugins that need no
+// isolation: a crash or hang of another plugin would end this process.
+void SuiteRow::CheckFirstStep(RowInstance& instance, const Scenario& episode0,
+                              IsolationMode mode) const {
+  if (!AllHarnessPlugins(spec()) || RowNeedsIsolation(suite_, spec(), mode)) return;
+  try {
+    Episode episode(episode0, suite_.sim, instance.Agents(episode0.humans.size()));
+    if (!episode.done()) episode.Step();
+    if (episode.result().status == EpisodeStatus::kPolicyError) {
+      throw RunError(Place() + ": the first step of episode 0 fails: " + episode.result().error);
+    }
+  } catch (const RunError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw RunError(Place() + ": episode 0 cannot start: " + e.what());
+  }
+}
+
+EpisodeLine SuiteRow::Run(RowInstance& instance, int episode) const {
+  EpisodeLine line;
+  line.row = spec().label;
+  line.episode = episode;
+  ScenarioRequest req;
+  const Scenario scenario = MakeEpisodeScenario(suite_, spec(), *world_, episode, &req);
+  Episode played(scenario, suite_.sim, instance.Agents(scenario.humans.size()));
+  const EpisodeResult& result = played.Run();
+  line.seed = req.seed;
+  line.layout = scenario.layout;
+  line.outcome = result;
+  return line;
+}
+
+// The plugins a crash is laid to: those not of the harness, or the robot's policy when all are.
+std::string SuiteRow::Suspects() const {
+  auto name = [](const std::string& role, const PluginUse& u) {
+    return role + " '" + std::string(u.loaded->descriptor->name) + "' (" + u.loaded->path.string() +
+           ")";
+  };
+  std::string named;
+  for (const auto& [role, use] : RowPlugins(spec())) {
+    if (!PluginRegistry::IsHarnessPlugin(*use->loaded))
+      named += (named.empty() ? "" : ", ") + name(role, *use);
+  }
+  return named.empty() ? name("policy", spec().policy) : named;
+}
+
+EpisodeLine SuiteRow::Lost(int episode, const WorkerLoss& loss) const {
+  EpisodeLine line;
+  line.row = spec().label;
+  line.episode = episode;
+  line.seed = MakeEpisodeRequest(suite_, spec(), *world_, episode).seed;
+  line.outcome.status = loss.kind == WorkerLoss::Kind::kTimeout ? EpisodeStatus::kPolicyTimeout
+                                                                : EpisodeStatus::kPolicyCrash;
+  line.outcome.error = "worker process " + loss.Describe() + " while running " + Suspects();
+  return line;
+}
+
+}  // namespace crowdsim

@@ -1,0 +1,50 @@
+// One row of a suite as a run owns it: its name in messages, its world, its preflight and the
+// episodes it plays. The runner keeps one per row and asks it, not the suite.
+#pragma once
+
+#include <memory>
+#include <set>
+#include <string>
+
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/row_instance.h"
+#include "crowdsim/bench/suite.h"
+#include "run/worker_process.h"
+
+namespace crowdsim {
+
+class SuiteRow {
+ public:
+  SuiteRow(const Suite& suite, size_t index) : suite_(suite), index_(index) {}
+
+  const RowSpec& spec() const { return suite_.rows[index_]; }
+  /// "row 'orca' (rows[1])": how preflight errors name the row.
+  std::string Place() const;
+  /// "row 'orca', episode 3": how run errors name an episode.
+  std::string Where(int episode) const;
+
+  /// Builds the row's world and plugins once, checks the robot's sensor needs and the
+  /// scenarios of episode 0 and of each frozen layout among the first `episodes`, and plays
+  /// episode 0's first step where `mode` lets the harness step it in this process. `checked`
+  /// holds the (world, crowd) pairs earlier rows passed. Throws RunError naming the row.
+  void Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
+                 std::set<std::string>* checked);
+  /// The world Preflight built; null before.
+  const std::shared_ptr<WorldSource>& world() const { return world_; }
+
+  /// Episode `episode` as the CLI runs it, with its line for episodes.csv.
+  EpisodeLine Run(RowInstance& instance, int episode) const;
+  /// The line of an episode whose worker died or was killed: no result, its own status.
+  EpisodeLine Lost(int episode, const WorkerLoss& loss) const;
+
+ private:
+  void CheckEveryLayout(int episodes, std::set<std::string>* checked) const;
+  void CheckFirstStep(RowInstance& instance, const Scenario& episode0, IsolationMode mode) const;
+  std::string Suspects() const;
+
+  const Suite& suite_;
+  size_t index_;
+  std::shared_ptr<WorldSource> world_;
+};
+
+}  // namespace crowdsim
