@@ -8,8 +8,7 @@ namespace fs = std::filesystem;
 
 std::optional<fs::path> InstalledLibDir() {
   std::error_code ec;
-  // Canonical: a library found through an RPATH such as $ORIGIN/../../.. (the Python module's)
-  // has '..' in its path, which parent_path() would strip lexically, not as folders.
+  // Canonical, so '..' from an RPATH such as $ORIGIN/../../.. resolves as folders, not lexically.
   const fs::path lib =
       fs::weakly_canonical(fs::path(boost::dll::this_line_location().string()), ec).parent_path();
   if (fs::is_directory(lib / "crowdsim-bench" / "plugins", ec)) return lib;

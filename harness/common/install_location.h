@@ -1,4 +1,4 @@
-// Where the installed libraries live: the SDK finds the data and the host the plugins from it.
+// Where the installed libraries live: the SDK finds data, the host plugins, from it.
 #pragma once
 
 #include <filesystem>
@@ -6,8 +6,8 @@
 
 namespace crowdsim::common {
 
-/// PREFIX/lib when the library that calls this is an installed copy (PREFIX/lib/crowdsim-bench/
-/// plugins exists beside it), else none: a build tree uses its own build paths.
+/// PREFIX/lib when the calling library is installed (PREFIX/lib/crowdsim-bench/plugins beside it),
+/// else none (a build tree).
 std::optional<std::filesystem::path> InstalledLibDir();
 
 }  // namespace crowdsim::common
