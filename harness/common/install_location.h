@@ -6,8 +6,8 @@
 
 namespace crowdsim::common {
 
-/// PREFIX/lib when libcrowdsim_sdk.so is an installed copy (PREFIX/lib/crowdsim-bench/plugins
-/// exists beside it), else none: a build tree uses its own build paths.
+/// PREFIX/lib when libcrowdsim_sdk.so is installed (PREFIX/lib/crowdsim-bench/plugins beside
+/// it), else none (a build tree).
 std::optional<std::filesystem::path> InstalledLibDir();
 
 }  // namespace crowdsim::common

@@ -12,13 +12,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The most values a document may hold with its aliases expanded: ten times our largest world
-// set; more is a document whose aliases nest aliases (a few lines can stand for billions).
+// Most values a document may hold, aliases expanded (ten times our largest world set): nested
+// aliases can stand for billions.
 constexpr std::size_t kMaxNodes = 1'000'000;
 
-// One walk over the document before any reader sees it: duplicate keys, and the two shapes of
-// alias (`*name`) that no reader could walk: a map or list that contains itself, and an
-// expansion beyond kMaxNodes. `open` holds the maps and lists being walked (the current path).
+// One walk before any reader: refuses duplicate keys, self-containing aliases and expansions past
+// kMaxNodes. `open`: the current path.
 struct Walk {
   Walk(const std::string& file, std::vector<Problem>* errors) : file(file), errors(errors) {}
 
@@ -74,9 +73,8 @@ struct Walk {
   }
 };
 
-// The lines of a file that yaml-cpp refused, up to its error's line (0-based `last`), as the
-// hints below read them: a UTF-8 byte order mark, which yaml-cpp counts as no column, taken off
-// the first. Read once for all the hints (an error's path only).
+// The refused file's lines up to the error's (0-based `last`), BOM removed (yaml-cpp gives it no
+// column).
 std::vector<std::string> LinesUpTo(const fs::path& file, int last) {
   std::vector<std::string> lines;
   std::ifstream in(file);
@@ -87,9 +85,8 @@ std::vector<std::string> LinesUpTo(const fs::path& file, int last) {
   return lines;
 }
 
-// yaml-cpp names a tab in an indentation "illegal tab" only at a top-level key; elsewhere it
-// reports what the tab broke ("illegal map value", "illegal block entry"). A tab in the
-// indentation of the error's line or the one before it is said outright.
+// yaml-cpp names a tab only at a top-level key: name one in the indentation of the error's line or
+// the line before.
 std::string TabHint(const std::vector<std::string>& lines, int zero_based_line) {
   for (int n = std::max(0, zero_based_line - 1); n < static_cast<int>(lines.size()); ++n) {
     const std::string& line = lines[static_cast<std::size_t>(n)];
@@ -102,16 +99,14 @@ std::string TabHint(const std::vector<std::string>& lines, int zero_based_line) 
   return "";
 }
 
-// UTF-16 and UTF-32 text holds NUL bytes: YAML tells it by a byte order mark, or by a NUL
-// among its first two bytes (`start`: the file's first bytes).
+// UTF-16 and UTF-32 text: a byte order mark, or a NUL in the first two bytes of `start`.
 bool WideText(const std::string& start) {
   return start.starts_with("\xff\xfe") || start.starts_with("\xfe\xff") ||
          start.substr(0, 2).find('\0') != std::string::npos;
 }
 
-// yaml-cpp says "end of map flow not found" (or "sequence flow") where it gave up, often the
-// line after the one whose '{' (or '[') lacks its closing bracket. The innermost such bracket
-// opened before the error (outside quotes and comments) is said, with its line and column.
+// yaml-cpp reports an unclosed '{' or '[' late: name the innermost one opened before the error
+// (outside quotes and comments).
 std::string UnclosedBracketHint(const fs::path& file, const std::vector<std::string>& lines,
                                 const std::string& message, const YAML::Mark& at) {
   const bool map = message.find("end of map flow not found") != std::string::npos;
@@ -121,8 +116,8 @@ std::string UnclosedBracketHint(const fs::path& file, const std::vector<std::str
     int line, column;  // 1-based
   };
   std::vector<Open> open;
-  // Columns are the bytes of UTF-8 text, as yaml-cpp counts them; a UTF-16 or UTF-32 file's
-  // bytes are not its characters (the '{' at column 5 said at column 10): no hint there.
+  // Columns are UTF-8 bytes, as yaml-cpp counts; in UTF-16 or UTF-32 bytes are not characters, so
+  // no hint.
   std::ifstream in(file, std::ios::binary);
   char head[2] = {};
   in.read(head, sizeof(head));
@@ -145,9 +140,7 @@ std::string UnclosedBracketHint(const fs::path& file, const std::vector<std::str
         continue;
       }
       if (c == '#' && (before == ' ' || before == '\t' || i == 0)) break;
-      // A quote opens a string where a value starts (after indentation, ',', '[', '{', ':' or
-      // '-', blanks between), not inside a plain one: "note: rock 'n roll" holds no string,
-      // and one taken to open there hid every bracket after it.
+      // A quote opens a string only where a value starts, not inside a plain scalar.
       const std::size_t last = i == 0 ? std::string::npos : line.find_last_not_of(" \t", i - 1);
       const bool starts_value =
           last == std::string::npos || std::string(",[{:-?").find(line[last]) != std::string::npos;
@@ -169,11 +162,7 @@ std::string UnclosedBracketHint(const fs::path& file, const std::vector<std::str
   return "";
 }
 
-// yaml-cpp says "illegal map value" at a ':' it cannot take, which is often a line or two after
-// the mistake: a key written without its ':' ("episodes 10": the next key's ':' is refused), or
-// a key indented deeper than the line before, whose value is already given ("episodes: 10" then
-// "  seed: 3"); and "end of map not found" at the start of a key line without its ':' followed
-// by a comment. The line that most likely holds the mistake is named when it is one of these.
+// yaml-cpp reports a missing ':' or an over-indented key a line or two late: name the likely line.
 std::string MissingColonHint(const std::vector<std::string>& lines, const std::string& message,
                              int error_line) {
   const bool illegal_value = message.find("illegal map value") != std::string::npos;
@@ -215,8 +204,7 @@ std::string MissingColonHint(const std::vector<std::string>& lines, const std::s
   return "";
 }
 
-// What a file that is no text is (a PNG floor plan given as the suite): its bytes read as YAML
-// gave "unknown escape character" and printed a stray byte. "" for a text file.
+// What a non-text file is (e.g. a PNG given as a suite), for the message; "" for text.
 std::string BinaryKind(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   char head[4096];
@@ -238,8 +226,8 @@ std::string Problem::Format() const {
 YAML::Node LoadDocument(const fs::path& file, const std::string& what,
                         std::vector<Problem>* errors) {
   std::error_code ec;
-  // Standard input and pipes (`-`, `<(generate)`): a spec is read more than once (its kind,
-  // its text, the hints of an error), and a pipe gives its text to the first read only.
+  // Standard input and pipes are refused: a spec is read more than once, and a pipe gives its text
+  // to the first read only.
   const std::string from_a_pipe =
       "; a " + what + " is read more than once: write it to a file and give that file";
   if (file == "-") {
@@ -247,8 +235,8 @@ YAML::Node LoadDocument(const fs::path& file, const std::string& what,
     return YAML::Node(YAML::NodeType::Null);
   }
   if (!fs::exists(file, ec)) {
-    // A relative path the data folder has (`suites/quick.yaml` typed outside a source tree, as
-    // the README has it, with the package's suites under PREFIX/share/crowdsim-bench): named.
+    // A relative path the data folder holds (e.g. `suites/quick.yaml` outside a source tree):
+    // suggest it.
     const fs::path shipped = DataRoot() / file;
     const bool suggest = file.is_relative() && fs::is_regular_file(shipped, ec);
     errors->push_back(

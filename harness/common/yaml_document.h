@@ -1,6 +1,5 @@
-// Loading a YAML document with every problem located: a missing file, a folder, a pipe, a
-// binary file, a syntax error (with a hint at the likely line), a key given twice, and aliases
-// no reader could walk. A static library that the SDK's world files and the host's readers share.
+// Loads a YAML document, locating every problem (missing, folder, pipe, binary, syntax, duplicate
+// key, bad alias). Shared by SDK and host.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -21,8 +20,8 @@ struct Problem {
   std::string Format() const;
 };
 
-/// The document of `file`, or a null node with `problems` saying why (`what` names the kind of
-/// file in messages, e.g. "suite file"). Duplicate keys count; any problem returns null.
+/// The document of `file`, or a null node with `problems` saying why (duplicate keys included);
+/// `what`: the file's kind.
 YAML::Node LoadDocument(const std::filesystem::path& file, const std::string& what,
                         std::vector<Problem>* problems);
 

@@ -10,8 +10,7 @@ constexpr const char* kCoreTypeVariable = "OPENBLAS_CORETYPE";
 
 void PinBlasKernel() {
 #if defined(__x86_64__)
-  // Once per process (a thread-safe static): later loads find the variable set anyway, and
-  // setenv then never runs beside another thread's getenv.
+  // Once per process (thread-safe static), so setenv never runs beside another thread's getenv.
   [[maybe_unused]] static const bool pinned = [] {
     if (std::getenv(kCoreTypeVariable) != nullptr) return false;
     __builtin_cpu_init();

@@ -31,9 +31,8 @@ std::optional<std::string> PluginNameOfFile(const fs::path& path) {
   return file.substr(std::strlen(kPrefix), file.size() - affixes);
 }
 
-/// CROWDSIM_PLUGIN_PATH's folders first (like PATH, a user's folder overrides a built-in
-/// plugin of the same name, e.g. a frozen copy for a long campaign), then the installed
-/// plugins (PREFIX/lib/crowdsim-bench/plugins) or, in a build tree, the build folder.
+/// CROWDSIM_PLUGIN_PATH's folders first (overriding built-ins, like PATH), then the installed or
+/// build plugin folder.
 std::vector<fs::path> DefaultSearchDirs() {
   std::vector<fs::path> dirs;
   if (const char* env = std::getenv("CROWDSIM_PLUGIN_PATH")) {
@@ -99,8 +98,7 @@ std::shared_ptr<T> Make(const LoadedPlugin& p, PluginKind kind, Factory factory,
   return Wrap<T>(p.library, std::move(obj));
 }
 
-/// Adds `file` to what `found` hides, unless it is `found`'s own file or one listed already (a
-/// folder named twice, the harness's own folder on CROWDSIM_PLUGIN_PATH).
+/// Adds `file` to what `found` hides, unless it is `found`'s own file or already listed.
 void Hide(const fs::path& file, const LoadedPlugin& found, std::vector<fs::path>* hidden) {
   std::error_code ec;
   const auto same = [&](const fs::path& other) { return fs::equivalent(file, other, ec); };
@@ -119,8 +117,8 @@ fs::path PluginRegistry::HarnessPluginDir() {
 
 bool PluginRegistry::IsHarnessPlugin(const LoadedPlugin& p) {
   if (p.path.empty()) return false;  // made in memory (e.g. the Python module's policy)
-  // One this build ships, by its name (a plugin of yours copied into the harness's folder was
-  // taken for the harness's: a rebuild of it resumed the old build's episodes, unisolated).
+  // Shipped by this build, by name: a user's plugin copied here stays the user's (hashed,
+  // isolated).
   if (p.descriptor == nullptr || !IsShippedPluginName(p.descriptor->name)) return false;
   if (p.path.filename() != kPrefix + std::string(p.descriptor->name) + kSuffix) return false;
   std::error_code ec;
@@ -159,9 +157,8 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   fs::path canonical = fs::weakly_canonical(path, ec);
   if (ec) canonical = path;
   const std::string key = canonical.string();
-  // Cached by the folder it is found in and its name (the file's own symlink not followed):
-  // the same library reached from the harness's folder and from a link of yours are two uses,
-  // each the harness's own or not by its folder, whatever was loaded first.
+  // Cached by folder and name (own symlink not followed): reached from two folders, one library is
+  // two uses, each judged by its folder.
   const fs::path folder = fs::weakly_canonical(fs::absolute(path, ec).parent_path(), ec);
   const std::string use = (folder / path.filename()).string();
   if (auto it = loaded_.find(use); it != loaded_.end()) return *it->second;
@@ -203,8 +200,8 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
                       "' has an incomplete descriptor (name, description "
                       "and schema are required). Fix the plugin's descriptor.");
   }
-  // A suite finds a plugin by its file (crowdsim_<name>.so), tables and list-plugins name it by
-  // its descriptor: a plugin whose two names differ could be asked for by neither consistently.
+  // Suites find a plugin by file name, tables and list-plugins by descriptor name: the two must
+  // agree.
   if (const auto file_name = PluginNameOfFile(path); file_name && *file_name != desc.name) {
     throw PluginError("plugin file '" + key + "' is named '" + *file_name +
                       "' but its descriptor calls it '" + desc.name +
@@ -255,7 +252,7 @@ const LoadedPlugin& PluginRegistry::Load(const std::string& name_or_path, Plugin
 
 PluginRegistry::Found PluginRegistry::Discover() {
   Found found;
-  // By name, the first file of that name (null when it failed to load: its problem is listed).
+  // By name, the first file of that name (null if it failed to load; its problem is listed).
   std::map<std::string, const LoadedPlugin*> first;
   for (const auto& dir : search_dirs_) {
     std::error_code ec;

@@ -1,5 +1,4 @@
-// JSON files the harness writes and reads back (manifest.json, a training's summary.json),
-// through nlohmann-json. Private to the core: nlohmann's header stays out of the public ones.
+// JSON files via nlohmann-json; private, keeping nlohmann's header out of public ones.
 #pragma once
 
 #include <filesystem>
@@ -8,12 +7,10 @@
 
 namespace crowdsim {
 
-/// The object in a JSON file; an empty object when the file is absent, unreadable, not JSON
-/// or not an object (callers treat every field as absent then).
+/// The object in a JSON file; empty when absent, unreadable or not a JSON object.
 nlohmann::ordered_json ReadJsonFile(const std::filesystem::path& path);
 
-/// Indented by two spaces, keys in insertion order, newline-terminated; invalid UTF-8 in a
-/// string (a user's label or path) is replaced rather than refused.
+/// Two-space indent, insertion order, trailing newline; invalid UTF-8 is replaced, not refused.
 std::string FormatJson(const nlohmann::ordered_json& json);
 
 }  // namespace crowdsim

@@ -1,7 +1,5 @@
-// manifest.json: what a run was (suite, plugins and their files, sim settings, hashes, commit)
-// and what it measured, written and read with nlohmann-json (the Debian package), so strings are
-// escaped and numbers formatted by a well-kept library and the readers parse instead of
-// searching text.
+// manifest.json: a run's configuration (suite, plugins, files, sim, hashes, commit) and
+// measurements, via nlohmann-json.
 #include <cmath>
 #include <fstream>
 #include <type_traits>
@@ -70,8 +68,7 @@ Json PluginJson(const PluginUse& u) {
 
 Json IntervalJson(const Interval& i) { return Json::array({Number(i.low), Number(i.high)}); }
 
-/// A table line's info, metrics (with the rates' 95% intervals) and published reference, added
-/// to its manifest object.
+/// Adds a table line's info, metrics (with 95% intervals) and reference to its manifest object.
 void AddLineTail(const TableRow& line, Json* j) {
   Json info = Json::object();
   for (const auto& [key, value] : line.Info()) info[key] = value;
@@ -201,8 +198,7 @@ nlohmann::ordered_json ReadJsonFile(const fs::path& path) {
 
 namespace {
 
-/// The value at `key`: a top-level key, or a JSON pointer when it starts with '/'
-/// ("/procedure/rl_episodes"); null when absent.
+/// The value at `key` (top-level, or a JSON pointer starting with '/'); null when absent.
 const Json& Field(const Json& j, const std::string& key) {
   static const Json kAbsent;
   if (!key.empty() && key.front() == '/') {
@@ -249,8 +245,7 @@ std::string DescribeRunInputsDifference(const std::string& suite_a,
                                         const std::string& suite_b,
                                         const std::vector<std::string>& set_b) {
   std::string text;
-  // The same file may be recorded under two spellings (runs from different folders): named
-  // when the file names differ, or when both paths lead to files that are not the same one.
+  // One file may be recorded under two spellings: differ only if names or targets differ.
   std::error_code ec;
   const fs::path pa(suite_a), pb(suite_b);
   const bool both_found = fs::exists(pa, ec) && fs::exists(pb, ec);

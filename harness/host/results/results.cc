@@ -118,9 +118,8 @@ struct Column {
   std::function<std::string(const TableRow&)> value;
 };
 
-/// The table's columns: the paper's and ours (both formats), then for the CSV each rate's 95%
-/// interval, nav. time's standard error and, when any line has published values, those values
-/// and our differences (table.md shows these in its second table).
+/// Table columns: the paper's and ours, then (CSV) 95% intervals, nav. time's standard error, and
+/// published values with differences.
 std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& rows,
                             bool with_uncertainty) {
   std::vector<Column> cols;
@@ -152,8 +151,7 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
   }
   cols.push_back(
       {"errors", [](const TableRow& r) { return Fixed(r.metrics.policy_error_rate, 4); }});
-  // Crashed and hung episodes (isolated runs) get columns only when a line has some, so the
-  // tables of runs without any keep their columns.
+  // Crash and hang columns appear only when used, so other tables keep their columns.
   const auto any = [&](double RowMetrics::*field) {
     return std::any_of(rows.begin(), rows.end(),
                        [field](const TableRow& r) { return r.metrics.*field > 0; });
@@ -283,7 +281,7 @@ bool ParseWhole(const std::string& s, Int* out) {
   return ec == std::errc() && end == s.data() + s.size();
 }
 
-// Reads one cell into `e`; returns what the cell should have been, or "" when it reads.
+// Reads one cell into `e`; returns what it should have been, or "".
 std::string ParseCell(const EpisodeColumn& c, const std::string& text, EpisodeLine* e) {
   return std::visit(
       [&](auto member) -> std::string {
@@ -346,8 +344,7 @@ EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
   while (std::getline(f, line)) {
     ++number;
     if (f.eof()) {
-      // A last line without its newline was cut short by a crash mid-write: skipped, and its
-      // episode runs again on resume.
+      // A last line without its newline is cut short by a crash: skipped, rerun on resume.
       read.cut_last_line = !line.empty();
       break;
     }
@@ -380,8 +377,7 @@ std::vector<EpisodeLine> ReadEpisodesCsv(const fs::path& path) {
 
 namespace {
 
-/// A table cell's text for Markdown: '|' escaped (it would start a new cell), line breaks as
-/// spaces.
+/// A Markdown cell's text: '|' escaped, line breaks as spaces.
 std::string MarkdownCell(const std::string& text) {
   std::string out;
   for (char c : text) {
@@ -414,8 +410,7 @@ void WriteMarkdownTable(const std::vector<std::string>& header, size_t text_colu
   }
 }
 
-/// "min–max" of the success rates of a summary's rows: the spread the pooled interval leaves
-/// out (e.g. between training seeds).
+/// "min–max" of a summary's success rates: the spread the pooled interval hides.
 std::string SuccessRange(const std::vector<TableRow>& rows, const SummarySpec& summary) {
   double lo = 1.0, hi = 0.0;
   for (const TableRow& row : rows) {
@@ -428,9 +423,8 @@ std::string SuccessRange(const std::vector<TableRow>& rows, const SummarySpec& s
   return Fixed(lo, 4) + "–" + Fixed(hi, 4);
 }
 
-/// table.md's second table: each rate with its 95% Wilson interval, nav. time +- its standard
-/// error, and where published values exist, those values and our difference, marked '*' when
-/// the published value lies outside our 95% interval.
+/// table.md's second table: Wilson intervals, nav. time +- SE, published values and differences
+/// ('*' outside our interval).
 void WriteUncertaintyMarkdown(const std::vector<TableRow>& rows, std::ostream& os) {
   const bool papers = AnyReference(rows);
   os << "\nOurs with 95% intervals (Wilson for the rates, nav. time ± its standard error)";

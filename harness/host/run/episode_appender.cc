@@ -16,8 +16,8 @@ constexpr size_t kCapacity = size_t{1} << 16;
 /// The appender open in this process (a run has one at a time), for the signal handler.
 std::atomic<EpisodeAppender*> g_open{nullptr};
 
-/// write(2) of all `size` bytes, again after EINTR; the errno of a failure (ENOSPC for a
-/// write that wrote nothing), 0 on success. Async-signal-safe.
+/// write(2) of all `size` bytes, retrying on EINTR; 0 or the failure's errno (ENOSPC for no
+/// progress). Async-signal-safe.
 int WriteAll(int fd, const char* data, size_t size) {
   while (size > 0) {
     const ssize_t n = ::write(fd, data, size);

@@ -1,7 +1,5 @@
-// Appends lines to episodes.csv with few write calls. With a delay, lines gather in memory and
-// a background thread writes them at the latest `max_delay` after they were added, so a crash
-// loses at most the episodes that finished in that last fraction of a second (a resume runs
-// them again); Ctrl-C loses none (FlushForSignal). Without a delay every line is written at once.
+// Appends episodes.csv lines in few writes. With a delay a background thread writes within
+// `max_delay`: a crash loses at most that, Ctrl-C nothing (FlushForSignal).
 #pragma once
 
 #include <atomic>
@@ -23,20 +21,18 @@ class EpisodeAppender {
 
   /// Opens `path` for appending (created if missing); throws RunError naming it.
   EpisodeAppender(std::filesystem::path path, std::chrono::milliseconds max_delay);
-  /// Finish() if it was not called (its errors are then ignored).
+  /// Finish() unless already called (its errors are then ignored).
   ~EpisodeAppender();
   EpisodeAppender(const EpisodeAppender&) = delete;
   EpisodeAppender& operator=(const EpisodeAppender&) = delete;
 
-  /// Adds `line` and a newline; thread-safe. False once a write failed: *why names the file
-  /// and the OS reason (a full disk, a lost mount).
+  /// Adds `line` and a newline; thread-safe. False once a write failed, *why naming file and cause.
   bool Append(std::string_view line, std::string* why);
-  /// Writes every pending line, stops the background thread and closes the file; false (and
-  /// *why) when a write failed.
+  /// Writes pending lines, stops the thread, closes the file; false (and *why) if a write failed.
   bool Finish(std::string* why);
 
-  /// Writes the pending lines of the appender open in this process, if any, with nothing but
-  /// write(2): for a signal handler that ends the process right after.
+  /// Writes the open appender's pending lines with write(2) only, for a signal handler about to
+  /// exit.
   static void FlushForSignal() noexcept;
 
  private:

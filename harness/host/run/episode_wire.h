@@ -1,7 +1,5 @@
-// An episodes.csv line as bytes, column by column (kEpisodeColumns), for the pipe from an
-// isolated worker process to the run (worker_process.h): every value exact (the CSV rounds),
-// so a run's tables come out the same whether its episodes ran in threads or in worker
-// processes.
+// An episodes.csv line as exact per-column bytes for the worker pipe, so tables match whether
+// episodes ran in threads or workers.
 #pragma once
 
 #include <string>

@@ -1,5 +1,4 @@
-// `crowdsim-bench merge`: the shards of one suite run, checked and joined into the output a
-// single run writes (the tables are made by the runner's own resume of the joined episodes).
+// `crowdsim-bench merge`: checks a suite run's shards and joins them into one run's output.
 #include <algorithm>
 #include <cstdlib>
 #include <map>
@@ -19,9 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Adds to the merged manifest, after its own git_commit (the build that merged), the commit
-/// that made the shards ("mixed" when --allow-mixed-commits joined several) and each shard's
-/// ("COMMIT SHARD", as row_hashes are "HASH LABEL").
+/// Adds to the merged manifest the shards' commit ("mixed" under --allow-mixed-commits) and each
+/// shard's, as "COMMIT SHARD".
 void RecordShardCommits(const fs::path& manifest,
                         const std::vector<std::pair<std::string, std::string>>& shard_commits) {
   const nlohmann::ordered_json before = ReadJsonFile(manifest);
@@ -53,9 +51,8 @@ std::string ShardCount(const std::string& shard) {
 // The episodes the folders hold, by (row label, episode), each with the folder it came from.
 using EpisodesByKey = std::map<std::pair<std::string, int>, std::pair<EpisodeLine, fs::path>>;
 
-// For an episode that no folder holds: which shard of N it belongs to (the runner's slice,
-// row-major position modulo N), and whether that shard's folder is missing or unfinished, with
-// every other shard that is missing or unfinished too. "" when the folders are not shards.
+// For an episode no folder holds: its shard (row-major position mod N) and which shards are missing
+// or unfinished; "" for non-shards.
 std::string WhichShardLacks(const Suite& suite, int episodes, const std::string& count,
                             const std::map<std::string, fs::path>& shard_dirs,
                             const EpisodesByKey& lines, size_t row, int episode) {
@@ -89,7 +86,7 @@ std::string WhichShardLacks(const Suite& suite, int episodes, const std::string&
   }
   const std::string owner = name(ShardOfEpisode(row, episode, episodes, static_cast<int>(n)));
   std::string msg = "it belongs to shard " + owner + ".";
-  // At most ten names of a list, then how many more (a million shards made megabytes).
+  // At most ten names of a list, then how many more.
   const auto listed = [](const std::vector<std::string>& names) {
     constexpr size_t kShown = 10;
     std::string text;
@@ -133,8 +130,8 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   std::string hash, episodes_text, manifest_suite;
   EpisodesByKey lines;
   std::map<std::string, fs::path> shard_dir;  // "K/N" -> its folder
-  // The build that made each shard (COMMIT, SHARD or its folder): episodes of different code
-  // are not one run, even when the configuration is the same.
+  // The build of each shard: episodes of different code are not one run, even with one
+  // configuration.
   std::vector<std::pair<std::string, std::string>> shard_commits;
   for (const fs::path& dir : shard_dirs) {
     const fs::path manifest = dir / "manifest.json";
@@ -282,8 +279,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
                        " episodes do not have");
     }
   }
-  // The joined episodes under the shards' configuration: the runner resumes all of them and
-  // writes the tables and manifest exactly as after a single run.
+  // The runner resumes all joined episodes and writes tables and manifest as after a single run.
   std::error_code ec;
   // merge replaces what --out holds: only an earlier merge of these shards' configuration.
   for (const fs::path& dir : shard_dirs) {
@@ -293,15 +289,13 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
     }
   }
   if (OutputFolderKind(out_dir) == "a suite run") {
-    // What merge may replace: an earlier merge of these shards' configuration and episode
-    // count (also one cut short: its manifest says "merged" from the first write), never a
-    // run (whose episodes beyond the count are kept for a longer rerun), another
-    // configuration, another count, or a shard.
+    // Merge replaces only an earlier merge of this configuration and count (even one cut short:
+    // "merged" is written first).
     const fs::path held = out_dir / "manifest.json";
     const std::string held_hash = ReadManifestField(held, "config_hash");
     const long held_episodes = ReadManifestInteger(held, "episodes");
     const bool held_shard = !ReadManifestField(held, "shard").empty();
-    // (A merge of a build before the marker: its manifest lists the shards' commits.)
+    // (A merge by an older build lacks the marker: its manifest lists the shards' commits.)
     const bool held_merge = ReadManifestBool(held, "merged").value_or(false) ||
                             !ReadManifestStrings(held, "shard_commits").empty();
     if (held_hash != hash || held_shard || !held_merge ||
@@ -326,8 +320,7 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   if (!lock) throw RunRefused(refused);
   std::string text = EpisodeCsvHeader() + "\n";
   for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
-  // The manifest first: a merge cut short between the two writes is then still one (its
-  // episodes.csv alone read as a run of another configuration, which no merge replaced).
+  // The manifest first: a merge cut short between the two writes is still seen as a merge.
   WriteFileAtomically(out_dir / "manifest.json",
                       FormatJson(nlohmann::ordered_json{{"config_hash", hash}, {"merged", true}}));
   WriteFileAtomically(out_dir / "episodes.csv", text);

@@ -30,9 +30,8 @@ std::shared_ptr<OutputFolderLock> OutputFolderLock::Acquire(const fs::path& dir,
   }
   const fs::path file = dir / ".crowdsim-bench.lock";
   const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  // A folder we cannot open a file in is one we cannot write either: a run has said so before
-  // (PrepareOutDir's write test), elsewhere the first write says why. A file system without
-  // locks (errors other than "held") runs unlocked.
+  // An unopenable folder is unwritable; a later write says why. Without lock support (errors other
+  // than "held"), run unlocked.
   if (fd >= 0) {
     struct flock request {};
     request.l_type = F_WRLCK;
@@ -51,8 +50,8 @@ std::shared_ptr<OutputFolderLock> OutputFolderLock::Acquire(const fs::path& dir,
     }
   }
   g_held.insert(key);
-  // Released under the mutex: closing a descriptor of the file drops this process's lock, so
-  // no new holder may take the folder before the old descriptor is closed.
+  // Released under the mutex: closing any descriptor drops the process's lock, so no new holder may
+  // come first.
   return std::shared_ptr<OutputFolderLock>(new OutputFolderLock(fd), [key](OutputFolderLock* held) {
     std::lock_guard<std::mutex> release(g_mutex);
     delete held;
@@ -81,7 +80,7 @@ std::shared_ptr<OutputFolderLock> ClaimOutputFolder(const fs::path& dir, const s
   if (!lock) return nullptr;
   const std::string held = OutputFolderKind(dir);
   if (!held.empty() && held != kind) {
-    // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on the one long sum.
+    // Appended piece by piece: GCC 12 falsely warns (-Wrestrict) on one long sum.
     std::string text = "'";
     text += dir.string();
     text += "' holds ";

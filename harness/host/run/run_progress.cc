@@ -13,8 +13,8 @@ Progress::Progress(std::string name, int total, int already, bool enabled)
       enabled_(enabled),
       tty_(isatty(STDERR_FILENO)),
       start_(Clock::now()) {
-  // Said first, so that the counts of the progress line (which include them) and its success
-  // rate (of the episodes run now) read right.
+  // Said first, so the progress line's counts (which include them) and success rate (this run's)
+  // read right.
   if (enabled_ && already > 0) {
     std::fprintf(stderr, "[%s] %d of %d episodes resumed from the stored results; running %d\n",
                  name_.c_str(), already, total_, total_ - already);

@@ -1,5 +1,4 @@
-// The progress line of a suite run on stderr: rewritten in place on a terminal, a line every
-// 10% otherwise (logs of batch jobs).
+// A suite run's progress line on stderr: rewritten in place on a terminal, else every 10%.
 #pragma once
 
 #include <chrono>

@@ -15,9 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The plugin files of yours (their bytes are in the config hash: PluginFileContent) whose
-/// content differs from what `manifest` records at the same path, as "; plugin files rebuilt
-/// since those results: PATH" for the end of a refusal; empty when none did.
+/// User plugin files whose content differs from `manifest`'s, as "; plugin files rebuilt since
+/// those results: PATH"; "" when none.
 std::string DescribeRebuiltPlugins(const fs::path& manifest, const Suite& suite) {
   using Json = nlohmann::ordered_json;
   std::map<std::string, std::string> stored;  // file -> content hash, as recorded
@@ -54,9 +53,8 @@ std::string DescribeRebuiltPlugins(const fs::path& manifest, const Suite& suite)
   return text.empty() ? "" : "; plugin files rebuilt since those results: " + text;
 }
 
-/// The labels of the rows whose stored episodes are this configuration's: all of them when the
-/// suite's hash is unchanged, else those whose own row hash is (a table that grows row by row).
-/// Throws RunError when none is.
+/// Rows whose stored episodes match this configuration: all if the suite hash is unchanged, else
+/// those with unchanged row hashes. Throws RunError if none.
 std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir) {
   const fs::path manifest = out_dir / "manifest.json";
   const std::string stored = ReadManifestField(manifest, "config_hash");
@@ -72,8 +70,7 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
                      ", so which configuration made them is unknown. Pass --fresh to replace "
                      "them, or --out to write elsewhere.");
   }
-  // Another suite's folder (an --out of another experiment): rows it shares with this suite
-  // would resume and the rest move aside, its tables replaced by this suite's.
+  // Another suite's folder: shared rows would resume and the rest move aside, its tables replaced.
   if (const std::string other = ReadManifestField(manifest, "suite");
       !other.empty() && other != suite.name) {
     const std::string other_file = ReadManifestField(manifest, "suite_file");
@@ -101,9 +98,8 @@ std::set<std::string> ResumableRows(const Suite& suite, const fs::path& out_dir)
   return kept;
 }
 
-/// A shard resumes only a folder of the same shard: anywhere else it would keep its own slice
-/// and drop every other stored episode. (A whole run may resume a shard's folder: it keeps them
-/// all and runs the rest.)
+/// A shard resumes only its own shard's folder; elsewhere it would drop all episodes outside its
+/// slice.
 void CheckShard(const ResumeTarget& target) {
   if (target.shard.empty()) return;
   const fs::path manifest = target.out_dir / "manifest.json";
@@ -127,8 +123,7 @@ void CheckShard(const ResumeTarget& target) {
                    "the folder's results.");
 }
 
-/// Appends `lines` and the `damaged` lines (as read) to episodes.dropped.csv beside
-/// episodes.csv (the header when it is new).
+/// Appends `lines` and `damaged` (as read) to episodes.dropped.csv, with a header when new.
 fs::path SetAside(const fs::path& out_dir, const std::vector<const EpisodeLine*>& lines,
                   const std::vector<std::string>& damaged) {
   const fs::path path = out_dir / "episodes.dropped.csv";
@@ -184,8 +179,7 @@ EpisodeLines StoredEpisodes(const Suite& suite,
       aside.push_back(&line);
       continue;
     }
-    // The seed this suite gives the episode: a line with another is not this suite's (edited
-    // by hand, or copied from another run).
+    // A seed other than the suite's for this episode marks a foreign line.
     const std::uint64_t seed =
         MakeEpisodeRequest(suite, suite.rows[row->second], *worlds[row->second], line.episode).seed;
     if (line.episode < 0 || line.seed != seed) {

@@ -45,8 +45,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Moves exactly n bytes through `call` (::read or ::write), again after a signal; false at
-/// the end of the file (the other side died) or on an error.
+/// Moves exactly n bytes via `call` (::read or ::write), retrying on signals; false at EOF (peer
+/// died) or error.
 template <typename Byte, typename Call>
 bool Exactly(Call call, int fd, Byte* p, size_t n) {
   while (n > 0) {
@@ -66,9 +66,8 @@ bool ReadAll(int fd, void* data, size_t n) {
   return Exactly(::read, fd, static_cast<char*>(data), n);
 }
 
-/// A worker's loop: task numbers in, [length][bytes] out, until its task pipe closes. An
-/// exception escaping `run` ends the worker through std::terminate (noexcept), which the
-/// parent records as the task's loss (SIGABRT).
+/// A worker's loop: task numbers in, [length][bytes] out, until its pipe closes. An escaping
+/// exception terminates; the parent records the loss.
 [[noreturn]] void WorkerMain(int tasks_fd, int results_fd,
                              const WorkerPoolCallbacks& callbacks) noexcept {
   for (;;) {
@@ -157,8 +156,8 @@ class Pool {
       throw std::runtime_error(std::string("cannot start a worker process: ") + std::strerror(e));
     }
     if (pid == 0) {
-      // The worker: its siblings' pipe ends closed (else a sibling never sees its task pipe
-      // close), killed with the parent, deaf to Ctrl-C (the parent reports the interruption).
+      // The worker: siblings' pipe ends closed (so they see EOF), dies with the parent, ignores
+      // Ctrl-C (the parent reports it).
       for (const Worker& other : workers_) {
         if (other.tasks_fd >= 0) ::close(other.tasks_fd);
         if (other.results_fd >= 0) ::close(other.results_fd);
@@ -232,8 +231,7 @@ class Pool {
     return true;
   }
 
-  /// Closes the worker's pipes (it exits when idle), kills it first if asked, and reaps it;
-  /// its wait status.
+  /// Closes the pipes (an idle worker exits), kills first if asked, reaps; returns the wait status.
   int End(Worker& w, bool kill) {
     int status = 0;
     if (w.pid > 0 && kill) ::kill(w.pid, SIGKILL);
@@ -255,8 +253,7 @@ class Pool {
   std::size_t next_ = 0;
 };
 
-/// SIGPIPE ignored while the pool runs: a write to a dead worker's pipe fails with EPIPE
-/// (handled) instead of killing the run.
+/// Ignores SIGPIPE while the pool runs: writing to a dead worker fails with EPIPE, not the run.
 class IgnoreSigpipe {
  public:
   IgnoreSigpipe() { old_ = std::signal(SIGPIPE, SIG_IGN); }

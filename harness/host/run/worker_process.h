@@ -1,9 +1,6 @@
-// Crash isolation for suite runs: tasks run in forked worker processes, so a plugin that
-// segfaults, aborts, exits or hangs takes down one worker, not the run. The parent stays
-// single-threaded (it runs no task itself), hands out one task at a time over a pipe, reads each
-// result back over another, and notices a worker's death (EOF on its pipe, then waitpid) or a
-// task past its wall-clock limit (the parent kills the worker); a new worker takes the tasks
-// that remain. What a task is and what its result bytes mean is the caller's (runner.cc).
+// Crash isolation: suite tasks run in forked workers, so a crashing, exiting or hanging plugin
+// loses one worker, not the run. The single-threaded parent hands out tasks over pipes, detects
+// deaths and timeouts, and replaces workers.
 #pragma once
 
 #include <cstddef>
@@ -23,8 +20,7 @@ struct WorkerLoss {
   /// "killed by signal SIGSEGV (Segmentation fault)", "exited with status 3", "killed at the
   /// episode_timeout_s of 2 s".
   std::string Describe() const;
-  /// A signal sent from outside the run (SIGINT, SIGTERM, SIGHUP): the run was stopped, the
-  /// task did nothing wrong.
+  /// Stopped from outside the run (SIGINT, SIGTERM, SIGHUP): the task is not at fault.
   bool Interrupted() const;
 };
 
@@ -33,8 +29,7 @@ struct WorkerPoolOptions {
   double task_timeout_s = 0;  ///< wall-clock limit per task, from its hand-out; 0 = none
 };
 
-/// What the parent does with each task's outcome; returning false stops the pool (every worker
-/// is killed and RunInWorkerProcesses returns).
+/// The parent's handler of task outcomes; returning false kills every worker and ends the pool.
 struct WorkerPoolCallbacks {
   /// In a worker: runs task `t` and returns its result bytes. Runs in the forked child only.
   std::function<std::string(std::size_t t)> run;
@@ -44,9 +39,8 @@ struct WorkerPoolCallbacks {
   std::function<bool(std::size_t t, const WorkerLoss& loss)> lost;
 };
 
-/// Runs tasks 0..count-1 in worker processes, each task handed out once (a lost task is not
-/// retried: its outcome is the loss). Throws std::runtime_error when a process or pipe cannot
-/// be made. The calling process must not hold locks other threads could need in the child.
+/// Runs tasks 0..count-1 in workers, each once (no retries). Throws std::runtime_error if a process
+/// or pipe fails. Hold no locks the child needs.
 void RunInWorkerProcesses(std::size_t count, const WorkerPoolOptions& options,
                           const WorkerPoolCallbacks& callbacks);
 

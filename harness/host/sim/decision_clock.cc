@@ -19,8 +19,7 @@ std::int64_t SteadyNanoseconds() {
       .count();
 }
 
-/// Whether the time-stamp counter can stand in for steady_clock: x86-64, and the kernel keeps
-/// time with it (it checked the counter's rate and synchronisation at boot).
+/// Whether the TSC can replace steady_clock: x86-64 and the kernel's clocksource is "tsc".
 bool CounterUsable() {
 #if defined(__x86_64__)
   std::ifstream in("/sys/devices/system/clocksource/clocksource0/current_clocksource");
@@ -38,9 +37,8 @@ std::uint64_t RawNow(bool counter) {
   return static_cast<std::uint64_t>(SteadyNanoseconds());
 }
 
-/// Both clocks at one instant: the counter read between two steady_clock reads, the tightest
-/// of a few tries (a first steady_clock read of a process or of a forked child is slow, and a
-/// preemption can fall between two reads), steady_clock taken at the middle.
+/// Both clocks at one instant: the counter between two steady_clock reads, tightest of a few tries,
+/// steady_clock at the middle.
 struct Pair {
   std::uint64_t ticks = 0;
   std::int64_t nanoseconds = 0;
@@ -61,9 +59,8 @@ Pair ReadBoth(bool counter) {
   return best;
 }
 
-/// What the counter's rate is measured from: taken when the core library is loaded, so that a
-/// forked worker inherits its parent's (a short span since a late anchor magnified the error of
-/// its reads: early decision times read up to 15% low in a fresh worker).
+/// The rate's anchor, taken at library load so forked workers inherit a long span (short spans
+/// magnify read errors).
 struct Anchor {
   bool counter = CounterUsable();
   Pair at = ReadBoth(counter);

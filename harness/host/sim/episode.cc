@@ -12,8 +12,7 @@
 namespace crowdsim {
 
 namespace {
-// A plugin that throws something not derived from std::exception (`throw 42;`) gets the same
-// policy_error as any other throw, instead of std::terminate ending the whole run.
+// A non-std::exception throw (`throw 42;`) is a policy_error too, not std::terminate.
 constexpr const char* kNonStandardException =
     "threw an exception not derived from std::exception (e.g. `throw 42;`); throw a "
     "std::runtime_error with a message instead";
@@ -41,8 +40,8 @@ const char* EpisodeStatusName(EpisodeStatus s) {
   return "unknown";
 }
 
-/// The episode's lookahead for the current step: human actions are already decided (they do
-/// not depend on the robot's choice), so every candidate sees the same next crowd.
+/// This step's lookahead: human actions are already decided, so every candidate sees the same
+/// crowd.
 class Episode::StepLookahead final : public Lookahead {
  public:
   explicit StepLookahead(const Episode& e) : e_(e) {}
@@ -84,17 +83,13 @@ class Episode::StepLookahead final : public Lookahead {
 
 namespace {
 
-// Who decided an action, for the error message: "human i's policy", or the robot's (-1). The
-// name is only spelled out when the check fails (a string per agent per step was a heap
-// allocation: "human 0's policy" is longer than the short-string buffer).
+// Who decided an action: "human i's policy", or the robot's (-1). Spelled out only on failure.
 std::string PolicyName(int human) {
   return human < 0 ? std::string("the robot's policy")
                    : "human " + std::to_string(human) + "'s policy";
 }
 
-// A policy's decision, a failure named with whose policy it is ("human 1's policy failed: ...",
-// "the robot's policy failed: ..."): a plugin's own message does not say which agent's policy
-// threw, nor that it was a policy. AbortRun passes through: it stops the whole run.
+// A policy's decision; failures say whose policy threw. AbortRun passes through to stop the run.
 Action DecideNamed(Policy& policy, const Observation& obs, int human) {
   try {
     return policy.Decide(obs);
@@ -110,8 +105,7 @@ Action DecideNamed(Policy& policy, const Observation& obs, int human) {
 [[gnu::noinline, gnu::cold]] void ThrowTooFast(const Vec2& velocity, double v_pref, int human) {
   const double speed = velocity.norm();
   const double limit = kMaxSpeedFactor * v_pref;
-  // Four digits, or as many as tell the speed from the limit ("returned 10 m/s, more than 10 x
-  // v_pref (10 m/s)" read as if an allowed speed had been refused).
+  // Four digits, or as many as tell the speed from the limit.
   int digits = 4;
   for (char a[32], b[32]; digits < 17; ++digits) {
     std::snprintf(a, sizeof(a), "%.*g", digits, speed);
@@ -134,7 +128,7 @@ inline void CheckSpeed(const Vec2& velocity, double v_pref, int human) {
 }  // namespace
 
 void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
-  // Spelled out only for an error (a string built per episode was a heap allocation).
+  // Spelled out only for an error: no string per episode.
   const auto where = [&scenario] {
     return "scenario " + (scenario.map ? scenario.map->name : std::string("(no map)")) + ": ";
   };
@@ -153,8 +147,7 @@ void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
   }
   if (!scenario.map) return;
   const StaticMap& map = *scenario.map;
-  // A disc that starts in an obstacle collides at its first step, whatever its policy does.
-  // `human`: its index, or -1 for the robot (named only for an error).
+  // A disc starting in an obstacle collides at once whatever its policy. `human`: index, or -1.
   auto overlap = [&](const Vec2& p, double radius, int human) {
     for (std::size_t k = 0; k < map.rectangles.size(); ++k) {
       const Rect& r = map.rectangles[k];
@@ -272,7 +265,7 @@ void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const
   const SenseInput input{robot, frame, humans, world_};
   for (size_t s = 0; s < sensors.size(); ++s) {
     SensorReading& r = (*out)[s];
-    // The readings are reused step after step: most already carry the name (a copy was a call).
+    // Readings are reused step to step and most already carry the name: no copy.
     if (r.sensor != sensors[s].name) r.sensor = sensors[s].name;
     try {
       sensors[s].sensor->Sense(input, &r);
@@ -339,8 +332,7 @@ StepInfo Episode::Step() {
   const double dt = sim_.time_step;
   try {
     DecideHumans();
-    // Sensing sees positions, velocities and radii only, which deciding does not change: an
-    // observation made by ObserveRobot since the last move is this step's (no second scan).
+    // Deciding changes nothing sensed: an observation since the last move is this step's.
     if (!robot_obs_current_) FillRobotObservation();
     robot_obs_current_ = false;  // the move below changes what the robot would see
     if (robot_needs_.lookahead) {
@@ -388,9 +380,7 @@ StepInfo Episode::Step() {
     humans_[i].position += human_actions_[i].velocity * dt;
   }
 
-  // Record.
-  // Most steps earn nothing: their term is +0, and adding it changes no sum (the sum starts
-  // at +0 and a non-zero term never makes it -0), so the pow is taken only for a reward.
+  // Record. Most steps earn +0, which changes no sum, so pow runs only for a reward.
   if (info.reward != 0.0) {
     result_.discounted_return +=
         std::pow(sim_.gamma, step_index_ * dt * sim_.robot_v_pref) * info.reward;

@@ -1,5 +1,4 @@
-// The rules that decide how a robot move ends: shared by real steps and the lookahead, so a
-// value-based policy is judged by exactly the rules it plans with.
+// How a robot move ends, shared by steps and lookahead: policies plan with the rules that judge.
 #include <cmath>
 
 #include "crowdsim/bench/episode.h"
@@ -11,8 +10,8 @@ StepJudgement JudgeRobotMove(const SimConfig& sim, const CollisionWorld& world,
                              std::span<const AgentState> humans, double time_after) {
   StepJudgement j;
   const double dt = sim.time_step;
-  // CrowdNav's swept test: each human keeps its current velocity, the robot takes its new
-  // action; the closest approach of the two centres over the step decides.
+  // CrowdNav's swept test: humans keep their velocity, the robot takes its action; closest approach
+  // decides.
   const Vec2 origin = Vec2::Zero();
   int closest = -1;
   for (size_t i = 0; i < humans.size(); ++i) {

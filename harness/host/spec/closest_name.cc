@@ -9,8 +9,7 @@ namespace {
 
 char Lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
 
-// Edits from a to b, case ignored: insertions, deletions, substitutions and swaps of two
-// neighbouring letters (optimal string alignment distance).
+// Edits from a to b, case ignored, counting swaps of neighbours (optimal string alignment).
 std::size_t Edits(const std::string& a, const std::string& b) {
   const std::size_t n = a.size(), m = b.size();
   std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));

@@ -56,8 +56,8 @@ std::string FileContentHash(const fs::path& file) {
   return out;
 }
 
-/// How a data file is named in the canonical text: relative to the data root when it lies
-/// there, else by its file name, so that the hash does not depend on where the project sits.
+/// A data file's canonical name: relative to the data root when under it, else its file name, so
+/// the hash ignores where the project sits.
 std::string DataFileName(const fs::path& file) {
   std::error_code ec;
   const fs::path path = fs::weakly_canonical(file, ec);
@@ -73,8 +73,7 @@ std::vector<InputFile> InputFiles(const PluginUse& u) {
   std::vector<InputFile> files;
   std::set<fs::path> seen;  // canonical paths of the files already listed
   std::error_code ec;
-  // A parameter that names a file (weights, a world file) counts with its content: replacing
-  // the file at the same path is another configuration, never resumed as the old one.
+  // A file a parameter names counts by its content: a replaced file is another configuration.
   for (const auto& [k, v] : u.params.values()) {
     const auto* text = std::get_if<std::string>(&v);
     if (!text || text->empty()) continue;
@@ -96,8 +95,7 @@ std::vector<InputFile> InputFiles(const PluginUse& u) {
 
 std::string PluginFileContent(const PluginUse& u) {
   if (!u.loaded || u.loaded->path.empty() || PluginRegistry::IsHarnessPlugin(*u.loaded)) return "";
-  // A suite names the same plugin in many rows: each file is read once per process, again
-  // only when its size or time changes.
+  // Many rows share a plugin: read each file once, again only when its size or time changes.
   struct Seen {
     std::uintmax_t size;
     fs::file_time_type time;
@@ -149,8 +147,8 @@ namespace {
 // A canonical line's key: what comes before its first ':' or '=' ("humans", "seed").
 std::string LineKey(const std::string& line) { return line.substr(0, line.find_first_of(":=")); }
 
-// One plugin use of a line: the text before its braces ("lidar2d", "5-5,orca") and its items
-// by name: "k=v" parameters, and "data:FILE#content:HASH" files under "data:FILE".
+// One plugin use of a line: its name ("lidar2d") and items: "k=v" parameters and
+// "data:FILE#content:HASH" under "data:FILE".
 struct Segment {
   std::string head;
   std::map<std::string, std::string> items;
@@ -182,8 +180,7 @@ std::vector<Segment> Segments(const std::string& rest) {
   return segments;
 }
 
-// Both texts from a little before their first difference, so the change shows even in a long
-// value ("...,0.5,0.1,4000,..." -> "...,0.5,0.2,4000,...").
+// Both texts from a little before their first difference, so a change in a long value shows.
 std::string AroundDifference(const std::string& a, const std::string& b) {
   std::size_t i = 0;
   while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
@@ -200,8 +197,7 @@ std::string AfterKey(const std::string& line, const std::string& key) {
   return line.size() > key.size() ? line.substr(key.size() + 1) : "";
 }
 
-// The values of a line written without names, by the names `fields` gives them in order;
-// "k=v" values by their own name.
+// A line's unnamed values named by `fields` in order; "k=v" values by their own name.
 std::map<std::string, std::string> NamedValues(const std::string& rest,
                                                const std::vector<std::string>& fields) {
   std::map<std::string, std::string> values;

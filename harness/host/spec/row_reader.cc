@@ -164,9 +164,7 @@ void ReadSensors(Reader& r, const YAML::Node& n, const std::string& path, const 
     use.plugin = type_node.Scalar();
     use.loaded =
         r.Plugin(type_node, item.IsMap() ? Reader::Child(p, "type") : p, PluginKind::kSensor);
-    // A reading is named by its sensor's plugin: policies and the Python observation find one
-    // reading per name, so a second sensor of a plugin would never be read (or, in Python,
-    // would list its people twice).
+    // Readings are named by plugin: a second sensor of one plugin would never be read.
     const auto same = std::find_if(out->begin(), out->end(), [&](const PluginUse& earlier) {
       return use.loaded && earlier.loaded &&
              std::string(earlier.loaded->descriptor->name) == use.loaded->descriptor->name;

@@ -1,7 +1,5 @@
-// Internal to the core: the reader of a row spec (the robot policy with its parameters and
-// weights, its sensors, the world and the humans), the one part suites and training files
-// share. A suite's rows are row specs with a label, info and a reference; a training file's
-// top level is one row spec plus name, seed, sim and a `training:` block.
+// Internal: the row spec reader (policy, weights, sensors, world, humans), shared by suite rows and
+// training files.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -23,9 +21,8 @@ inline const std::vector<std::string> kRowSpecKeys = {"policy",  "params", "weig
 /// The keys of a `humans:` map.
 inline const std::vector<std::string> kHumansKeys = {"count", "policy", "params", "goal_mode"};
 
-/// What a row uses for what it does not give itself: a suite's top-level `world`, `humans` (key
-/// by key) and `robot.sensors` (a training file has none: its top level is the row), then the
-/// schema defaults (the humans' policy).
+/// Fallbacks for what a row lacks: a suite's top-level `world`, `humans` (per key) and
+/// `robot.sensors`, then schema defaults.
 struct RowDefaults {
   const SchemaDefaults& schema;
   YAML::Node world{YAML::NodeType::Undefined};
@@ -42,8 +39,8 @@ struct RowRules {
   bool humans_range = false;
 };
 
-/// Reads the row spec in map `n` (at key path `path`, "" for the top level) into `row`; the
-/// caller checks the map's keys (kRowSpecKeys plus its own). `base` resolves relative paths.
+/// Reads the row spec in map `n` at `path` ("": top level) into `row`; the caller checks keys.
+/// `base` resolves relative paths.
 void ReadRowSpec(Reader& r, const YAML::Node& n, const std::string& path, const RowDefaults& d,
                  const RowRules& rules, const std::filesystem::path& base, RowSpec* row);
 

@@ -7,8 +7,7 @@
 namespace crowdsim {
 namespace {
 
-/// The parameter type whose values a default of this alternative is (a number default may be
-/// written as an int: Params::GetDouble converts).
+/// The parameter type of this default alternative (an int default may stand for a number).
 ParamType TypeOf(const ParamValue& v) {
   switch (v.index()) {
     case 0:
@@ -28,8 +27,7 @@ bool TypeFits(ParamType declared, ParamType given) {
   return declared == given || (declared == ParamType::kDouble && given == ParamType::kInt);
 }
 
-/// The enumerator and the C++ type of its default, as a plugin's source spells them (a default
-/// of 2.0 prints as 2: the message must say which alternative of ParamValue it is).
+/// The enumerator and C++ type of its default as source spells them (2.0 prints as 2).
 std::string Spelled(ParamType t) {
   switch (t) {
     case ParamType::kBool:
@@ -62,7 +60,7 @@ std::string Range(const ParamSpec& spec) {
 
 bool InRange(const ParamSpec& spec, double x) { return x >= spec.min && x <= spec.max; }
 
-/// The problem of a default of the declared type, or "" when it is one a suite could give.
+/// The problem of a default of the declared type, or "" when a suite could give it.
 std::string DefaultProblem(const ParamSpec& spec) {
   const std::string head =
       "parameter '" + spec.name + "': default " + FormatParamValue(spec.default_value);

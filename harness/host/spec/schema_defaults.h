@@ -1,6 +1,5 @@
-// Internal to the core: the schema defaults that name plugins (the humans' policy, the imitation
-// teacher and its parameters), read from suites/schema/defaults.yaml under DataRoot(), so that
-// the core's code names no plugin.
+// Internal: defaults that name plugins (humans' policy, teacher), read from
+// DataRoot()/suites/schema/defaults.yaml so code names no plugin.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -15,7 +14,7 @@
 namespace crowdsim::suite_internal {
 
 struct SchemaDefaults {
-  std::filesystem::path file;            ///< where they were read, for messages
+  std::filesystem::path file;            ///< where they are read from, for messages
   std::string humans_policy;             ///< humans.policy when a row has humans
   std::string humans_policy_without;     ///< humans.policy when humans.count is 0
   std::string il_policy;                 ///< training.il_policy

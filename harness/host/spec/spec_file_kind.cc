@@ -9,7 +9,7 @@ SpecFileKind KindOfSpecFile(const std::filesystem::path& file) {
   std::ifstream f(file);
   std::string line;
   for (bool first = true; std::getline(f, line); first = false) {
-    // A UTF-8 byte order mark (some editors write one; YAML reads past it) is no part of a key.
+    // A UTF-8 byte order mark is no part of a key.
     if (first && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);
     if (line.starts_with("training:") || line.starts_with("policy:")) {
       return SpecFileKind::kTraining;

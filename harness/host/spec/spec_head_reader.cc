@@ -9,7 +9,7 @@ SpecHead ReadSpecHead(Reader& r, const YAML::Node& root, const std::string& fold
   SpecHead head;
   head.name = r.Name(root, folder);
   if (Present(root["description"])) {
-    // A list or a map read as "": the description was dropped without a word.
+    // A list or map is not a description: an error, not "".
     if (auto text = r.String(root["description"], "description")) head.description = *text;
   }
   if (root["seed"]) {
@@ -35,7 +35,7 @@ void ReadSim(Reader& r, const YAML::Node& n, SimConfig* sim) {
       sim->*std::get<bool SimConfig::*>(f.member) = *b;
     }
   }
-  // A step count beyond any real episode is a typo (time_step: 1e-300 ran forever).
+  // A step count beyond any real episode is a typo (e.g. time_step: 1e-300).
   constexpr double kMaxSteps = 1e6;
   if (sim->time_limit / sim->time_step > kMaxSteps) {
     r.Error(n["time_step"] ? n["time_step"] : n, "sim.time_step",

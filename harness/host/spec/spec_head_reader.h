@@ -1,5 +1,4 @@
-// Internal to the core: the top-level keys every experiment spec shares (suites and training
-// files): `name`, `description`, `seed` and the `sim:` settings.
+// Internal: the top-level keys of every experiment spec: `name`, `description`, `seed`, `sim:`.
 #pragma once
 
 #include <yaml-cpp/yaml.h>

@@ -36,8 +36,8 @@ namespace {
 
 using namespace suite_internal;
 
-/// The top-level `isolation` (auto, on, off) and `episode_timeout_s`; a timeout needs
-/// isolation (only a worker process can be stopped mid-episode).
+/// Top-level `isolation` (auto, on, off) and `episode_timeout_s`; a timeout needs isolation (only a
+/// worker can be stopped mid-episode).
 void ReadIsolation(Reader& r, const YAML::Node& root, Suite* s) {
   const YAML::Node mode = root["isolation"];
   if (Present(mode)) {
@@ -74,8 +74,8 @@ const RowRules kSuiteRowRules{"a policy plugin name such as linear or orca, or a
                               "no world: give 'world' at the top of the suite or in this row",
                               /*sensors_required=*/false, /*humans_range=*/false};
 
-/// A label names a row in episodes.csv and the tables: control characters (a line break, a tab)
-/// would be turned into spaces there and could make two rows one.
+/// Labels name rows in episodes.csv and tables, where control characters become spaces and could
+/// merge rows.
 void CheckLabel(Reader& r, const YAML::Node& n, const std::string& path) {
   const std::string& label = n.Scalar();
   if (std::all_of(label.begin(), label.end(),
@@ -102,8 +102,8 @@ void ReadInfo(Reader& r, const YAML::Node& info, const std::string& path,
   }
 }
 
-/// `reference: {success: 0.67, collision: 0.20, timeout: 0.13, nav_time: 12.9, danger: 0.09,
-/// source: "..."}`: published values, any subset of them (at least one).
+/// `reference: {success: 0.67, collision: 0.20, ..., source: "..."}`: any non-empty subset of
+/// published values.
 std::optional<PublishedReference> ReadReference(Reader& r, const YAML::Node& n,
                                                 const std::string& path) {
   if (!r.IsMap(n, path, "published values: success, collision, timeout, nav_time, danger, source"))
@@ -136,15 +136,13 @@ void ReadRow(Reader& r, const YAML::Node& n, size_t index, const RowDefaults& d,
   if (!r.IsMap(n, path, "policy, sensors, ...")) return;
   std::vector<std::string> keys = {"label"};
   keys.insert(keys.end(), kRowSpecKeys.begin(), kRowSpecKeys.end());
-  // `sweep` is expanded into rows before they are read (ExpandSweeps), so no row read here has
-  // it; it is named among the valid keys for a misspelled one (`swep:`).
+  // `sweep` is expanded before rows are read; it is listed among valid keys for misspellings.
   keys.insert(keys.end(), {"sweep", "info", "reference"});
   r.CheckKeys(n, path, keys);
   ReadRowSpec(r, n, path, d, kSuiteRowRules, base, row);
   row->label = row->policy.plugin;
   if (n["label"]) {
-    // A label that is not text (a list, a map) read as "" and was called blank; an empty one
-    // (`label:`) is blank.
+    // An empty label (`label:`) is blank; one that is not text gets a type error instead.
     const auto label = n["label"].IsNull() ? std::optional<std::string>("")
                                            : r.String(n["label"], Reader::Child(path, "label"));
     row->label = label.value_or("");
@@ -190,7 +188,7 @@ void ReadSummaries(Reader& r, const YAML::Node& n, const std::vector<RowSpec>& r
               "must be a non-empty list of row labels to average (valid: " + valid + ")");
     } else {
       for (size_t k = 0; k < members.size(); ++k) {
-        // A member that is not text (a map, a list) read as "": "no row is labelled ''".
+        // A member that is not text gets a type error, not "no row is labelled ''".
         const auto text = r.String(members[k], Reader::Index(Reader::Child(path, "rows"), k));
         if (!text) continue;
         const std::string& label = *text;
@@ -325,8 +323,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     // problem once.
     LocateOverrideErrors(overrides, &r.errors, set_paths, row_map);
     LocateSweepErrors(swept, file.string(), &r.errors);
-    // One problem at one place is one error, whichever row's copy of the section found it
-    // (a suite-level world copied into each row a sweep made).
+    // One problem at one place is one error, whichever row's copy of a section found it.
     std::set<std::string> seen;
     for (auto& e : r.errors) {
       const std::string key = e.line > 0 ? e.file + ":" + std::to_string(e.line) + ":" +

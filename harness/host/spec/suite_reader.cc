@@ -63,9 +63,8 @@ bool Reader::IsMap(const YAML::Node& n, const std::string& path, const char* wha
 
 namespace {
 
-// Whether a scalar is a number as written (all of it, in any notation strtod reads; an
-// overflow gives +-inf), with its value; `underflow` says it was too small for a double (1e-400,
-// which is then 0 or nearly).
+// Whether a scalar is wholly a number (any strtod notation; overflow: +-inf), and its value;
+// `underflow`: below a double (1e-400).
 bool WrittenAsNumber(const YAML::Node& n, double* value, bool* underflow = nullptr) {
   if (!n.IsScalar() || n.Scalar().empty()) return false;
   const std::string& text = n.Scalar();
@@ -88,15 +87,14 @@ std::optional<double> Reader::Number(const YAML::Node& n, const std::string& pat
     if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
     v = n.as<double>();
   } catch (const YAML::Exception&) {
-    // A number too large for a double (1e400) is a number out of range, not "not a number".
+    // A number beyond a double (1e400) is out of range, not "not a number".
     if (!WrittenAsNumber(n, &v)) {
       Error(n, path, "must be a number, found " + Scalar(n));
       return std::nullopt;
     }
   }
   if (!std::isfinite(v) || v < lo || v > hi || (lo_open && v == lo)) {
-    // An infinite bound is open: inf itself is never a valid value (a range "[0, inf]" read
-    // as if it were).
+    // An infinite bound is open: inf itself is never valid.
     std::ostringstream os;
     os << "value " << n.Scalar()
        << " is out of range; valid: " << (lo_open || std::isinf(lo) ? "(" : "[") << lo << ", " << hi
@@ -114,8 +112,7 @@ std::optional<std::int64_t> Reader::Integer(const YAML::Node& n, const std::stri
     if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
     v = n.as<std::int64_t>();
   } catch (const YAML::Exception&) {
-    // A whole number in another notation (1e3) is that number; one beyond the 64-bit range
-    // (1e30, 99999999999999999999) is out of range.
+    // A whole number in another notation (1e3) counts; beyond 64 bits it is out of range.
     double d = 0;
     bool underflow = false;
     if (!WrittenAsNumber(n, &d, &underflow) || underflow ||
@@ -184,8 +181,8 @@ const LoadedPlugin* Reader::Plugin(const YAML::Node& n, const std::string& path,
   auto name = String(n, path);
   if (!name) return nullptr;
   std::string name_or_path = *name;
-  // A relative .so path that is not there from the working folder is the suite folder's, as
-  // for the files parameters name (Params::ResolvePath).
+  // A relative .so path missing from the working folder is the suite folder's, as in
+  // Params::ResolvePath.
   const std::filesystem::path given(*name);
   std::error_code ec;
   if ((name->find('/') != std::string::npos || name->ends_with(".so")) && given.is_relative() &&
@@ -202,9 +199,8 @@ const LoadedPlugin* Reader::Plugin(const YAML::Node& n, const std::string& path,
       const std::string close = DidYouMean(*name, available);
       msg = "unknown " + std::string(PluginKindName(kind)) + " plugin '" + *name +
             "' (valid: " + Join(available) + "; or the path of a plugin .so file)" + close;
-      // One of the project's own that this build leaves out (the learned policies without
-      // libtorch); else, not a typo of a plugin found: most likely one of yours whose folder is
-      // not searched.
+      // One of ours this build lacks (learned policies without libtorch), else likely a user plugin
+      // in an unsearched folder.
       if (const std::string_view why = LeftOutPluginReason(*name); !why.empty()) {
         msg += "; '" + *name +
                "' is one of crowdsim-bench's own plugins, not in this build: " + std::string(why);

@@ -1,6 +1,5 @@
-// Internal to the core: the YAML reader behind every experiment spec (suites, training files)
-// and world files' plugin parameters. It collects every error with file:line:col and the key
-// path, so a file's problems are all reported at once.
+// Internal: the YAML reader of specs and world parameters, collecting every error (file:line:col,
+// key path) to report all at once.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -57,8 +56,8 @@ class Reader {
   std::optional<bool> Bool(const YAML::Node& n, const std::string& path);
   std::optional<std::string> String(const YAML::Node& n, const std::string& path);
 
-  /// The required top-level `name`, used as a folder name (letters, digits, '_', '-', '.');
-  /// `folder` says which folder it names, for the message.
+  /// The required top-level `name`, a folder name (letters, digits, '_', '-', '.'); `folder`: which
+  /// folder, for messages.
   std::string Name(const YAML::Node& root, const std::string& folder);
 
   /// Loads a plugin of `kind`; on failure records the error with the choices.
@@ -74,7 +73,7 @@ class Reader {
 
  private:
   std::vector<std::string> Available(PluginKind kind);
-  /// Where a plugin name was looked for, and how a folder of yours is searched too.
+  /// Where a plugin name is looked for, and how a folder of yours is searched too.
   std::string NotSearchedHint(const std::string& name) const;
 
   std::string file_;

@@ -50,8 +50,7 @@ std::optional<std::vector<Segment>> ParsePath(const std::string& path, std::stri
   return segments;
 }
 
-/// The name a list item answers to in [name]: its label, else its policy or type (a sensor
-/// map), else its own text (a sensor given by name).
+/// An item's name for [name]: its label, else policy or type, else its text.
 std::string ItemName(const YAML::Node& item) {
   if (item.IsScalar()) return item.Scalar();
   if (item.IsMap()) {
@@ -69,11 +68,8 @@ bool IsIndex(const std::string& s) {
   });
 }
 
-/// Sets the node at `segments` under `root` to `value`. Returns "" or what went wrong;
-/// `resolved` receives the path with list items by index (as error messages name them).
-/// `map` with `key` set to `value`, as a new map holding the same other children (which keep
-/// their file positions for error messages). Nothing is assigned in place: yaml-cpp nodes are
-/// shared references, and the rows a sweep makes share their unchanged parts.
+/// `map` with `key` set to `value`, as a new map sharing the other children. Never in place:
+/// yaml-cpp nodes are shared references, and sweep rows share unchanged parts.
 YAML::Node WithKey(const YAML::Node& map, const std::string& key, const YAML::Node& value) {
   YAML::Node copy(YAML::NodeType::Map);
   bool replaced = false;
@@ -98,8 +94,7 @@ YAML::Node WithItem(const YAML::Node& list, std::size_t index, const YAML::Node&
   return copy;
 }
 
-/// The key path as the readers write it (rows[1].humans.count), or "" when it cannot be known
-/// without the document (a [name] selector).
+/// The key path as readers write it (rows[1].humans.count), or "" for a [name] selector.
 std::string ReaderPath(const std::vector<Segment>& segments) {
   std::string out;
   for (const Segment& s : segments) {
@@ -112,8 +107,8 @@ std::string ReaderPath(const std::vector<Segment>& segments) {
   return out;
 }
 
-/// `node` with the value at segments[i..] (selector k of segment i onward) set to `value`, as
-/// new containers along the path; "" in `problem` or what went wrong.
+/// `node` with segments[i..] (from selector k) set to `value`, copying containers along the path;
+/// `problem`: "" or what went wrong.
 YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments, std::size_t i,
                    std::size_t k, const YAML::Node& value, std::string* resolved,
                    std::string* problem) {
@@ -158,8 +153,8 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
       valid += (j ? ", " : "") + std::to_string(j) + (names[j].empty() ? "" : " " + names[j]);
     }
     *problem = "'" + *resolved + "' has no item [" + sel + "] (items: " + valid + ")";
-    // A label a sweep makes (crowd/humans.count=2): the rows exist only once it has run. Only
-    // a row that has a sweep is pointed to (orca/fats is no row of `orca`'s when it has none).
+    // A sweep label (crowd/humans.count=2) exists only after sweeping: hint it for rows with a
+    // sweep.
     const std::string swept = sel.substr(0, sel.find('/'));
     const auto row = std::find(names.begin(), names.end(), swept);
     if (swept.size() < sel.size() && row != names.end()) {
@@ -176,8 +171,7 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
   if (last_selector && i + 1 == segments.size()) return WithItem(node, *found, value);
   YAML::Node item = node[*found];
   if (last_selector && item.IsScalar()) {
-    // A list item given by its name alone (a sensor `person`) takes keys in its map form,
-    // {type: person, KEY: VALUE}, as the suite may write it.
+    // An item given by name alone (sensor `person`) takes keys in its map form {type: person}.
     YAML::Node as_map(YAML::NodeType::Map);
     as_map.force_insert("type", item);
     item.reset(as_map);  // rebinds this handle; `=` would overwrite the shared node itself
@@ -188,8 +182,8 @@ YAML::Node SetFrom(const YAML::Node& node, const std::vector<Segment>& segments,
   return WithItem(node, *found, changed);
 }
 
-/// Sets the value at `segments` in `root` (rebinding `root` to the edited copy). Returns ""
-/// or what went wrong.
+/// Sets the value at `segments` in `root` (rebinding it to the edited copy); returns "" or what
+/// went wrong. `resolved_out`: the path by index.
 std::string SetPath(YAML::Node& root, const std::vector<Segment>& segments, const YAML::Node& value,
                     std::string* resolved_out = nullptr) {
   std::string resolved, problem;
@@ -199,9 +193,8 @@ std::string SetPath(YAML::Node& root, const std::vector<Segment>& segments, cons
   return problem;
 }
 
-/// Where an override's value begins: its first '=' outside a [...] selector (a label may hold
-/// one: rows[crowd/humans.count=2]), else its first '=' (an unclosed selector is then said as
-/// such); npos when it has none.
+/// Where an override's value begins: the first '=' outside a [...] selector, else the first '=';
+/// npos when none.
 std::size_t ValueSign(const std::string& text) {
   int depth = 0;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -259,9 +252,8 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
     e.column = 0;
   };
   std::vector<bool> placed(errors->size(), false);
-  // First, by the path each override set (list items by index; a row a sweep expanded under
-  // each of its new indices): errors about that value or under it, and, with no place in the
-  // file, about a key the override made on its way (rows[orca].param.x=1: 'param' unknown).
+  // First by each override's resolved path: errors at or under it, and placeless ones about keys it
+  // created.
   for (std::size_t i = 0; i < overrides.size() && i < resolved.size(); ++i) {
     if (resolved[i].empty()) continue;
     std::vector<std::string> paths = {resolved[i]};
@@ -287,8 +279,7 @@ void LocateOverrideErrors(const std::vector<std::string>& overrides,
       }
     }
   }
-  // Then, for the rest, by the keys as written (a [name] selector unresolved): the error's
-  // path under the override's, or ending in its last key (values a row inherits).
+  // Then by the keys as written: errors under the override's path, or ending in its last key.
   for (const std::string& text : overrides) {
     const std::size_t eq = ValueSign(text);
     if (eq == std::string::npos) continue;
@@ -378,8 +369,7 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
       combinations *= kv.second.size();
       axes.push_back(std::move(axis));
     }
-    // An axis inside another (humans and humans.count) would be overwritten by it in every
-    // row, while the labels and info columns still named its values.
+    // A nested axis (humans and humans.count) would be overwritten while labels name its values.
     for (std::size_t a = 0; ok && a < axes.size(); ++a) {
       for (std::size_t b = 0; b < axes.size(); ++b) {
         if (a == b || !PathContains(axes[a].key, axes[b].key)) continue;
@@ -464,7 +454,7 @@ void LocateSweepErrors(const std::vector<SweptRow>& swept, const std::string& fi
       e.key_path = source + "." + rest;  // the row as the file writes it
       bool placed = false;
       for (const SweptRow::Key& key : row.keys) {
-        // The swept key itself, a key under it, or a map on its way that the sweep made.
+        // The swept key, a key under it, or a map the sweep made on its way.
         if (!PathContains(key.path, rest) && !key.path.starts_with(rest + ".")) continue;
         e.key_path = source + ".sweep." + key.path;
         if (e.line == 0 && !from_set) {  // a key the sweep made: the sweep entry's place

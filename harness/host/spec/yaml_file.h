@@ -1,5 +1,4 @@
-// The host's YAML loading for suites and training files: the shared loader's problems as
-// SuiteErrors, and a run's output folder given as a file named with the suite it ran.
+// The host's YAML loading: loader problems as SuiteErrors; a run folder stands for its suite.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -12,8 +11,8 @@
 
 namespace crowdsim::suite_internal {
 
-/// The document of `file`, or a null node with `errors` saying why (`what` names the kind of
-/// file in messages, e.g. "suite file"). Duplicate keys count; any problem returns null.
+/// The document of `file`, or a null node with `errors` saying why (duplicate keys count); `what`:
+/// the file's kind.
 YAML::Node LoadYamlFile(const std::filesystem::path& file, const std::string& what,
                         std::vector<SuiteError>* errors);
 

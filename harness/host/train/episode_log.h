@@ -1,7 +1,5 @@
-// training_episodes.csv: one line per demonstration, imitation epoch and RL episode (phase,
-// epsilon, outcome, return, steps, loss, replay-memory composition), so a training can be
-// watched and its learning curve drawn. Appended as training goes; a checkpoint records the
-// flushed size, and a resume cuts the file back to it (the episodes after it run again).
+// training_episodes.csv: a line per demonstration, imitation epoch and RL episode. Checkpoints
+// record its flushed size; resume truncates to it.
 #pragma once
 
 #include <array>
@@ -32,8 +30,7 @@ class EpisodeLog {
       "phase,index,epsilon,outcome,return,steps,loss,memory,mem_imitation,mem_success,"
       "mem_collision,mem_timeout";
 
-  /// Opens `file` for appending; with `keep_bytes` >= 0 (a resume), first cuts it to that
-  /// size. A new or empty file gets the header.
+  /// Opens `file` to append; `keep_bytes` >= 0 (resume) truncates first. New files get the header.
   void Open(const std::filesystem::path& file, std::int64_t keep_bytes);
   void Append(const EpisodeLogRow& row);
   /// Flushes and returns the file size (what a checkpoint records).

@@ -1,6 +1,5 @@
-// CrowdNav's replay memory: a ring buffer of (state, value target) pairs that overwrites the
-// oldest entry once full. Each pair remembers the kind of episode it came from, so the
-// trainer can log the memory's composition.
+// CrowdNav's replay memory: a ring buffer of (state, value target) pairs, each tagged with its
+// episode kind for logging.
 #pragma once
 
 #include <array>
@@ -13,7 +12,7 @@
 
 namespace crowdsim::training {
 
-/// The episode a memory entry was recorded in.
+/// The episode a memory entry is recorded in.
 enum class MemorySource : std::uint8_t { kImitation, kSuccess, kCollision, kTimeout };
 inline constexpr std::size_t kMemorySources = 4;
 

@@ -23,8 +23,7 @@ std::string TrainSpec::ConfigHash() const { return suite_internal::HashConfigTex
 
 namespace {
 
-/// A training file's top level is one row spec: its sensors and world must be given, and its
-/// humans may be a range drawn per episode.
+/// A training file's row: sensors and world required, humans may be a per-episode range.
 const suite_internal::RowRules kTrainingRowRules{
     "the policy to train: cadrl or sarl",
     "missing key 'world' (e.g. {source: random_rect, obstacles: 1, split: train})",
@@ -42,8 +41,7 @@ void UseTrainSplit(Reader& r, const YAML::Node& n, PluginUse* world) {
   }
 }
 
-// A `training:` key whose value is one of a few words (store_timeouts, exploration): sets
-// *out, or reports "expected a, b or c, got 'x'".
+// A one-of-a-few-words `training:` key: sets *out or reports the valid words.
 template <typename E>
 void ReadChoice(Reader& r, const YAML::Node& training, const std::string& key,
                 const std::vector<std::pair<std::string, E>>& choices, E* out) {
@@ -62,8 +60,7 @@ void ReadChoice(Reader& r, const YAML::Node& training, const std::string& key,
           "expected " + expected + ", got " + suite_internal::Scalar(node));
 }
 
-/// The teacher's parameters that the schema defaults give unless `il_params` does, where the
-/// teacher's plugin has them (CrowdNav: more clearance from an invisible robot).
+/// Teacher parameters from schema defaults unless `il_params` sets them (CrowdNav: more clearance).
 void DefaultTeacherParams(Reader& r, const YAML::Node& given,
                           const suite_internal::SchemaDefaults& schema, TrainSpec* s) {
   const YAML::Node& defaults =
@@ -180,7 +177,7 @@ std::string Canonical(const TrainSpec& s) {
   os << "\nworld:";
   suite_internal::Canonical(row.world, os);
   os << "\nhumans:" << row.humans.count << "-" << row.humans.count_max << ",";
-  // Written only when not the default, so that the hashes of earlier trainings stay valid.
+  // Written only when not the default, so existing trainings' hashes stay valid.
   if (row.humans.goal_mode != HumanGoalMode::kStay) os << "goal_mode=new_goal,";
   suite_internal::Canonical(row.humans.policy, os);
   os << "\nteacher:";
@@ -193,7 +190,7 @@ std::string Canonical(const TrainSpec& s) {
      << "," << t.capacity << "," << t.batch_size << "," << t.train_batches << ","
      << t.validation_interval << "," << t.validation_episodes
      << ",store_timeouts=" << ToString(t.store_timeouts);
-  // Written only when not the default, so that the hashes of earlier trainings stay valid.
+  // Written only when not the default, so existing trainings' hashes stay valid.
   if (t.exploration != ExplorationRule::kUniform) os << ",exploration=" << ToString(t.exploration);
   os << "\n";
   return os.str();

@@ -41,8 +41,7 @@ namespace {
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void OnSignal(int sig) { g_signal = sig; }
 
-/// Catches SIGINT / SIGTERM / SIGHUP (a closed terminal or ssh session) while alive, so the
-/// trainer can checkpoint before leaving.
+/// Catches SIGINT, SIGTERM and SIGHUP while alive, so the trainer checkpoints before leaving.
 class SignalGuard {
  public:
   SignalGuard() {
@@ -69,9 +68,8 @@ double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// Where an episode's transitions go in the replay memory; nothing for an episode that is not
-/// stored. Demonstrations store successes and collisions (CrowdNav); RL episodes store
-/// timeouts too when the training says so.
+/// Where an episode's transitions go: demonstrations store successes and collisions (CrowdNav); RL
+/// also timeouts if configured.
 std::optional<MemorySource> SourceOf(EpisodeStatus s, bool rl, StoreTimeouts timeouts) {
   switch (s) {
     case EpisodeStatus::kSuccess:
@@ -87,8 +85,8 @@ std::optional<MemorySource> SourceOf(EpisodeStatus s, bool rl, StoreTimeouts tim
   }
 }
 
-/// One recorded episode: the encoded state before each decision and the step rewards, and
-/// when asked for, the state it stopped in (a timeout's bootstrap).
+/// One recorded episode: encoded states before decisions, step rewards, and optionally the final
+/// state.
 struct Trajectory {
   std::vector<EncodedState> states;
   std::vector<float> rewards;
@@ -148,14 +146,12 @@ class Trainer {
   const TrainingSettings& t_;
 
   std::shared_ptr<WorldSource> world_;
-  /// The learner (the row's robot policy), its sensors and the humans, made as a suite run
-  /// makes a row's.
+  /// The learner, its sensors and the humans, made as a suite row's.
   std::unique_ptr<RowInstance> row_;
   Policy* learner_policy_ = nullptr;
   Trainable* learner_ = nullptr;
   std::shared_ptr<Policy> teacher_;
-  /// The row's agents for the most humans an episode may have; the robot is set per episode
-  /// (teacher or learner).
+  /// The row's agents for the most humans an episode may have; robot set per episode.
   EpisodeAgents agents_;
 
   ReplayMemory memory_;
@@ -195,8 +191,8 @@ void Trainer::Build() {
   if (const std::string unmet = row_->HumansNeedRobotOnly(); !unmet.empty()) {
     throw TrainRefused(unmet + "; " + kPlainHumansPolicy);
   }
-  // The run's constants before imitation, whose targets the learner fits before it drives an
-  // episode (a value with a discounted route prior needs the run's gamma); no map: no episode.
+  // The run's constants before imitation (a discounted route prior needs gamma); no map: no
+  // episode.
   EpisodeContext constants;
   constants.sim = spec_.sim;
   learner_policy_->Reset(constants);
@@ -260,9 +256,7 @@ Trajectory Trainer::RunEpisode(Policy* robot, const Scenario& scenario, bool enc
   }
   tr.result = episode.result();
   if (tr.result.status == EpisodeStatus::kPolicyError) {
-    // The episode's error says whose policy failed ("the robot's policy failed: ...", "human
-    // 1's policy failed: ...") or which sensor: said again here, it read "the robot policy
-    // failed: the robot's policy failed: ...".
+    // The episode's error already names whose policy or which sensor failed: not prefixed again.
     throw TrainError("episode of scenario seed " + std::to_string(scenario.seed) + ": " +
                      tr.result.error);
   }
@@ -458,8 +452,8 @@ void Trainer::Reinforcement() {
     summary_.times.rl_episodes += Since(t0);
     if (const auto source = SourceOf(tr.result.status, true, t_.store_timeouts)) {
       t0 = Clock::now();
-      // TD(0): y_i = r_i + gamma' V_target(s_{i+1}). A terminal last step keeps its reward; a
-      // timeout stored as a truncation bootstraps from the state it stopped in.
+      // TD(0): y_i = r_i + gamma' V_target(s_{i+1}); terminal steps keep their reward, truncated
+      // timeouts bootstrap.
       std::vector<const EncodedState*> next;
       for (std::size_t i = 1; i < tr.states.size(); ++i) next.push_back(&tr.states[i]);
       if (tr.final_state) next.push_back(&*tr.final_state);
@@ -514,16 +508,13 @@ void Trainer::SaveCheckpoint() {
   learner_->SaveTrainingState(tmp);
   memory_.Save(tmp / "memory.bin");
   probe_.Save(tmp / "probe.bin");
-  // The best weights so far are part of the state: a resume restores them, so that best.pt
-  // never holds weights of episodes past the checkpoint (a finished training resumed to a
-  // shorter RL phase kept the best.pt of its old end while summary.json named an earlier one).
+  // Best weights are state: resume restores them, so best.pt never outruns the checkpoint.
   if (state_.best_episode >= 0 && fs::exists(Out("best.pt")))
     fs::copy_file(Out("best.pt"), tmp / "best.pt");
   state_.episode_log_bytes = episode_log_.Flush();
   state_.rl_episodes = t_.rl_episodes;
   WriteCheckpointState(tmp / "state.txt", state_);
-  // The complete new checkpoint replaces the old one; LoadCheckpoint also accepts a
-  // checkpoint.tmp left complete by a crash between these two lines.
+  // Replace the old checkpoint; LoadCheckpoint accepts a complete checkpoint.tmp after a crash.
   fs::remove_all(dir);
   fs::rename(tmp, dir);
   WriteLearningCurve();
@@ -531,13 +522,12 @@ void Trainer::SaveCheckpoint() {
 }
 
 void Trainer::AcceptNewRlLength(const fs::path& dir) {
-  // The RL length the checkpoint ran toward: recorded in it (v4), else in the folder's
-  // summary.json (written when the run stopped).
+  // The RL length the checkpoint aimed at: in it (v4), else in summary.json.
   int before = state_.rl_episodes;
   if (before < 0)
     before = static_cast<int>(ReadManifestInteger(Out("summary.json"), "/procedure/rl_episodes"));
   if (before < 0 || spec_.ConfigHashWithRlEpisodes(before) != state_.config_hash) {
-    // training.yaml in the folder holds the canonical text the checkpoint was made with.
+    // training.yaml in the folder holds the canonical text the checkpoint is made with.
     std::ostringstream started;
     started << std::ifstream(Out("training.yaml")).rdbuf();
     const std::string differs = suite_internal::DescribeConfigDifference(
@@ -579,7 +569,7 @@ void Trainer::LoadCheckpoint() {
     learner_->LoadTrainingState(dir);
     memory_.Load(dir / "memory.bin");
     if (fs::exists(dir / "probe.bin")) probe_.Load(dir / "probe.bin");
-    // The checkpoint's best weights (absent in checkpoints written before they were kept).
+    // The checkpoint's best weights (absent from older checkpoints).
     if (fs::exists(dir / "best.pt")) {
       fs::copy_file(dir / "best.pt", Out("best.pt"), fs::copy_options::overwrite_existing);
     } else if (state_.best_episode < 0) {

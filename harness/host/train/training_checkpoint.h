@@ -1,5 +1,5 @@
-// The trainer's own part of a checkpoint (phase, counters, validation history) as a small
-// text file; the weights, optimiser and memory are saved next to it by their owners.
+// The trainer's checkpoint part (phase, counters, validation history), as text; other parts are
+// saved by their owners.
 #pragma once
 
 #include <cstdint>

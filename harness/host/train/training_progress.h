@@ -1,5 +1,4 @@
-// The trainer's progress line on stderr: phase, episode, epsilon, recent outcomes, loss,
-// rate and ETA. Rewritten in place on a terminal, one line every few seconds otherwise.
+// The trainer's progress line on stderr: in place on a terminal, else every few seconds.
 #pragma once
 
 #include <chrono>

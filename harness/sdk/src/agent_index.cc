@@ -18,8 +18,7 @@ struct Hit {
 // Nearest first, ties by index: a strict total order, so the k best are one exact set.
 inline bool Less(const Hit& a, const Hit& b) { return a.d2 < b.d2 || (a.d2 == b.d2 && a.i < b.i); }
 
-// The k best hits so far, kept sorted nearest first in caller-provided slots (k is small:
-// ORCA's 10 neighbours, where inserting into a short sorted array beats a heap).
+// The k best hits so far, nearest first in caller slots (k is small: a sorted array beats a heap).
 class KBest {
  public:
   KBest(Hit* slots, int k) : slots_(slots), k_(k) {}
@@ -56,22 +55,16 @@ inline double GapTo(double x, double lo, double hi, double margin) {
   return std::max(0.0, std::max(lo - x, x - hi) - margin);
 }
 
-// First and last cell (of `cells` along an axis) that hold coordinates from lo to hi, given
-// as offsets from the grid's origin times the inverse cell size; first > last when none.
-// Truncation stands in for floor: a negative lower bound clamps to 0 either way, and a
-// negative upper bound (the span lies before the grid) is tested first.
+// First and last cell along an axis holding lo..hi (in cells from the origin); first > last when
+// none. Truncation serves as floor.
 inline void CellRange(double lo, double hi, int cells, int* first, int* last) {
   const double top = static_cast<double>(cells - 1);
   *first = static_cast<int>(std::clamp(lo, 0.0, top + 1.0));
   *last = hi < 0.0 ? -1 : static_cast<int>(std::min(hi, top));
 }
 
-// Nearest for a crowd small enough to have no grid (`range_sq`: range squared). A small crowd
-// (the paper's five humans and the robot): every agent is looked at, in index order (Rebuild
-// keeps that order for crowds this small), so an agent never passes one at the same distance
-// and the k best come out as the grid search would give them. The k best so far are kept
-// sorted with their indices straight in `out` (no copy at the end) and their distances squared
-// after a sentinel that no distance passes (the insertion needs no bound test).
+// Nearest without a grid, for small crowds: index order makes ties match the grid search. The k
+// best stay sorted in `out`, distances after a sentinel (no bound test).
 void NearestOfFew(std::span<const Vec2> positions, const Vec2& p, double range_sq, int max_count,
                   int exclude, std::vector<int>* out) {
   const int count = static_cast<int>(positions.size());
@@ -140,8 +133,7 @@ void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
   const double extent = std::max(hi.x() - lo.x(), hi.y() - lo.y());
   const double max_cells = std::max(1.0, 2.0 * std::sqrt(static_cast<double>(agents.size())));
   cell_ = std::max(cell_size, extent / max_cells);
-  // A position's cell comes from a rounded division: the cell bounds that prune the search
-  // are widened by far more than that rounding (a few ulps of the coordinates).
+  // A position's cell comes from a rounded division; the pruning bounds' margin far exceeds it.
   margin_ =
       1e-9 *
       (1.0 + std::max({std::abs(lo.x()), std::abs(lo.y()), std::abs(hi.x()), std::abs(hi.y())}));
@@ -159,8 +151,7 @@ void AgentIndex::Rebuild(std::span<const AgentState> agents, double cell_size) {
   for (int c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
   order_.resize(agents.size());
   position_.resize(agents.size());
-  // Counting sort: each agent goes to the next free slot of its cell (cell_start_[c] runs
-  // to the end of cell c), then the starts move back one cell.
+  // Counting sort: each agent takes the next free slot of its cell, then starts move back one cell.
   for (size_t i = 0; i < agents.size(); ++i) {
     const int k = cell_start_[cell_of_[i]]++;
     order_[k] = static_cast<int>(i);
@@ -182,8 +173,7 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
     return;
   }
   out->clear();
-  // The querying agent's radius from its last query, when there is one: a disc that held its
-  // k nearest a step ago most likely holds them now.
+  // Start from the agent's last query radius: a disc that held its k nearest likely still does.
   const bool hinted =
       exclude >= 0 && exclude < static_cast<int>(hint_.size()) && max_count <= kMaxHintedCount;
   double kth_d2 = -1.0;
@@ -204,9 +194,8 @@ void AgentIndex::Nearest(const Vec2& p, double range, int max_count, int exclude
 
 bool AgentIndex::DiscSearch(const Vec2& p, double range, double radius, int max_count, int exclude,
                             std::vector<int>* out, double* kth_d2) const {
-  // Every agent within `radius` of p (and within range) is gathered, row by row of cells, each
-  // row cut to the chord of the disc; the cell bounds carry margin_ for rounding. Gathering is
-  // a store and a count, without a branch on the distance.
+  // Gather every agent within `radius` of p, row by row of cells cut to the disc's chord;
+  // branch-free.
   const double range_sq = range * range;
   const double radius_sq = radius * radius;
   const double reach = radius + margin_;
@@ -243,9 +232,7 @@ bool AgentIndex::DiscSearch(const Vec2& p, double range, double radius, int max_
       n += static_cast<int>((d2 <= radius_sq) & (d2 < range_sq) & (i != exclude));
     }
   }
-  // Enough agents within the disc: the k nearest of all are the k nearest of these, as any
-  // agent outside the disc is farther than each of them. Fewer: only a disc that covered the
-  // whole range gives the answer (all of them).
+  // k agents in the disc are the k nearest overall; fewer answer only if the disc covers the range.
   if (n < max_count && radius < range) return false;
   Hit slots[kMaxHintedCount];
   KBest best(slots, max_count);
@@ -278,8 +265,7 @@ void AgentIndex::RingSearch(const Vec2& p, double range, int max_count, int excl
       std::min(ny_ - 1, static_cast<int>(std::floor((p.y() + range - origin_.y()) / cell_)));
   if (x0 > x1 || y0 > y1) return;  // kth_d2 stays -1: none in range
 
-  // Agents of cells [xa, xb] of row cy: one contiguous run of the cell-sorted arrays, skipped
-  // when its nearest point is too far.
+  // Cells [xa, xb] of row cy: one run of the sorted arrays, skipped when too far.
   const auto visit_span = [&](int xa, int xb, int cy) {
     const double gx =
         GapTo(p.x(), origin_.x() + xa * cell_, origin_.x() + (xb + 1) * cell_, margin_);
@@ -290,11 +276,8 @@ void AgentIndex::RingSearch(const Vec2& p, double range, int max_count, int excl
     const int end = cell_start_[cy * nx_ + xb + 1];
     for (int k = cell_start_[cy * nx_ + xa]; k < end; ++k) offer(k);
   };
-  // The cell holding p (it may lie outside the grid), then rings of cells around it: ring r
-  // lies outside the block of rings < r, so once the k best are nearer than that block's
-  // sides, no farther ring can change the answer (RVO2's kd-tree stops the same way). A ring
-  // is its top and bottom rows (one run of agents each: cells are stored row by row) and the
-  // single cells of its sides between them.
+  // The cell of p, then rings outward until the k best beat the next ring (as RVO2's kd-tree); a
+  // ring is two row runs plus side cells.
   const int pcx = static_cast<int>(std::floor((p.x() - origin_.x()) / cell_));
   const int pcy = static_cast<int>(std::floor((p.y() - origin_.y()) / cell_));
   const int last_ring = std::max({pcx - x0, x1 - pcx, pcy - y0, y1 - pcy});

@@ -10,8 +10,8 @@
 namespace crowdsim {
 namespace {
 
-// Slab test of the ray t * (dx, dy) from the origin against a rectangle relative to it;
-// (ix, iy) = (1/dx, 1/dy). Axis-parallel beams take the branch that avoids 0 * inf.
+// Slab test of ray t * (dx, dy) against an origin-relative rectangle; (ix, iy) = (1/dx, 1/dy).
+// Axis-parallel beams avoid 0 * inf.
 inline double RelRectHit(const RelRect& r, double dx, double dy, double ix, double iy) {
   double t_near = -kInfinity;
   double t_far = kInfinity;
@@ -121,8 +121,7 @@ void ScanBeamsScalar(std::span<const Vec2> directions, double max_range,
     _mm256_store_pd(lanes, best);
     std::copy(lanes, lanes + count, ranges + first);
   }
-  // Upper halves cleared before the scalar code that follows (see agent_lines.cc: GCC may
-  // leave them dirty, and scalar code after that ran 2.5x slower on a Zen 4).
+  // GCC may leave upper halves dirty, slowing the scalar code that follows (see agent_lines.cc).
   _mm256_zeroupper();
 }
 

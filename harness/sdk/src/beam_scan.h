@@ -1,7 +1,5 @@
-// The exact 2D part of a lidar scan: every beam from one origin against the rectangles and
-// discs near it, all given relative to that origin. One beam at a time, or four beams at a time
-// in AVX2 lanes; both compute each beam with the same IEEE operations in the same order (no
-// fused multiply-add), so they agree to the last bit (crowdsim/vector_units.h).
+// The exact 2D part of a lidar scan: beams from one origin against nearby shapes, scalar or four
+// per AVX2 step, bit-identical.
 #pragma once
 
 #include <span>
@@ -20,9 +18,8 @@ struct RelDisc {
   double cx, cy, c;
 };
 
-/// ranges[k] = the distance along directions[k] (unit vectors) to the nearest rectangle or
-/// disc it meets, or max_range; a beam starting inside a shape gets 0. The fastest of the two
-/// below that this processor runs, or the scalar one when SimdDisabled().
+/// ranges[k]: distance along unit directions[k] to the nearest shape, max_range if none, 0 from
+/// inside. Dispatches to the fastest kernel.
 void ScanBeams(std::span<const Vec2> directions, double max_range, std::span<const RelRect> rects,
                std::span<const RelDisc> discs, double* ranges);
 
@@ -31,8 +28,7 @@ void ScanBeamsScalar(std::span<const Vec2> directions, double max_range,
                      std::span<const RelRect> rects, std::span<const RelDisc> discs,
                      double* ranges);
 
-/// Four beams at a time in AVX2 lanes (a last group of fewer padded with copies of its last
-/// beam). Call only when HaveAvx2().
+/// Four beams per AVX2 step (a short last group padded with its last beam). Needs HaveAvx2().
 void ScanBeamsAvx2(std::span<const Vec2> directions, double max_range,
                    std::span<const RelRect> rects, std::span<const RelDisc> discs, double* ranges);
 

@@ -15,12 +15,11 @@ namespace {
 // Boxes extend this far above and below the z = 0 plane every query lives in.
 constexpr double kBoxHalfHeight = 1.0;
 
-// Bullet stores AABBs in float: every broadphase query is padded by this much (m) and the
-// candidates are then decided exactly in double, so float rounding never drops a contact.
+// Bullet's AABBs are float: queries are padded by this (m) and decided in double, so rounding drops
+// no contact.
 constexpr double kBroadphasePad = 1e-3;
 
-// Bullet keeps pools for contact manifolds and pair algorithms; this world never runs
-// Bullet's narrow phase, so tiny pools save megabytes per CollisionWorld.
+// This world never runs Bullet's narrow phase, so tiny manifold and pair pools save megabytes.
 constexpr int kBulletPoolSize = 16;
 
 // Per-thread buffers so that scans and sweeps do not allocate once warmed up.
@@ -36,8 +35,7 @@ Scratch& ThreadScratch() {
   return scratch;
 }
 
-// Collects the index of every rectangle whose proxy the broadphase reports (a proxy's client
-// object is its rectangle in the map).
+// Collects the rectangle index of every proxy the broadphase reports (its client object).
 struct IndexCollector final : btBroadphaseAabbCallback {
   IndexCollector(const Rect* first, std::vector<int>* out) : first(first), out(out) {}
   bool process(const btBroadphaseProxy* proxy) override {
@@ -56,9 +54,8 @@ bool Touches(const Rect& a, const Rect& b) {
 
 }  // namespace
 
-// Bullet's complete collision world (configuration, dispatcher, broadphase, box objects):
-// only the reference ray test needs it, so it is built on that test's first call. Building
-// one per episode cost more than the rest of an episode's set-up (the dispatcher's tables).
+// Bullet's full collision world, built on the reference ray test's first call (costly, rarely
+// needed).
 struct BulletReferenceWorld {
   explicit BulletReferenceWorld(const std::vector<Rect>& rects)
       : config(ConstructionInfo()), dispatcher(&config), world(&dispatcher, &broadphase, &config) {
@@ -104,8 +101,7 @@ struct BulletReferenceWorld {
   std::vector<std::unique_ptr<btCollisionObject>> objects;
 };
 
-// Every query culls with Bullet's broadphase (a dynamic AABB tree, btDbvtBroadphase) holding
-// one proxy per rectangle, its box exactly.
+// Every query culls with Bullet's btDbvtBroadphase, one proxy per rectangle, exactly its box.
 struct CollisionWorld::Impl {
   explicit Impl(const std::vector<Rect>& rects) : first(rects.data()) {
     proxies.reserve(rects.size());
@@ -141,8 +137,8 @@ struct CollisionWorld::Impl {
   const Rect* first;
   btDbvtBroadphase broadphase;
   std::vector<btBroadphaseProxy*> proxies;
-  // btDbvtBroadphase::rayTest reuses one traversal stack per broadphase (Bullet built
-  // without BT_THREADSAFE), so the reference scan is serialised; it builds `reference`.
+  // btDbvtBroadphase::rayTest shares one traversal stack (no BT_THREADSAFE): serialise; builds
+  // `reference`.
   std::mutex ray_mutex;
   std::unique_ptr<BulletReferenceWorld> reference;
 };
@@ -153,8 +149,7 @@ std::atomic<std::uint64_t> next_serial{1};
 
 CollisionWorld::CollisionWorld(std::shared_ptr<const StaticMap> map)
     : map_(std::move(map)), serial_(next_serial.fetch_add(1, std::memory_order_relaxed)) {
-  // Without rectangles there is nothing to cull: no Bullet broadphase at all, and every
-  // query answers "free".
+  // No rectangles: no broadphase, and every query answers "free".
   if (!map_->rectangles.empty()) impl_ = std::make_unique<Impl>(map_->rectangles);
 }
 
@@ -183,8 +178,7 @@ SweepHit CollisionWorld::SweepDisc(const Vec2& a, const Vec2& b, double radius) 
   if (!impl_) return SweepHit{};
   std::vector<int>& ids = ThreadScratch().ids;
   ids.clear();
-  // The swept AABB holds every rectangle the moving disc can reach, so the exact test below
-  // sees even a thin wall crossed within one step.
+  // The swept AABB holds every rectangle the disc can reach, so thin walls are never tunnelled.
   const Rect swept = Rect{a.cwiseMin(b), a.cwiseMax(b)}.Inflated(radius);
   impl_->Broadphase(swept, &ids);
   SweepHit hit;

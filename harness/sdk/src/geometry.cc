@@ -6,9 +6,8 @@
 namespace crowdsim {
 namespace {
 
-// Entry/exit parameters of the ray o + t*d in one slab [lo, hi]. A ray parallel to the slab
-// is either always inside (-inf, +inf) or never (returns false); handled apart so that a
-// zero direction never produces 0 * inf = NaN.
+// Entry/exit of ray o + t*d in slab [lo, hi]. A parallel ray is handled apart (inside or false) to
+// avoid 0 * inf.
 bool Slab(double o, double d, double lo, double hi, double* t_near, double* t_far) {
   if (d == 0.0) {
     if (o < lo || o > hi) return false;
@@ -29,8 +28,7 @@ Vec2 OutsideRect(const Vec2& p, const Rect& r) {
               std::max({r.min.y() - p.y(), 0.0, p.y() - r.max.y()}));
 }
 
-// hypot(d.x, d.y) for non-negative d, skipping the call (a hot path of human placement) beside
-// the rectangle's sides, where hypot would return the other coordinate exactly.
+// hypot(d.x, d.y) for d >= 0, skipping the call where one coordinate is 0 (placement's hot path).
 double Length(const Vec2& d) {
   if (d.x() == 0.0) return d.y();
   if (d.y() == 0.0) return d.x();
@@ -47,8 +45,7 @@ double PointToRectDistance(const Vec2& p, const Rect& r) { return Length(Outside
 
 bool DiscOverlapsRect(const Vec2& c, double radius, const Rect& r) {
   const Vec2 d = OutsideRect(c, r);
-  // hypot(x, y) >= max(x, y) holds in floating point too (the float x lies at or below the
-  // exact value, and rounding is monotonic), so this cut-off gives hypot's answer.
+  // hypot(x, y) >= max(x, y) holds in floating point too, so this cut-off gives hypot's answer.
   if (d.x() >= radius || d.y() >= radius) return false;
   return Length(d) < radius;
 }
@@ -75,18 +72,16 @@ double RayCircleDistance(const Vec2& origin, const Vec2& dir, const Vec2& center
 }
 
 double SweptDiscRectTime(const Vec2& a, const Vec2& b, double radius, const Rect& r) {
-  // Contact means the disc's interior enters r. Touching (centre exactly `radius` away) is
-  // not contact, so an agent resting against a wall, sliding along it or leaving it does not
-  // collide; the slop keeps exact touches on that side of rounding.
+  // Touching is not contact, so agents may rest on or slide along walls; the slop keeps exact
+  // touches so under rounding.
   constexpr double kContactSlop = 1e-9;
   const double reach = radius - kContactSlop;
   const Vec2 d = b - a;
   const double len = d.norm();
   if (len == 0.0) return PointToRectDistance(a, r) < reach ? 0.0 : kInfinity;
   const Vec2 dir = d / len;
-  // The set of centres at which the disc reaches r is r grown by `reach` with rounded
-  // corners: the union of two crossed rectangles and four corner discs. The first entry of
-  // the motion segment into that union is the contact, however thin r or fast the motion.
+  // Centres reaching r form r grown by `reach` with round corners; the motion's first entry into it
+  // is the contact.
   const Rect wide{Vec2(r.min.x() - reach, r.min.y()), Vec2(r.max.x() + reach, r.max.y())};
   const Rect tall{Vec2(r.min.x(), r.min.y() - reach), Vec2(r.max.x(), r.max.y() + reach)};
   double t = std::min(RayRectDistance(a, dir, wide), RayRectDistance(a, dir, tall));

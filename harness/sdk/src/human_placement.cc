@@ -9,8 +9,7 @@
 
 namespace crowdsim {
 
-// A point this much beyond a rectangle's grown box stays clear of it in the exact test below
-// whatever the rounding (m; far above the rounding of coordinates up to kilometres).
+// Margin (m) beyond a rectangle's grown box that stays clear in the exact test despite rounding.
 constexpr double kReachSlack = 1e-9;
 
 DiscFreeSpace::DiscFreeSpace(std::shared_ptr<const StaticMap> map, double clearance)
@@ -26,8 +25,7 @@ bool DiscFreeSpace::Contains(const Vec2& p) const {
   if (inner_.min.x() > inner_.max.x() || inner_.min.y() > inner_.max.y() || !inner_.Contains(p)) {
     return false;
   }
-  // Most candidates lie far from most rectangles: four comparisons rule those out, and only
-  // the near ones take the exact disc test (same answers, a third of the work).
+  // Four comparisons rule out the far rectangles; only near ones take the exact disc test.
   const std::vector<Rect>& rects = map_->rectangles;
   for (size_t i = 0; i < rects.size(); ++i) {
     if (reach_[i].Contains(p) && DiscOverlapsRect(p, clearance_, rects[i])) return false;
@@ -78,9 +76,7 @@ struct PointRule {
 };
 
 bool FarFromAll(const Vec2& p, const std::vector<Vec2>& points, double gap) {
-  // (p - q).norm() >= gap, decided on squares where they are clearly apart (the margins are
-  // far beyond the rounding of a square and of a square root), with the square root only near
-  // the boundary: the same answers without a square root per placed point and candidate.
+  // (p - q).norm() >= gap, on squares where clearly apart; the square root only near the boundary.
   const double gap_sq = gap * gap;
   const double surely_far = gap_sq * (1.0 + 1e-9), surely_near = gap_sq * (1.0 - 1e-9);
   return std::all_of(points.begin(), points.end(), [&](const Vec2& q) {
@@ -91,8 +87,8 @@ bool FarFromAll(const Vec2& p, const std::vector<Vec2>& points, double gap) {
   });
 }
 
-// Required distance from the previous point at try t: full over the first half of the
-// tries, then shrinking linearly to 0, so that a small room still gets a valid scenario.
+// Required distance from the previous point at try t: full for half the tries, then linearly to 0
+// for small rooms.
 double RelaxedDistance(double full, int t, int max_tries) {
   const int half = max_tries / 2;
   if (t < half) return full;
@@ -104,9 +100,8 @@ bool Draw(const PlacementArea& area, const PointSampler& sample, const PointRule
           int max_tries, Rng& rng, Vec2* out) {
   for (int t = 0; t < max_tries; ++t) {
     const Vec2 p = sample(rng);
-    // A candidate must pass every test; they are pure, so their order changes only the cost:
-    // the distances first (in a crowd most candidates fall near a human already placed), the
-    // free-space predicates (a test against every rectangle of the map) last.
+    // The tests are pure, so order only sets cost: distances first (most rejections), free-space
+    // predicates (every rectangle) last.
     if ((p - rule.robot_point).norm() < rule.robot_gap) continue;
     if (!FarFromAll(p, *rule.others, rule.other_gap)) continue;
     if (rule.previous != nullptr &&
@@ -123,8 +118,7 @@ bool Draw(const PlacementArea& area, const PointSampler& sample, const PointRule
   return false;
 }
 
-// The area of the free space in `area.region`: the share of a 256 x 256 grid of cell centres
-// where a centre may stand (m^2; taken only when placement has failed).
+// Free area (m^2) in `area.region`, from a 256 x 256 grid of centres; computed only on failure.
 double FreeArea(const PlacementArea& area) {
   constexpr int kGrid = 256;
   const Rect& r = area.region;
@@ -151,10 +145,8 @@ std::string Format(const char* format, double value) {
                         " of " + std::to_string(num_humans) + " after " +
                         std::to_string(o.max_tries) + " tries";
   if (area.region.Area() > 0.0) {
-    // Discs dropped at random on an open plane stop fitting at 54.7% of it covered (random
-    // sequential adsorption's jamming limit); a centre's disc here has the diameter `gap`. The
-    // free space of centres is the floor shrunk by the clearance, so narrow places can hold a
-    // little more than this per m^2 of it (Gibson hard: 70 humans placed in 62 m^2, 80 not).
+    // Random discs jam at 54.7% coverage (random sequential adsorption); here discs have diameter
+    // `gap`, and narrow spaces hold a little more.
     const double free_area = FreeArea(area);
     const double jammed = 0.547 / (std::numbers::pi * 0.25 * gap * gap);
     message +=
@@ -192,10 +184,7 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
   const double human_gap = 2.0 * options.human_radius + options.discomfort_dist;
   const double robot_gap = options.human_radius + options.robot_radius + options.discomfort_dist;
 
-  // Candidates for a point the area's own sampler gives no place: the whole region. Once the
-  // sampler has failed a kind of point (the starts, or the k-th goals), the later points of that
-  // kind go to the region at once: each must keep clear of one more point than the last, so the
-  // sampler's few candidates (a floor plan's list) would only be tried in vain again.
+  // Points the sampler cannot place, and later ones of that kind, draw from the whole region.
   const PointSampler more = area.region.Area() > 0.0 ? UniformSampler(area.region) : PointSampler();
   std::vector<char> sampler_spent(static_cast<size_t>(goals_per_human) + 1, 0);  // starts, goals
   auto draw = [&](const PointRule& rule, int kind, Vec2* out) {

@@ -1,5 +1,4 @@
-// Key functions (out-of-line virtual destructors) of the plugin interfaces, so their
-// vtables and type info live once, in the core library.
+// Key functions of the plugin interfaces: their vtables and type info live once, in the SDK.
 #include "crowdsim/lookahead.h"
 #include "crowdsim/plugin_abi.h"
 #include "crowdsim/policy.h"

@@ -75,8 +75,7 @@ std::filesystem::path Params::ResolvePath(const std::string& value) const {
   if (p.is_absolute()) return p;
   if (base_dir_.empty() || std::filesystem::exists(base_dir_ / p)) return base_dir_ / p;
   if (std::filesystem::exists(p)) return p;
-  // The data root: an installed suite names the weights and worlds shipped with it relative to
-  // the project's root (results/models/...), which is the install's share folder.
+  // The data root: installed suites name shipped weights and worlds relative to it.
   if (const std::filesystem::path in_data = DataRoot() / p; std::filesystem::exists(in_data))
     return in_data;
   // In no place: the suite-folder path, so that a "does not exist" names where it looked.

@@ -1,5 +1,4 @@
-// Key function of Trainable: its vtable and type info live once, in the core library, so a
-// dynamic_cast from a plugin's Policy finds the same type.
+// Key function of Trainable: one vtable and type info in the SDK, so a plugin's dynamic_cast works.
 #include "crowdsim/trainable.h"
 
 namespace crowdsim {

@@ -24,8 +24,7 @@ std::string Where(const std::string& file, const YAML::Node& n) {
   throw WorldFileError(Where(file, n) + ": " + what);
 }
 
-// A scalar's text: names, keys and format. A list or map there is an error, never yaml-cpp's
-// exception (which would name neither the file nor the key).
+// A scalar's text. A list or map here is our error naming file and key, not yaml-cpp's.
 std::string Text(const std::string& file, const YAML::Node& n, const std::string& key) {
   if (!n.IsScalar()) Fail(file, n, "'" + key + "' must be a single text value, not a list or map");
   return n.Scalar();
@@ -62,9 +61,7 @@ Rect ToRect(const std::string& file, const YAML::Node& n, const std::string& key
   return Rect::FromCorners(v[0], v[1], v[2], v[3]);
 }
 
-// A pair's start or goal outside the world's bounds or inside one of its rectangles: the
-// episode of that pair could not be made, and a run found it only when it came to it, after
-// the episodes before it (validate tries episode 0 alone).
+// A pair's start or goal outside the bounds or in a rectangle makes no episode: refused on reading.
 void CheckPairPoint(const std::string& file, const YAML::Node& n, const std::string& key,
                     const char* what, const Vec2& p, const WorldFile& w) {
   char point[64];
@@ -85,8 +82,7 @@ void CheckPairPoint(const std::string& file, const YAML::Node& n, const std::str
   }
 }
 
-// The pairs of `key` (robot_pairs.train or .test), each checked against the world's bounds and
-// rectangles, read before them.
+// The pairs of `key` (robot_pairs.train or .test), checked against bounds and rectangles.
 std::vector<StartGoal> Pairs(const std::string& file, const YAML::Node& n, const std::string& key,
                              const WorldFile& w) {
   std::vector<StartGoal> out;
@@ -117,8 +113,7 @@ int PositiveInt(const std::string& file, const YAML::Node& parent, const char* k
   return v;
 }
 
-// The largest mask read (cells): 10,000 x 10,000, a 500 m building at 5 cm; a larger width or
-// height is a typo that would otherwise allocate gigabytes before the rows disagree.
+// Largest mask: 10,000 x 10,000 cells (a 500 m building at 5 cm); more is a typo.
 constexpr long kMaxMaskCells = 100'000'000;
 
 // One run-length row (world_file.h): appends its `width` cells to `cells`.
@@ -264,8 +259,7 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
   return w;
 }
 
-// A floor-plan image given where its imported world belongs (file: plan.png): its bytes read
-// as YAML gave "not valid YAML: unknown escape character" and a stray byte.
+// Refuses a floor-plan image (PNG, PGM) given as a world file, saying how to import it.
 void RefuseImage(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   char head[8] = {};

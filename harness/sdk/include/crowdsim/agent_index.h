@@ -1,5 +1,4 @@
-// Neighbour queries over the agents of one step (a uniform grid, rebuilt each step), so
-// policies of large crowds never scan all pairs.
+// Neighbour queries over one step's agents (a uniform grid, rebuilt each step): no all-pairs scan.
 #pragma once
 
 #include <span>
@@ -10,10 +9,8 @@
 
 namespace crowdsim {
 
-/// The agents one policy may see this step, with a fast k-nearest query. A query made for
-/// agent i (exclude = i) starts from the disc that held i's k nearest at its last query, which
-/// after a step's motion most often still decides the answer (else the rings of cells are
-/// walked outward); the answer never depends on it. Queries may come from several threads.
+/// The agents a policy may see this step, with a thread-safe k-nearest query seeded by each agent's
+/// last query (the answer never depends on it).
 class CROWDSIM_SDK_API AgentIndex {
  public:
   /// Rebuilds the grid over `agents` (kept by reference until the next Rebuild).
@@ -21,26 +18,22 @@ class CROWDSIM_SDK_API AgentIndex {
 
   std::span<const AgentState> agents() const { return agents_; }
 
-  /// Indices of up to `max_count` agents whose centre is within `range` of `p`, nearest
-  /// first, `exclude` (an index, or -1) left out. Ties keep lower indices first.
+  /// Up to `max_count` agents within `range` of `p`, nearest first, ties by index; `exclude` (or
+  /// -1) left out.
   void Nearest(const Vec2& p, double range, int max_count, int exclude,
                std::vector<int>* out) const;
 
  private:
-  /// Nearest from the agents within `radius` (<= range) of p alone; false, leaving `out` to the
-  /// caller, when that disc cannot decide (fewer than max_count agents in it while it does not
-  /// cover the whole range, or more than its slots hold).
+  /// Nearest from the agents within `radius` (<= range) of p alone; false, `out` undefined, when
+  /// that disc cannot decide.
   bool DiscSearch(const Vec2& p, double range, double radius, int max_count, int exclude,
                   std::vector<int>* out, double* kth_d2) const;
-  /// Nearest by walking rings of cells outward until the k best are nearer than the next
-  /// ring. `kth_d2` receives the k-th best distance squared, or -1 when fewer were in range.
+  /// Nearest by walking rings of cells outward. `kth_d2`: the k-th best distance squared, or -1.
   void RingSearch(const Vec2& p, double range, int max_count, int exclude, std::vector<int>* out,
                   double* kth_d2) const;
 
-  // A query from agent i (exclude = i) starts from the disc of radius hint_[i], set by its last
-  // query: kHintScale times the k-th distance found, plus kHintSlack (m) for a step's motion.
-  // Measured (Circle, Blocks, crowds of 20 and 1,000): 1.0 and 0.25 m beat 1.05-1.2 and
-  // 0.5-1 m (more agents gathered) and 0.0-0.15 m (more discs too small, walked again).
+  // Agent i's query starts at radius hint_[i]: kHintScale times its last k-th distance plus
+  // kHintSlack (m) for a step's motion.
   static constexpr int kMaxHintedCount = 32;
   static constexpr int kDiscCapacity = 256;
   static constexpr double kHintScale = 1.0;
@@ -55,8 +48,8 @@ class CROWDSIM_SDK_API AgentIndex {
   std::vector<int> order_;
   std::vector<Vec2> position_;  // position_[k] = agents_[order_[k]].position: cells contiguous
   std::vector<int> cell_of_;    // Rebuild's scratch
-  // Per agent index, the radius (m) its next query starts from (0: none yet). Written by the
-  // const queries through relaxed atomic references: a stale or racing value only costs time.
+  // Per agent, its next query's start radius (m; 0: none). Const queries write it through relaxed
+  // atomics: staleness costs only time.
   mutable std::vector<float> hint_;
 };
 

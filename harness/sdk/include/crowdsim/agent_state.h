@@ -16,8 +16,8 @@ struct CROWDSIM_SDK_API AgentState {
   double heading = 0.0;          ///< rad; holonomic robot: direction to its goal
 };
 
-/// The agent-centric frame used by sensors and learned policies: origin at the agent, x axis
-/// along its heading (for the holonomic robot, towards its goal as in CrowdNav's rotate()).
+/// The agent-centric frame of sensors and learned policies: origin at the agent, x along its
+/// heading (robot: towards its goal, as CrowdNav's rotate()).
 struct CROWDSIM_SDK_API Frame {
   Vec2 origin = Vec2::Zero();
   double heading = 0.0;

@@ -1,11 +1,6 @@
-// Lane-wise helpers for the AVX2 paths of the hot loops (crowdsim/vector_units.h): each is one
-// IEEE operation per lane, as the scalar code does it. A product and a sum stay two roundings,
-// as in the scalar code, only while the compiler fuses nothing: build the file that uses them
-// (and its scalar twin) with -ffp-contract=off. GCC's default, -ffp-contract=fast, fuses them
-// wherever the build enables FMA (-march=native, -march=haswell): "avx2" adds to the build's
-// instruction set, it does not replace it.
-// Defines CROWDSIM_AVX2_LANES where the compiler can build them (x86-64, GCC or Clang); a
-// caller runs them only when UseAvx2().
+// Lane-wise AVX2 helpers, each one IEEE operation per lane as in the scalar code. Build users and
+// their scalar twins with -ffp-contract=off, else GCC fuses products into sums under FMA. Defines
+// CROWDSIM_AVX2_LANES on x86-64 GCC or Clang; call only when UseAvx2().
 #pragma once
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -20,9 +15,8 @@ using V = __m256d;
 [[gnu::target("avx2")]] inline V Mul(V a, V b) { return _mm256_mul_pd(a, b); }
 [[gnu::target("avx2")]] inline V Div(V a, V b) { return _mm256_div_pd(a, b); }
 [[gnu::target("avx2")]] inline V Neg(V a) { return _mm256_xor_pd(a, _mm256_set1_pd(-0.0)); }
-// (a < b ? a : b) and (a > b ? a : b): std::min(x, y) = (y < x ? y : x) is Min(y, x), and
-// std::max(x, y) = (x < y ? y : x) is Max(y, x); in that order equal values, signed zeros and
-// NaNs come out as the scalar code's.
+// (a < b ? a : b) and (a > b ? a : b). std::min(x, y) is Min(y, x), std::max(x, y) is Max(y, x),
+// matching ties, signed zeros and NaNs.
 [[gnu::target("avx2")]] inline V Min(V a, V b) { return _mm256_min_pd(a, b); }
 [[gnu::target("avx2")]] inline V Max(V a, V b) { return _mm256_max_pd(a, b); }
 [[gnu::target("avx2")]] inline V And(V a, V b) { return _mm256_and_pd(a, b); }

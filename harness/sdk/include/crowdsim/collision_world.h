@@ -1,6 +1,5 @@
-// The static collision world: the map's rectangles as proxies in Bullet's broadphase (its
-// dynamic AABB tree, btDbvtBroadphase), which culls; an exact 2D narrow phase decides. Agents are
-// passed as discs per query (few, moving every step and per lookahead candidate).
+// The static collision world: Bullet's broadphase culls the map's rectangles, an exact 2D narrow
+// phase decides. Agents are discs per query.
 #pragma once
 
 #include <cstdint>
@@ -14,7 +13,7 @@
 
 namespace crowdsim {
 
-/// How the first contact of a swept disc was found.
+/// How the first contact of a swept disc is found.
 struct CROWDSIM_SDK_API SweepHit {
   double fraction = kInfinity;  ///< of the motion, in [0, 1]; kInfinity: no contact
   int rect = -1;                ///< index into StaticMap::rectangles
@@ -29,8 +28,7 @@ class CROWDSIM_SDK_API CollisionWorld {
 
   const StaticMap& map() const { return *map_; }
 
-  /// Unique within the process and never reused (unlike an address): a sensor may key data it
-  /// derives from the map (e.g. route's distance field) on it.
+  /// Unique in the process, never reused: a sensor may key map-derived data on it.
   std::uint64_t serial() const { return serial_; }
 
   /// Indices of rectangles whose box overlaps `box` (Bullet broadphase aabbTest).
@@ -45,19 +43,17 @@ class CROWDSIM_SDK_API CollisionWorld {
   /// Distance from p to the nearest rectangle (kInfinity if none within `search_radius`).
   double ClearanceAt(const Vec2& p, double search_radius) const;
 
-  /// Ray scan: for each world-frame beam angle, the distance to the nearest rectangle or disc
-  /// hit from `origin`, or max_range. One broadphase query per scan, exact 2D per beam.
+  /// Ray scan: per world-frame beam angle, distance to the nearest rectangle or disc, or max_range.
+  /// One broadphase query per scan.
   void CastRays(const Vec2& origin, std::span<const double> world_angles, double max_range,
                 std::span<const Circle> discs, double* ranges) const;
 
-  /// The same scan along world-frame unit directions (a sensor with fixed beams rotates its
-  /// precomputed beam directions by the heading instead of taking a sine and cosine per beam).
+  /// The same scan along world-frame unit directions (no sine and cosine per beam).
   void CastRays(const Vec2& origin, std::span<const Vec2> world_directions, double max_range,
                 std::span<const Circle> discs, double* ranges) const;
 
-  /// Reference scan: btCollisionWorld::rayTest per beam against the boxes only (slow;
-  /// kept for tests and benchmarks that check the fast scan). Its first call builds Bullet's
-  /// complete collision world (configuration, dispatcher, box objects) for this map.
+  /// Reference scan: btCollisionWorld::rayTest per beam, boxes only (slow; tests and benchmarks).
+  /// Its first call builds Bullet's full world.
   void CastRaysBullet(const Vec2& origin, std::span<const double> world_angles, double max_range,
                       double* ranges) const;
 

@@ -8,7 +8,7 @@
 namespace crowdsim {
 
 /// Root of the project's data (worlds/, results/): $CROWDSIM_DATA_DIR, else PREFIX/share/
-/// crowdsim-bench for an installed copy, else the source tree this harness was built from.
+/// crowdsim-bench when installed, else the source tree of this build.
 CROWDSIM_SDK_API std::filesystem::path DataRoot();
 
 }  // namespace crowdsim

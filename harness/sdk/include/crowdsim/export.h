@@ -1,5 +1,4 @@
-// The SDK's export macro: libcrowdsim_sdk.so hides every symbol that the SDK's headers do not
-// mark with it, so the library exports the SDK and nothing of its internals.
+// The SDK's export macro: libcrowdsim_sdk.so hides every symbol not marked with it.
 #pragma once
 
 #if defined(__GNUC__) || defined(__clang__)

@@ -1,5 +1,4 @@
-// Plane geometry on axis-aligned rectangles and discs: the exact 2D narrow phase used by
-// collision checks and ray casts (Bullet culls, these functions decide).
+// Plane geometry on axis-aligned rectangles and discs: the exact narrow phase after Bullet culls.
 #pragma once
 
 #include <Eigen/Core>
@@ -47,9 +46,8 @@ struct CROWDSIM_SDK_API Circle {
 /// z of the 3D cross product of two plane vectors.
 inline double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-/// Where |d| lies against `limit` (> 0) as far as squares alone can tell: -1 below, +1 above, 0
-/// within 2% of it, where only the square root decides (2% is far more than the rounding of
-/// both squares).
+/// |d| against `limit` (> 0) by squares: -1 below, +1 above, 0 within 2%, where only the root
+/// decides.
 inline int NormSideBySquares(const Vec2& d, double limit) {
   const double sq = d.squaredNorm();
   const double limit_sq = limit * limit;
@@ -71,16 +69,14 @@ inline bool NormAbove(const Vec2& d, double limit) {
 /// Distance from point p to segment a-b (CrowdNav's point_to_segment_dist).
 CROWDSIM_SDK_API double PointToSegmentDistance(const Vec2& a, const Vec2& b, const Vec2& p);
 
-/// PointToSegmentDistance's arithmetic, inline for the swept robot-human test of every step
-/// (the exported function is this, for plugins built against earlier headers).
+/// PointToSegmentDistance inline, for the per-step swept robot-human test (the exported function
+/// stays for plugins built against older headers).
 inline double PointToSegmentDistanceInline(const Vec2& a, const Vec2& b, const Vec2& p) {
   const Vec2 ab = b - a;
   const double len2 = ab.squaredNorm();
   if (len2 == 0.0) return (p - a).norm();
-  // u = clamp((p - a).ab / len2, 0, 1), divided only strictly between the ends: with a finite
-  // len2, a numerator at or below 0 (at or above len2) gives a quotient the clamp takes to 0
-  // (1) anyway. Most swept tests of a step end at an end of the segment. An overflowing len2
-  // (or NaN) takes the definition itself, whose 0 * inf is NaN.
+  // u = clamp((p - a).ab / len2, 0, 1), dividing only strictly between the ends. An overflowing or
+  // NaN len2 takes the definition.
   const double along = (p - a).dot(ab);
   if (len2 < kInfinity) {
     if (along <= 0.0) return (a - p).norm();  // a + 0 * ab is a (up to the sign of a zero)
@@ -96,18 +92,16 @@ CROWDSIM_SDK_API double PointToRectDistance(const Vec2& p, const Rect& r);
 /// True if the disc (c, radius) and the rectangle share interior points.
 CROWDSIM_SDK_API bool DiscOverlapsRect(const Vec2& c, double radius, const Rect& r);
 
-/// Distance along the ray origin + t * dir (dir unit length) to the first point of `r`,
-/// kInfinity when it misses. 0 when the origin is inside.
+/// Distance along the ray origin + t * dir (dir unit) to `r`: kInfinity on a miss, 0 inside.
 CROWDSIM_SDK_API double RayRectDistance(const Vec2& origin, const Vec2& dir, const Rect& r);
 
-/// Distance along the ray to the first point of the disc, kInfinity when it misses,
-/// 0 when the origin is inside.
+/// Distance along the ray to the disc: kInfinity on a miss, 0 inside.
 CROWDSIM_SDK_API double RayCircleDistance(const Vec2& origin, const Vec2& dir, const Vec2& center,
                                           double radius);
 
-/// First contact of a disc of `radius` moving from a to b with rectangle r, as a fraction of
-/// the motion in [0, 1]; kInfinity when its interior never enters r (touching is not
-/// contact, to 1e-9 m). 0 when it overlaps at a.
+/// First contact of a disc of `radius` moving a to b with r, as a fraction in [0, 1]; 0 if
+/// overlapping at a; kInfinity if its interior never enters r (touching within 1e-9 m is no
+/// contact).
 CROWDSIM_SDK_API double SweptDiscRectTime(const Vec2& a, const Vec2& b, double radius,
                                           const Rect& r);
 

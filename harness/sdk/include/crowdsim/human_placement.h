@@ -1,10 +1,5 @@
-// Where the humans of a scenario start and where they walk to: shared by every world plugin
-// that places people in free space (random rooms, floor plans).
-//
-// The caller provides the free space (a predicate) and a way to draw candidate points; the
-// placement only adds the social rules (separation, goal distance) and bounded retries.
-// Reachability is the caller's promise: the free space must be one connected region for the
-// disc (random layouts reject disconnected rooms, floor plans keep their largest component).
+// Human start and goal placement in free space, shared by world plugins. The caller gives free
+// space (connected for the disc) and candidates; placement adds separation and bounded retries.
 #pragma once
 
 #include <functional>
@@ -33,7 +28,7 @@ class CROWDSIM_SDK_API DiscFreeSpace {
   DiscFreeSpace(std::shared_ptr<const StaticMap> map, double clearance);
   /// True if the disc centred at `p` lies inside the bounds and overlaps no rectangle.
   bool Contains(const Vec2& p) const;
-  /// The clearance this space was built with (m).
+  /// The clearance this space is built with (m).
   double clearance() const { return clearance_; }
 
  private:
@@ -56,23 +51,19 @@ CROWDSIM_SDK_API PointSampler ListSampler(std::vector<Vec2> points);
 struct CROWDSIM_SDK_API PlacementArea {
   std::function<bool(const Vec2&)> is_free;  ///< true where a human's centre may stand
   PointSampler sample;                       ///< candidate centres
-  /// Optional, stricter rule for goals: where a human may stop without closing a passage
-  /// (a human who stays on its goal must leave room for another to pass). Relaxed to
-  /// `is_free` over the second half of the tries when the world has too little such room.
+  /// Optional stricter goal rule: where a standing human leaves room to pass. Relaxed to `is_free`
+  /// late in the tries.
   std::function<bool(const Vec2&)> is_goal_free;
-  /// Optional (zero area: none): a rectangle holding the whole free space. When `sample` gives
-  /// no place for a point within max_tries (a floor plan's list of free points is used up
-  /// long before its floor is full), candidates are then drawn uniformly from it for as many
-  /// tries again; and a failure's message gives the crowd's density in the free space.
+  /// Optional (zero area: none) box around the free space: points `sample` fails are then drawn
+  /// uniformly from it; failures report density.
   Rect region;
 };
 
 /// The worlds' default `passage_padding` (m): 0.01, the radius padding CrowdNav's ORCA humans use.
 inline constexpr double kDefaultPassagePadding = 0.01;
 
-/// Centre clearance from obstacles that leaves room for another human to pass a human
-/// standing there: its own radius plus a passer's diameter, each radius plus `padding` (the
-/// world's `passage_padding` parameter).
+/// Centre clearance leaving room to pass a standing human: its radius plus a passer's diameter,
+/// each radius plus `padding`.
 CROWDSIM_SDK_API double PassableGoalClearance(double human_radius, double padding);
 
 /// The rules of human placement (defaults: paper settings).
@@ -89,14 +80,12 @@ struct CROWDSIM_SDK_API HumanPlacementOptions {
   static HumanPlacementOptions FromRequest(const ScenarioRequest& request);
 };
 
-/// Places request.num_humans humans: starts and goals in free space; starts at least
-/// 2 r_h + discomfort_dist apart and r_h + r_robot + discomfort_dist from the robot's start;
-/// goals likewise from each other (goal k against goal k) and from the robot's goal; each goal
-/// at least goal_min_dist from the point before it and where area.is_goal_free holds (if
-/// set), both relaxed over the second half of the tries when the room is too small. kStay gives one
-/// goal, kNewGoal new_goal_count goals. Candidates come from area.sample, then (for a point it
-/// gives no place) from area.region if set. Deterministic for a given rng state. Throws
-/// PlacementError when a point cannot be placed, with the density when area.region is set.
+/// Places request.num_humans humans. Starts at least 2 r_h + discomfort_dist apart, r_h + r_robot +
+/// discomfort_dist from the robot's start; goals likewise (goal k against goal k, and the robot's
+/// goal). Each goal is at least goal_min_dist from the previous point and satisfies
+/// area.is_goal_free (if set); both relax over the second half of the tries. kStay: one goal;
+/// kNewGoal: new_goal_count. Candidates: area.sample, then area.region if set. Deterministic per
+/// rng state. Throws PlacementError (with density when area.region is set).
 CROWDSIM_SDK_API std::vector<HumanSpec> PlaceHumans(const PlacementArea& area,
                                                     const Vec2& robot_start, const Vec2& robot_goal,
                                                     const ScenarioRequest& request,

@@ -1,5 +1,5 @@
-// One-step lookahead for value-based robot policies (CrowdNav's onestep_lookahead): "if the
-// robot takes action a now, what comes next?" Nothing in the episode moves.
+// One-step lookahead for value-based robot policies (CrowdNav's onestep_lookahead); the episode
+// itself does not move.
 #pragma once
 
 #include <span>

@@ -22,9 +22,8 @@ struct CROWDSIM_SDK_API PersonObservation {
   double radius = 0.3;
 };
 
-/// The output of one sensor. A person sensor fills `people`; a range sensor fills `ranges`
-/// and `angles` (beam angles in the sensor frame, rad) and `max_range`; any other sensor
-/// fills `values`, a fixed-length feature vector its README documents (e.g. route).
+/// One sensor's output: `people` (person sensors); `ranges`, `angles` (sensor frame, rad),
+/// `max_range` (range sensors); else `values`, a fixed-length vector.
 struct CROWDSIM_SDK_API SensorReading {
   std::string sensor;  ///< the sensor's plugin name (e.g. "lidar2d", "person")
   std::vector<PersonObservation> people;
@@ -40,8 +39,8 @@ struct CROWDSIM_SDK_API Observation {
   AgentState self;                      ///< own state, world frame
   Frame frame;                          ///< sensor frame (robot: x towards the goal)
   std::vector<SensorReading> readings;  ///< robot only: one per configured sensor, in order
-  /// Ground-truth agents this policy may react to (humans: the other humans, plus the robot
-  /// when visible), with its own index in `self_index` (-1 if absent). Null for the robot.
+  /// Ground-truth agents this policy may react to, its own index in `self_index` (-1 if absent).
+  /// Null for the robot.
   const AgentIndex* agents = nullptr;
   int self_index = -1;
   /// One-step lookahead, given only to robot policies that declare they need it.

@@ -26,8 +26,8 @@ struct CROWDSIM_SDK_API ParamSpec {
   double max = kInfinity;            ///< inclusive
   std::vector<std::string> choices;  ///< strings only; empty = free text
   std::string doc;                   ///< one line, with units
-  /// False for a parameter added after results were committed: at its default it stays out of
-  /// the configuration hash, so those results keep their hash and stay resumable.
+  /// False: at its default, the parameter stays out of the config hash, so older results stay
+  /// resumable.
   bool hashed_at_default = true;
 };
 
@@ -55,14 +55,11 @@ class CROWDSIM_SDK_API Params {
 
   /// Folder that relative paths in the values are resolved against (the suite's folder).
   const std::filesystem::path& base_dir() const { return base_dir_; }
-  /// Resolves a path value: absolute as is, else against base_dir, then the working dir, then
-  /// DataRoot() (an installed suite's shipped weights); when none holds the file, the base_dir
-  /// path (what a "does not exist" error should name).
+  /// Resolves a path: absolute as is, else against base_dir, the working folder, DataRoot(); else
+  /// the base_dir path (for errors).
   std::filesystem::path ResolvePath(const std::string& value) const;
-  /// The error text for a path value ResolvePath found in none of its places, naming each place
-  /// it looked in, in its order: "'VALUE' not found (looked in the suite's folder DIR, the
-  /// working folder and DATA_ROOT)"; an absolute path: "'VALUE' does not exist". A plugin writes
-  /// "weights file " + MissingFile(value) + "; train one with ...".
+  /// Error text for a path ResolvePath found nowhere: "'VALUE' not found (looked in the suite's
+  /// folder DIR, the working folder and DATA_ROOT)", or "'VALUE' does not exist".
   std::string MissingFile(const std::string& value) const;
 
   /// Schema defaults only (for tests and tools).

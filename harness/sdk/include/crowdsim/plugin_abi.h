@@ -1,5 +1,5 @@
-// The plugin ABI: every plugin shared library exports exactly one descriptor through a
-// Boost.DLL alias. The host reads `abi_version` (always the first field) before anything else.
+// The plugin ABI: each plugin exports one descriptor via a Boost.DLL alias; the host reads
+// `abi_version` (first field) before the rest.
 #pragma once
 
 #include <boost/dll/alias.hpp>
@@ -17,11 +17,8 @@
 
 namespace crowdsim {
 
-/// Bump when any interface or this descriptor changes layout.
-/// 2: Observation lost time_step and map; 3: the descriptor's data_files;
-/// 4: PolicyNeeds::heading_frame; 5: SensorReading::values, CollisionWorld::serial,
-/// ParamSpec::hashed_at_default; 6: AgentIndex keeps each agent's last query radius;
-/// 7: PlacementArea::region.
+/// Bump when any interface or this descriptor changes layout: the host refuses a plugin built for
+/// another version.
 inline constexpr std::uint32_t kPluginAbiVersion = 7;
 
 /// Name of the exported alias.
@@ -41,9 +38,8 @@ struct CROWDSIM_SDK_API PluginDescriptor {
   std::unique_ptr<Policy> (*make_policy)(const Params&);
   std::unique_ptr<Sensor> (*make_sensor)(const Params&);
   std::unique_ptr<WorldSource> (*make_world)(const Params&);
-  /// The files a configuration reads that no parameter names (e.g. a world's default frozen
-  /// layouts under DataRoot()); the host puts their contents into the config hash, as it does
-  /// for files that parameters name. Null when there are none.
+  /// Files a configuration reads that no parameter names (e.g. default layouts); hashed into the
+  /// config hash. Null when none.
   std::vector<std::filesystem::path> (*data_files)(const Params&);
 };
 
@@ -114,6 +110,6 @@ constexpr PluginDescriptor WorldPlugin(const char* name, const char* description
 
 }  // namespace crowdsim
 
-/// Exports `descriptor` (a crowdsim::PluginDescriptor variable with external linkage in the
-/// plugin's namespace scope) under the ABI alias. Use once per plugin library.
+/// Exports `descriptor` (a namespace-scope crowdsim::PluginDescriptor with external linkage) under
+/// the ABI alias, once per library.
 #define CROWDSIM_EXPORT_PLUGIN(descriptor) BOOST_DLL_ALIAS(descriptor, crowdsim_plugin_v1)

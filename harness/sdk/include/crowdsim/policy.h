@@ -19,20 +19,17 @@ enum class AgentRole { kRobot, kHuman };
 /// What a policy needs from the harness (checked before the first episode).
 struct CROWDSIM_SDK_API PolicyNeeds {
   bool map = false;  ///< gets EpisodeContext::map (privileged knowledge of the layout)
-  /// Robot only: gets Observation::lookahead. A humans' policy that sets it is refused before
-  /// the first episode (run, validate, train), as is one that names sensors.
+  /// Robot only: gets Observation::lookahead. A humans' policy that sets it, or names sensors, is
+  /// refused before the first episode.
   bool lookahead = false;
   std::vector<std::string> sensors;  ///< robot only: sensor names that must be configured
-  /// Humans only: Observation::frame turned towards the agent's goal (an atan2 and a sincos
-  /// per decision). A policy that works in world coordinates (ORCA) sets false and gets the
-  /// world-aligned frame at its own position (heading 0). The robot's frame always turns
-  /// towards its goal: its sensors report in it.
+  /// Humans only: Observation::frame turned towards the goal (costs an atan2 and sincos); false:
+  /// world-aligned (ORCA). The robot's frame always turns.
   bool heading_frame = true;
 };
 
-/// Per-episode context handed to Reset: the one way a policy learns the episode's constants
-/// (the time step between decisions and the rest of the sim settings, the map); Observation
-/// carries only what changes from step to step.
+/// Per-episode context for Reset: the episode's constants (time step, sim settings, map);
+/// Observation carries what changes each step.
 struct CROWDSIM_SDK_API EpisodeContext {
   /// The static map, given only to policies whose Needs().map is set (ORCA, planners); null
   /// for the others.
@@ -54,11 +51,8 @@ class CROWDSIM_SDK_API Policy {
   virtual Action Decide(const Observation& obs) = 0;
 };
 
-/// Thrown by a plugin (policy, sensor or world) to stop the whole run rather than end one
-/// episode: no line is written for the episode it interrupts, the finished episodes are kept
-/// for a resume, and the run fails with this message. For what makes every further episode
-/// pointless (the user pressed Ctrl-C inside a Python policy, a resource is gone); a bad
-/// decision is an ordinary exception (policy_error, the run goes on).
+/// Thrown by a plugin to stop the whole run (Ctrl-C, a lost resource): the episode writes no line,
+/// finished ones stay for resume. Bad decisions throw ordinary exceptions.
 class CROWDSIM_SDK_API AbortRun : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

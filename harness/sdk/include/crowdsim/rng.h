@@ -1,5 +1,5 @@
-// Portable deterministic random numbers: the same seed gives the same numbers on every
-// compiler and standard library (std:: distributions do not promise that).
+// Portable deterministic random numbers: one seed gives the same numbers on every compiler and
+// standard library.
 #pragma once
 
 #include <cstdint>
@@ -12,8 +12,8 @@ namespace crowdsim {
 /// SplitMix64 step: mixes a 64-bit value into a well-distributed one.
 CROWDSIM_SDK_API std::uint64_t SplitMix64(std::uint64_t x);
 
-/// Seed of one episode, from the suite seed, the world's identity and the episode index.
-/// Every row of a suite sees the same scenario for episode k.
+/// Episode seed from suite seed, world identity and episode index: all rows share episode k's
+/// scenario.
 CROWDSIM_SDK_API std::uint64_t DeriveSeed(std::uint64_t suite_seed, std::string_view world_identity,
                                           std::uint64_t episode_index);
 
@@ -21,8 +21,7 @@ CROWDSIM_SDK_API std::uint64_t DeriveSeed(std::uint64_t suite_seed, std::string_
 class CROWDSIM_SDK_API Rng {
  public:
   explicit Rng(std::uint64_t seed);
-  /// The next 64 random bits. Inline (as Uniform): scenario set-up draws thousands of
-  /// candidate points, and a call per draw was a third of its time.
+  /// The next 64 random bits; inline, as scenario set-up draws thousands of points.
   std::uint64_t NextU64() {
     const std::uint64_t result = Rotl(s_[1] * 5, 7) * 9;
     const std::uint64_t t = s_[1] << 17;

@@ -25,7 +25,7 @@ struct CROWDSIM_SDK_API Scenario {
   Vec2 robot_start = Vec2::Zero();
   Vec2 robot_goal = Vec2::Zero();
   std::vector<HumanSpec> humans;
-  std::uint64_t seed = 0;  ///< the episode seed it was made from
+  std::uint64_t seed = 0;  ///< the episode seed it is made from
   std::string layout;      ///< layout identity (e.g. "rect3_test_017")
 };
 

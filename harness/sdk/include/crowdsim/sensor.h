@@ -22,10 +22,8 @@ struct CROWDSIM_SDK_API SenseInput {
 class CROWDSIM_SDK_API Sensor {
  public:
   virtual ~Sensor();
-  /// Fills `out` (its `sensor` name is set by the harness). Must be thread-compatible:
-  /// const, no hidden mutable state, so lookahead can call it freely. A cache of data that is
-  /// a pure function of the input (e.g. keyed on CollisionWorld::serial and the goal) is
-  /// allowed when it is locked and changes no result.
+  /// Fills `out` (the harness names it). Const, no hidden mutable state: lookahead calls it from
+  /// any thread. Locked caches of pure results are fine.
   virtual void Sense(const SenseInput& in, SensorReading* out) const = 0;
 };
 

@@ -1,6 +1,5 @@
-// Episode settings (paper defaults), and kSimFields: the one list of them that reading a
-// suite's or training file's `sim:` map, the config hash's canonical text and manifest.json's
-// "sim" all follow, so a new setting is a member here plus one line in kSimFields.
+// Episode settings (paper defaults) and kSimFields, the one list `sim:` reading, the config hash
+// and manifest.json follow.
 #pragma once
 
 #include <variant>
@@ -10,9 +9,8 @@
 
 namespace crowdsim {
 
-/// Simulation and reward settings; every field is a suite key under `sim:`. The defaults are
-/// the ones every other default (an Observation's time step, a plugin's before its first
-/// episode) takes as SimConfig{}.<member>.
+/// Simulation and reward settings, each a suite key under `sim:`. Other defaults take these as
+/// SimConfig{}.<member>.
 struct CROWDSIM_SDK_API SimConfig {
   double time_step = 0.25;       ///< s
   double time_limit = 25.0;      ///< s; the episode times out when time reaches it
@@ -38,8 +36,8 @@ struct CROWDSIM_SDK_API SimField {
   bool lo_open = false;  ///< numbers: lo itself is not valid
 };
 
-/// Every setting, in the order of the canonical text (changing the order or a key changes
-/// every config hash: stored results would no longer resume) and of manifest.json's "sim".
+/// Every setting, in canonical-text and manifest order. Changing an order or key changes every
+/// config hash: stored results cannot resume.
 inline constexpr SimField kSimFields[] = {
     {"time_step", &SimConfig::time_step, 0.0, 10.0, true},
     {"time_limit", &SimConfig::time_limit, 0.0, 1e6, true},

@@ -1,6 +1,5 @@
-// The small interface a learnable policy plugin implements next to Policy, so that the
-// harness's generic trainer (imitation + RL loop, replay memory, epsilon schedule, target
-// network) can train it without knowing its network or linking its ML library.
+// What a learnable policy implements beside Policy, so the generic trainer can train it without
+// knowing its network or library.
 #pragma once
 
 #include <cstdint>
@@ -14,8 +13,7 @@
 
 namespace crowdsim {
 
-/// One state as the value network sees it. Opaque to the harness: the plugin's own layout,
-/// stored as is in the replay memory and checkpoints.
+/// One state as the value network sees it: opaque to the harness, stored as is.
 struct CROWDSIM_SDK_API EncodedState {
   std::vector<float> values;
 };
@@ -24,13 +22,12 @@ struct CROWDSIM_SDK_API EncodedState {
 struct CROWDSIM_SDK_API Exploration {
   double epsilon = 0.0;    ///< probability in [0, 1] of a random action at a step; 0 = greedy
   std::uint64_t seed = 0;  ///< of the stream the random draws come from
-  /// Draw the random action among those the one-step lookahead does not show colliding (among
-  /// all when every one collides); false: among all actions (CrowdNav).
+  /// Explore among actions the lookahead shows not colliding (all if each collides); false: among
+  /// all (CrowdNav).
   bool avoid_collisions = false;
 };
 
-/// Implemented by value-based robot policies (the object made by the plugin is both a
-/// Policy and a Trainable; the host finds it with dynamic_cast).
+/// Implemented by value-based robot policies; the host finds it by dynamic_cast from Policy.
 class CROWDSIM_SDK_API Trainable {
  public:
   virtual ~Trainable();
@@ -58,8 +55,8 @@ class CROWDSIM_SDK_API Trainable {
 
   /// The model's weights with their metadata (the file a suite's `weights` names).
   virtual void SaveWeights(const std::filesystem::path& file) const = 0;
-  /// Loads weights saved by SaveWeights; throws std::runtime_error naming the file and the
-  /// mismatch when they belong to another model, sensor set or size.
+  /// Loads SaveWeights' file; throws std::runtime_error naming the file and mismatch (model,
+  /// sensors, size).
   virtual void LoadWeights(const std::filesystem::path& file) = 0;
   /// Everything besides the weights that resuming needs (optimiser, target network), as
   /// files inside the existing folder `dir`.

@@ -1,6 +1,5 @@
-// Which vector units the hot loops may use. A kernel with an AVX2 path computes every lane
-// with the scalar path's IEEE operations in the same order (no fused multiply-add), so both
-// paths give the same bits and a table made on a processor without AVX2 equals one made with it.
+// Which vector units hot loops may use. AVX2 paths repeat the scalar IEEE operations (no FMA): same
+// bits on any processor.
 #pragma once
 
 #include "crowdsim/export.h"
@@ -10,9 +9,8 @@ namespace crowdsim {
 /// True when this processor and its operating system run AVX2 code.
 CROWDSIM_SDK_API bool HaveAvx2();
 
-/// True when the environment variable CROWDSIM_SIMD is "off": every dispatching kernel then
-/// takes its scalar path on any processor (each reads it at its first call), to show on whole
-/// suites that the vector paths change nothing.
+/// True when CROWDSIM_SIMD is "off" (read at first call): every kernel runs scalar, showing the
+/// vector paths change nothing.
 CROWDSIM_SDK_API bool SimdDisabled();
 
 /// HaveAvx2() && !SimdDisabled(): what a kernel's dispatcher asks once.

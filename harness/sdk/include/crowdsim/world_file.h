@@ -67,8 +67,7 @@ CROWDSIM_SDK_API WorldFile ReadWorldFile(const std::filesystem::path& path);
 /// Reads a world set; throws WorldFileError.
 CROWDSIM_SDK_API std::vector<WorldFile> ReadWorldSet(const std::filesystem::path& path);
 
-/// Writes byte-stable YAML (fixed precision: 4 decimals), so regenerating gives identical
-/// files. Throws WorldFileError when the file cannot be written.
+/// Writes byte-stable YAML (4 decimals): regenerating gives identical files. Throws WorldFileError.
 CROWDSIM_SDK_API void WriteWorldFile(const WorldFile& world, const std::filesystem::path& path);
 CROWDSIM_SDK_API void WriteWorldSet(const std::vector<WorldFile>& worlds,
                                     const std::string& comment, const std::filesystem::path& path);

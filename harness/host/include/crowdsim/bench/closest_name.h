@@ -1,5 +1,4 @@
-// "Did you mean": the valid name nearest a mistyped one, for the errors that list the valid
-// names (a suite's or training file's keys, a plugin's parameters, the plugins of a kind).
+// "Did you mean": the valid name nearest a mistyped one, for errors listing valid names.
 #pragma once
 
 #include <optional>
@@ -8,15 +7,12 @@
 
 namespace crowdsim {
 
-/// The one name of `valid` within a few edits of `given` (a letter missing, extra, wrong, or two
-/// swapped; case ignored): one edit, or a quarter of the longer name's length when that is more
-/// (two for `episode` and `episodes`, too few for `rl_episodes`). Nothing when `given` has
-/// fewer than three letters, when no name is that near, or when two are equally near.
+/// The one name of `valid` within max(1, a quarter of the longer name) edits of `given`, case
+/// ignored; none under three letters or on a tie.
 std::optional<std::string> ClosestName(const std::string& given,
                                        const std::vector<std::string>& valid);
 
-/// "; did you mean 'NAME'?" for ClosestName's answer, or "" without one: the tail of an
-/// "unknown ..." message.
+/// "; did you mean 'NAME'?" for ClosestName's answer, else "": an "unknown ..." message's tail.
 std::string DidYouMean(const std::string& given, const std::vector<std::string>& valid);
 
 }  // namespace crowdsim

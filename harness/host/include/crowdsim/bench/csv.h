@@ -1,5 +1,5 @@
-// CSV fields as every result and index file of the project writes and reads them (RFC 4180
-// quoting; newlines inside a field become spaces so a record stays on one line).
+// CSV fields for the project's result and index files: RFC 4180 quoting; newlines in a field become
+// spaces.
 #pragma once
 
 #include <string>
@@ -7,8 +7,7 @@
 
 namespace crowdsim {
 
-/// `s` as one CSV field: quoted (with doubled quotes) only when it holds a comma, quote or
-/// newline.
+/// `s` as one CSV field, quoted (quotes doubled) only if it holds a comma, quote or newline.
 std::string CsvField(const std::string& s);
 
 /// The fields of one CSV line (quotes removed, doubled quotes undone, '\r' dropped).

@@ -18,9 +18,7 @@
 
 namespace crowdsim {
 
-/// kPolicyCrash / kPolicyTimeout are never set by an Episode: the suite runner records them for
-/// an episode whose isolated worker process died (a signal, an exit) or ran past the suite's
-/// episode_timeout_s (worker_process.h).
+/// kPolicyCrash and kPolicyTimeout come from the runner: an isolated worker died or timed out.
 enum class EpisodeStatus {
   kRunning,
   kSuccess,
@@ -34,24 +32,21 @@ enum class EpisodeStatus {
 
 const char* EpisodeStatusName(EpisodeStatus s);
 
-/// A policy's velocity above this multiple of the agent's v_pref is an error (policy_error):
-/// no built-in policy comes near it (the linear baseline allows 2x), and a larger value is a
-/// unit or sign bug that would otherwise move the agent across the map in one step.
+/// A velocity above this multiple of v_pref is a policy_error: a unit or sign bug (linear allows
+/// 2x).
 inline constexpr double kMaxSpeedFactor = 10.0;
 
-/// Throws std::invalid_argument when a scenario cannot make a meaningful episode: the robot's
-/// start or goal outside the map or inside an obstacle, the robot or a human starting where
-/// its disc overlaps an obstacle (by more than kStartOverlapTolerance), or the start within
-/// goal_radius of the goal (the world plugin or its file is at fault; the run stops and names
-/// the episode).
+/// Throws std::invalid_argument for a scenario without a meaningful episode: robot start or goal
+/// off-map or blocked, a start disc overlapping beyond kStartOverlapTolerance, start within
+/// goal_radius.
 void CheckScenario(const Scenario& scenario, const SimConfig& sim);
 
-/// How far a start disc may reach into an obstacle before CheckScenario refuses it (m): the
-/// floor plans' free points keep their clearance to within a few tenths of a millimetre.
+/// How far (m) a start disc may reach into an obstacle: floor-plan points are within tenths of a
+/// millimetre.
 inline constexpr double kStartOverlapTolerance = 1e-3;
 
-/// Throws std::invalid_argument when a world made another number of humans than requested
-/// (a row's humans.count would be recorded for episodes that had fewer).
+/// Throws std::invalid_argument when a world made other than the requested number of humans
+/// (humans.count would misdescribe the episode).
 void CheckHumanCount(const ScenarioRequest& request, const Scenario& scenario);
 
 /// A sensor configured on the robot.
@@ -74,10 +69,7 @@ struct EpisodeFrame {
   std::vector<AgentState> humans;
 };
 
-/// What an episode ended with: its status and per-episode metrics (CrowdNav's and the paper's,
-/// plus ours). This is what episodes.csv stores of an episode and what a table row aggregates;
-/// its columns, their formats and row means are listed once, in kEpisodeColumns
-/// (episode_columns.h).
+/// An episode's status and metrics: what episodes.csv stores and rows aggregate (kEpisodeColumns).
 struct EpisodeOutcome {
   EpisodeStatus status = EpisodeStatus::kRunning;
   double time = 0.0;  ///< s at the end
@@ -92,8 +84,7 @@ struct EpisodeOutcome {
   std::string error;                      ///< policy_error message
 };
 
-/// An episode's outcome with what only a live episode knows (not stored in episodes.csv):
-/// whom it hit and, when recording, the trajectory (rendering, tests).
+/// An outcome plus what only a live episode knows: whom it hit and, when recording, the trajectory.
 struct EpisodeResult : EpisodeOutcome {
   int collided_human = -1;  ///< collision_human: which human (index into the scenario's)
   int collided_rect = -1;   ///< collision_obstacle: which rectangle of the map
@@ -116,8 +107,8 @@ class Episode {
   ~Episode();
 
   bool done() const { return result_.status != EpisodeStatus::kRunning; }
-  /// Advances one step (no-op when done). A plugin's exception ends the episode as
-  /// policy_error, except AbortRun, which passes through (as from the constructor's Resets).
+  /// Advances one step (no-op when done). A plugin's exception ends the episode as policy_error;
+  /// AbortRun passes through.
   StepInfo Step();
   /// Runs to the end.
   const EpisodeResult& Run();
@@ -131,10 +122,8 @@ class Episode {
   const SimConfig& sim() const { return sim_; }
   /// The robot observation the last Step() gave to the robot policy.
   const Observation& last_robot_observation() const { return robot_obs_; }
-  /// The robot's observation of the current state, made now without a decision and without
-  /// lookahead (e.g. the state a timed-out episode stopped in, which a learner bootstraps from).
-  /// It replaces last_robot_observation(), and the next Step() decides on it instead of sensing
-  /// the same state again (Python's Env observes after every step).
+  /// The robot's observation now, without decision or lookahead (e.g. to bootstrap from). It
+  /// replaces last_robot_observation(); the next Step() decides on it without sensing again.
   const Observation& ObserveRobot();
 
  private:
@@ -173,9 +162,8 @@ class Episode {
   EpisodeResult result_;
 };
 
-/// Evaluates what a robot move does, exactly as a real step would judge it (shared by the
-/// episode and the lookahead): swept robot-human test (CrowdNav: humans at their current
-/// velocity), swept robot-obstacle test, goal, discomfort, timeout.
+/// What a robot move does, judged as a real step: swept human and obstacle tests, goal, discomfort,
+/// timeout.
 struct StepJudgement {
   StepEvent event = StepEvent::kNone;
   double reward = 0.0;

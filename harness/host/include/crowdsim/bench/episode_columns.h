@@ -1,9 +1,5 @@
-// episodes.csv's columns, listed once. The header, writer and reader of episodes.csv, the
-// exact bytes an isolated worker sends of an episode (episode_wire.cc), a table row's
-// per-episode means (their table.md / table.csv columns, manifest.json keys and summary
-// lines) and the timing columns that comparisons of runs leave out all follow kEpisodeColumns,
-// so a new per-episode metric is an EpisodeOutcome field, its computation in the episode and
-// one line here (plus a RowMetrics field when a table row shows its mean).
+// episodes.csv's columns, listed once: header, writer, reader, wire format and table means follow
+// kEpisodeColumns. A new metric: an EpisodeOutcome field, its computation, a line here.
 #pragma once
 
 #include <cstdint>
@@ -16,8 +12,7 @@
 
 namespace crowdsim {
 
-/// One line of episodes.csv: which episode (row label, index, scenario seed and layout) and
-/// what it ended with.
+/// One episodes.csv line: which episode (row, index, seed, layout) and how it ended.
 struct EpisodeLine {
   std::string row;  ///< row label
   int episode = 0;
@@ -32,8 +27,7 @@ using EpisodeField =
                  EpisodeStatus EpisodeOutcome::*, int EpisodeOutcome::*, double EpisodeOutcome::*,
                  std::string EpisodeOutcome::*>;
 
-/// The member a column names, in a line (an identity member) or in its outcome
-/// (std::visit over EpisodeColumn::field).
+/// The member a column names: in a line's identity or its outcome.
 template <typename T>
 const T& ColumnValue(const EpisodeLine& e, T EpisodeLine::*member) {
   return e.*member;
@@ -72,8 +66,7 @@ struct EpisodeColumn {
   int table_decimals = 0;
 };
 
-/// The columns in file order. The row means appear in this order in the tables (after the
-/// rates) and in manifest.json (after danger_frequency).
+/// The columns in file order, kept by table means and manifest.json.
 inline constexpr EpisodeColumn kEpisodeColumns[] = {
     {.name = "row", .field = &EpisodeLine::row},
     {.name = "episode", .field = &EpisodeLine::episode},
@@ -122,11 +115,10 @@ inline constexpr EpisodeColumn kEpisodeColumns[] = {
 std::string EpisodeCsvHeader();
 /// One CSV line (no newline).
 std::string FormatEpisodeLine(const EpisodeLine& e);
-/// Reads one line's fields (as SplitCsvLine gives them) into `e`; returns why they are no
-/// episode line ("its seed 'x' is not a whole number >= 0"), or "" when they are one.
+/// Reads one line's fields (from SplitCsvLine) into `e`; returns why they are no episode line, or
+/// "".
 std::string ParseEpisodeFields(const std::vector<std::string>& fields, EpisodeLine* e);
-/// episodes.csv text without its timing columns: what two runs of one configuration must
-/// agree on, on any machine and with any job count.
+/// episodes.csv without timing columns: what two runs of one configuration must agree on, anywhere.
 std::string WithoutTimingColumns(const std::string& episodes_csv);
 
 }  // namespace crowdsim

@@ -17,9 +17,9 @@ struct RowMetrics {
   double collision_obstacle_rate = 0.0;
   double timeout_rate = 0.0;
   double policy_error_rate = 0.0;
-  /// Episodes whose isolated worker process died (policy_crash) or was killed at the suite's
-  /// episode_timeout_s (policy_timeout): no result, so they count as failures in every rate's
-  /// denominator, never as successes, collisions or timeouts (docs/metrics.md).
+  /// Episodes whose isolated worker died (policy_crash) or hit episode_timeout_s (policy_timeout):
+  /// failures in every rate's denominator, never successes, collisions or timeouts
+  /// (docs/metrics.md).
   double policy_crash_rate = 0.0;
   double policy_timeout_rate = 0.0;
   double nav_time = 0.0;  ///< mean time of successful episodes (time_limit if none, CrowdNav)
@@ -44,20 +44,16 @@ struct Interval {
   bool Contains(double x) const { return low <= x && x <= high; }
 };
 
-/// Wilson score interval of a binomial proportion k / n at the two-sided 95% level (z = 1.96):
-/// well-behaved at rates near 0 and 1 and for small n, unlike the normal approximation.
-/// n = 0 gives [0, 1].
+/// Wilson score interval of k / n at 95% (z = 1.96): sound near 0, 1 and small n. n = 0 gives [0,
+/// 1].
 Interval WilsonInterval95(int k, int n);
 
-/// The row's numbers over its episodes: the rates and nav. time from the statuses and times,
-/// danger_frequency from the steps, and each row mean that kEpisodeColumns names
-/// (episode_columns.h).
+/// A row's numbers from its episodes: rates, nav. time, danger_frequency and kEpisodeColumns'
+/// means.
 RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit);
 
-/// A summary row over several rows (e.g. Table 2's average of easy, medium and hard): every
-/// metric is the unweighted mean of the rows' values, as the paper averages; the counts and
-/// episodes are summed (so the rates' intervals use the pooled episodes), and nav_time_se is
-/// the standard error of the mean of the rows' independent nav times.
+/// A summary row (e.g. Table 2's average): unweighted means of the rows' metrics as the paper,
+/// summed counts (pooled intervals), nav_time_se over rows.
 RowMetrics SummarizeRows(std::span<const RowMetrics> rows);
 
 }  // namespace crowdsim

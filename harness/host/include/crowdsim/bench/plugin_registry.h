@@ -26,20 +26,18 @@ class PluginError : public std::runtime_error {
 /// A loaded, ABI-checked plugin library.
 struct LoadedPlugin {
   std::filesystem::path path;  ///< the file, symlinks resolved
-  /// The folder the file was found in or given from (its own symlink not followed: an install
-  /// whose plugin files link into a store is still the harness's own folder).
+  /// The folder the file is found in or given from (own symlink not followed).
   std::filesystem::path folder;
   std::shared_ptr<boost::dll::shared_library> library;
   const PluginDescriptor* descriptor = nullptr;
   ParamSchema schema;
 };
 
-/// Loads plugins by name (crowdsim_NAME.so in the search folders) or by explicit .so path,
-/// once each; objects it makes keep their library loaded while they live.
+/// Loads plugins by name (crowdsim_NAME.so) or .so path, once each; objects keep their library.
 class PluginRegistry {
  public:
-  /// Search folders: each folder of CROWDSIM_PLUGIN_PATH, then the installed plugins
-  /// (PREFIX/lib/crowdsim-bench/plugins, found next to the core library) or the build's.
+  /// Search folders: CROWDSIM_PLUGIN_PATH's, then the installed plugins (beside the core library)
+  /// or the build's.
   PluginRegistry();
   explicit PluginRegistry(std::vector<std::filesystem::path> search_dirs);
 
@@ -50,31 +48,25 @@ class PluginRegistry {
   /// Loads without a kind check (list-plugins).
   const LoadedPlugin& LoadAny(const std::string& name_or_path);
 
-  /// Every crowdsim_*.so in the search folders (first folder wins per name), with the
-  /// problem of each file that fails to load.
+  /// Every crowdsim_*.so in the search folders (first wins per name), with load problems.
   struct Found {
     std::vector<const LoadedPlugin*> plugins;
     std::vector<std::string> problems;
-    /// By plugin found: the files of its name in later folders, which it hides (a suite naming
-    /// it gets the one found).
+    /// Per plugin found: the same-named files in later folders, which it hides.
     std::map<const LoadedPlugin*, std::vector<std::filesystem::path>> hidden;
   };
   Found Discover();
 
-  /// Object factories; the result keeps the plugin library loaded. Throw PluginError when
-  /// the factory throws or returns null.
+  /// Object factories; results keep the library loaded. Throw PluginError on a throw or null.
   std::shared_ptr<Policy> MakePolicy(const LoadedPlugin& p, const Params& params) const;
   std::shared_ptr<Sensor> MakeSensor(const LoadedPlugin& p, const Params& params) const;
   std::shared_ptr<WorldSource> MakeWorld(const LoadedPlugin& p, const Params& params) const;
 
   /// Folder with the plugins built with this harness.
   static std::filesystem::path BuildPluginDir();
-  /// The harness's own plugins: the installed copy's plugin folder, or BuildPluginDir() in a
-  /// build tree (the last of the default search folders).
+  /// The harness's own plugins: the install's plugin folder, or BuildPluginDir() in a build tree.
   static std::filesystem::path HarnessPluginDir();
-  /// Whether `p` is one of the harness's own plugins (its file lies in HarnessPluginDir()),
-  /// not one loaded by path or from CROWDSIM_PLUGIN_PATH: suites run the others isolated in
-  /// worker processes by default (isolation: auto).
+  /// Whether `p` lies in HarnessPluginDir(); suites isolate the others by default.
   static bool IsHarnessPlugin(const LoadedPlugin& p);
 
  private:

@@ -1,6 +1,5 @@
-// Result files of a suite run: episodes.csv (one line per finished episode, appended as they
-// finish, so a crash loses nothing; its columns are episode_columns.h's), table.md / table.csv
-// (the paper's columns), manifest.json.
+// A suite run's result files: episodes.csv (appended per episode), table.md, table.csv,
+// manifest.json.
 #pragma once
 
 #include <cstdint>
@@ -24,15 +23,14 @@ struct EpisodesCsvRead {
   std::string first_damage;    ///< "FILE:LINE: why" of the first of them; empty when none
   bool cut_last_line = false;  ///< the last line lacks its newline (a crash mid-write): skipped
 };
-/// Reads an episodes.csv. Throws std::runtime_error naming the file (and line) and the fix when
-/// it cannot be read, when its first line is not EpisodeCsvHeader(), or when it has episode
-/// lines and none of them can be read. Damaged lines among readable ones are skipped and
-/// counted (on resume their episodes run again); a last line cut short by a crash is skipped.
+/// Reads an episodes.csv. Throws std::runtime_error (file, line, fix) when unreadable, when the
+/// header is not EpisodeCsvHeader(), or when no episode line reads. Damaged lines are skipped and
+/// counted; a crash-cut last line is skipped.
 EpisodesCsvRead ReadEpisodesCsvChecked(const std::filesystem::path& path);
 /// ReadEpisodesCsvChecked's lines.
 std::vector<EpisodeLine> ReadEpisodesCsv(const std::filesystem::path& path);
 
-/// One finished line of the table: a suite row, or a summary line (spec null, summary set).
+/// One finished table line: a suite row, or a summary (spec null, summary set).
 struct TableRow {
   const RowSpec* spec = nullptr;
   RowMetrics metrics;
@@ -68,14 +66,12 @@ struct RunFacts {
 std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& rows,
                                const RunFacts& facts);
 
-// Readers of a JSON file the harness wrote (manifest.json, a training's summary.json). `key` is
-// a top-level key, or a JSON pointer when it starts with '/' ("/procedure/rl_episodes"). An
-// absent, unreadable or malformed file, a missing key or a value of another type reads as absent.
+// Readers of JSON files the harness wrote: `key` is top-level or a '/' JSON pointer; anything
+// missing or mistyped reads as absent.
 
 /// A string field, e.g. "config_hash", "git_commit" ("" if absent).
 std::string ReadManifestField(const std::filesystem::path& path, const std::string& key);
-/// A run's overrides (the manifest's "overrides") as the command line gives them: "--set A
-/// --set B", "" for none.
+/// The manifest's "overrides" as a command line: "--set A --set B", "" for none.
 std::string SetOptionsText(const std::vector<std::string>& sets);
 /// A list of strings, e.g. "overrides" (empty if absent; non-strings in it are skipped).
 std::vector<std::string> ReadManifestStrings(const std::filesystem::path& path,
@@ -88,9 +84,8 @@ std::optional<bool> ReadManifestBool(const std::filesystem::path& path, const st
 /// A manifest's "shard" field in words: "shard 2/3", or "a whole run" when empty.
 std::string ShardName(const std::string& shard);
 
-/// What two runs were given differently: their suite files, their --set overrides (as the
-/// manifest records them), as "; suite files A and B; run with no --set and with --set x=1"
-/// for the end of an error message; empty when both are the same.
+/// How two runs' suite files and --set overrides differ, as an error's tail ("; suite files A and
+/// B; ..."); "" if the same.
 std::string DescribeRunInputsDifference(const std::string& suite_a,
                                         const std::vector<std::string>& set_a,
                                         const std::string& suite_b,

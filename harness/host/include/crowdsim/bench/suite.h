@@ -40,8 +40,7 @@ struct HumansSpec {
   HumanGoalMode goal_mode = HumanGoalMode::kStay;
 };
 
-/// Published values of a row (e.g. the paper's), shown beside ours with our difference. Only
-/// presentation: a reference never changes the results or the config hash.
+/// Published values of a row (e.g. the paper's), shown beside ours; never in results or hash.
 struct PublishedReference {
   std::optional<double> success;
   std::optional<double> collision;
@@ -60,9 +59,8 @@ struct RowSpec {
   HumansSpec humans;
   std::vector<std::pair<std::string, std::string>> info;  ///< extra table columns (model, ...)
   std::optional<PublishedReference> reference;
-  /// Canonical text of what decides this row's episodes (the suite's seed and sim settings,
-  /// then this row): stored results of a row whose hash is unchanged are resumed even when
-  /// other rows of the suite were added or changed.
+  /// Canonical text of what decides this row's episodes: an unchanged row hash resumes, whatever
+  /// other rows do.
   std::string canonical;
   std::string ConfigHash() const;
 };
@@ -75,9 +73,8 @@ struct SummarySpec {
   std::optional<PublishedReference> reference;
 };
 
-/// Whether a run's episodes run in worker processes that a crashing or hanging plugin can
-/// take down without the run (worker_process.h). kAuto: isolated when a plugin of the suite is
-/// not one of the harness's own (PluginRegistry::IsHarnessPlugin) or episode_timeout_s is set.
+/// Whether episodes run in worker processes, so a crashing or hanging plugin spares the run. kAuto:
+/// isolated for user plugins or a timeout.
 enum class IsolationMode { kAuto, kOn, kOff };
 
 struct Suite {
@@ -91,13 +88,11 @@ struct Suite {
   std::vector<RowSpec> rows;
   std::vector<SummarySpec> summaries;  ///< shown after the rows; not part of the config hash
   std::vector<std::string> overrides;  ///< `--set key.path=value` applied to the file, in order
-  /// How episodes run (`isolation:`), and the wall-clock seconds an isolated episode may take
-  /// before its worker is killed and it is recorded as policy_timeout (`episode_timeout_s:`,
-  /// 0 = no limit). Neither decides an episode's result, so neither is in the config hash.
+  /// `isolation:` and `episode_timeout_s:` (seconds before a worker is killed, policy_timeout; 0:
+  /// none). Not hashed.
   IsolationMode isolation = IsolationMode::kAuto;
   double episode_timeout_s = 0.0;
-  /// Canonical text of everything that decides the results (not the episode count); its
-  /// hash tells whether stored results can be resumed.
+  /// Canonical text of what decides the results (not the episode count); its hash gates resume.
   std::string canonical;
   std::string ConfigHash() const;
 };
@@ -107,9 +102,8 @@ struct SuiteLoadResult {
   std::vector<SuiteError> errors;  ///< every error found (empty when suite is set)
 };
 
-/// Reads and validates a suite; loads the plugins it names to check their parameters.
-/// `overrides` (`key.path=value`, as `--set` takes them) edit the file's document first; rows
-/// with a `sweep:` block are then expanded (one row per combination of values).
+/// Reads and validates a suite, loading its plugins. `overrides` (`--set`) apply first, then sweeps
+/// expand.
 SuiteLoadResult LoadSuite(const std::filesystem::path& file, PluginRegistry& registry,
                           const std::vector<std::string>& overrides = {});
 

@@ -1,6 +1,5 @@
-// A training file: a suite row's spec (the policy to train with its sensors, the world and
-// humans it trains among; read by the suite's row reader, with its defaults) at the top level,
-// plus a `training:` block with the imitation + RL settings (paper / CrowdNav defaults).
+// A training file: a row spec at top level (learner, sensors, world, humans) plus a `training:`
+// block (paper / CrowdNav defaults).
 #pragma once
 
 #include <cstdint>
@@ -30,9 +29,8 @@ enum class ExplorationRule {
 };
 const char* ToString(ExplorationRule e);
 
-/// The `training:` keys. Defaults: CrowdNav's train.config with the paper's epsilon, i.e. the
-/// paper's literal procedure; the training files under suites/train/ name the procedure that
-/// learns (docs/training.md).
+/// The `training:` keys. Defaults: CrowdNav's train.config with the paper's epsilon; suites/train/
+/// holds procedures that learn.
 struct TrainingSettings {
   int il_episodes = 3000;  ///< demonstrations of the teacher
   int il_epochs = 50;      ///< passes over the memory after the demonstrations
@@ -61,8 +59,7 @@ struct TrainSpec {
   std::filesystem::path file;
   std::uint64_t seed = 0;
   SimConfig sim;
-  /// Read by the suite's row reader: the learner (`row.policy`, e.g. cadrl or sarl) with its
-  /// sensors, the world (its train split) and the humans, drawn per episode in
+  /// The learner (`row.policy`), sensors, world (train split) and humans, drawn per episode in
   /// [`row.humans.count`, `row.humans.count_max`].
   RowSpec row;
   PluginUse teacher;  ///< imitation-learning robot (`training.il_policy`)
@@ -70,9 +67,8 @@ struct TrainSpec {
   /// Everything that decides the trained weights; its hash guards --resume.
   std::string canonical;
   std::string ConfigHash() const;
-  /// The hash this training would have with another RL length: --resume accepts a checkpoint
-  /// that differs only there, so a finished or running training can be lengthened (or
-  /// shortened, down to the episodes already done).
+  /// The hash with another RL length: --resume accepts checkpoints differing only there, so
+  /// trainings can be lengthened or shortened.
   std::string ConfigHashWithRlEpisodes(int rl_episodes) const;
 };
 
@@ -81,22 +77,19 @@ struct TrainSpecLoadResult {
   std::vector<SuiteError> errors;  ///< every error found (empty when spec is set)
 };
 
-/// Reads and validates a training file; loads the plugins it names to check parameters.
-/// `overrides` (`key.path=value`, as `train --set` takes them) edit the file's document first.
+/// Reads and validates a training file, loading its plugins. `overrides` (`train --set`) apply
+/// first.
 TrainSpecLoadResult LoadTrainSpec(const std::filesystem::path& file, PluginRegistry& registry,
                                   const std::vector<std::string>& overrides = {});
 
-/// `train --seed N`: the same training with another seed (weights, scenarios, exploration,
-/// batches); the canonical text and so the config hash follow.
+/// `train --seed N`: the same training with another seed; canonical text and hash follow.
 void OverrideSeed(TrainSpec& spec, std::uint64_t seed);
 
-/// Problems that do not stop a training but likely spoil it (e.g. an epsilon decay longer
-/// than the RL phase), one sentence each.
+/// Problems that likely spoil a training without stopping it (e.g. epsilon decay beyond RL).
 std::vector<std::string> TrainSpecWarnings(const TrainSpec& spec);
 
-/// The keys of the canonical text's "training:" line, whose values it writes without names
-/// in this order (kept so that the config hashes of committed models stay valid); messages
-/// about a changed configuration name them.
+/// Keys of the canonical "training:" line's unnamed values, in fixed order (committed models'
+/// hashes depend on it); messages name them.
 inline const std::vector<std::string> kTrainingLineFields = {"il_episodes",
                                                              "il_epochs",
                                                              "il_learning_rate",

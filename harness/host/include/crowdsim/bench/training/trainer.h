@@ -1,7 +1,5 @@
-// The generic trainer behind `crowdsim-bench train`: imitation learning from a teacher robot
-// policy, then epsilon-greedy RL with TD(0) targets from a target network and a replay
-// memory (CrowdNav's procedure, the paper's settings). It drives any policy whose object is
-// also a Trainable; it never sees the network or its library.
+// The generic trainer behind `crowdsim-bench train`: imitation, then epsilon-greedy RL with TD(0),
+// target network and replay memory (CrowdNav). Drives any Trainable policy.
 #pragma once
 
 #include <filesystem>
@@ -22,8 +20,7 @@ class TrainError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A training refused before it did anything: --resume without a checkpoint or with another
-/// configuration, a folder that already holds a training. The CLI exits 2 for it.
+/// A training refused before starting (bad --resume, a folder holding a training). The CLI exits 2.
 class TrainRefused : public TrainError {
  public:
   using TrainError::TrainError;
@@ -39,12 +36,10 @@ struct TrainOptions {
   std::filesystem::path out_dir;  ///< default: results/train/<name>/
   bool resume = false;            ///< continue from out_dir/checkpoint
   bool progress = true;           ///< progress line on stderr
-  /// Tests: write a checkpoint and return after this many episodes (demonstrations + RL) of
-  /// this call, as an interruption would; -1 = run to the end.
+  /// Tests: checkpoint and return after this many episodes, as if interrupted; -1: run to the end.
   int stop_after_episodes = -1;
-  /// Called with (out_dir, training name) after every checkpoint and at the end, once the logs
-  /// are flushed (the CLI draws the learning curve there; the core links no figure library).
-  /// An exception it throws is reported as a warning and training goes on.
+  /// Called with (out_dir, name) after each checkpoint and at the end (the CLI draws the curve; the
+  /// core links no figure library). Its exceptions only warn.
   std::function<void(const std::filesystem::path&, const std::string&)> on_files_flushed;
 };
 
@@ -53,8 +48,8 @@ struct ValidationResult {
   int episode = 0;  ///< RL episodes done when it ran
   double success = 0, collision = 0, timeout = 0;
   double nav_time = 0;  ///< s, mean over successes (time_limit if none)
-  /// Mean value the model gives a fixed set of probe states (taken from the demonstrations
-  /// once they end): drifts show the values collapsing or inflating; NaN before there is one.
+  /// The model's mean value over fixed probe states: drift shows values collapsing or inflating;
+  /// NaN before probes.
   double probe_value = std::numeric_limits<double>::quiet_NaN();
 };
 
@@ -84,16 +79,12 @@ struct TrainSummary {
 TrainSummary RunTraining(const TrainSpec& spec, PluginRegistry& registry,
                          const TrainOptions& options);
 
-/// What `validate` checks of a training file, without training: the learner, its sensors, the
-/// teacher and the world made as `train` makes them (a policy that cannot be trained, a missing
-/// weights file), the first scenario of each episode stream (a floor plan without training
-/// pairs), and the first step of the first episode with the teacher and with the learner at
-/// its initial weights (a sensor that does not fit the learner's input). Throws TrainRefused.
+/// `validate` for a training file: builds what `train` builds, draws each stream's first scenario,
+/// steps teacher and untrained learner once. Throws TrainRefused.
 void PreflightTraining(const TrainSpec& spec, PluginRegistry& registry);
 
-/// The folder holds a finished training of exactly this configuration (its summary.json says
-/// finished, with spec's config hash): a campaign skips it. A finished training whose file now
-/// asks for more RL episodes is not (it resumes and goes on).
+/// The folder holds a finished training of this configuration, so a campaign skips it (more RL
+/// episodes asked: it resumes).
 bool IsFinishedTraining(const std::filesystem::path& out_dir, const TrainSpec& spec);
 
 /// The folder holds a checkpoint to resume from (also one left as checkpoint.tmp by a crash).
