@@ -86,7 +86,7 @@ def main():
     words = []
     past = 0
     for f in sources:
-        if f.startswith(("harness/src/", "harness/host/", "harness/sdk/")):
+        if f.startswith(("harness/src/", "harness/host/", "harness/sdk/", "harness/common/")):
             text = show(args.rev, f)
             words += [len(b) for b in comment_blocks(text)]
             past += len(re.findall(r"//.*\b(had|was|were|used to|no longer)\b", text))
