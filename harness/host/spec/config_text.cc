@@ -32,7 +32,15 @@ void CanonicalSim(const SimConfig& sim, std::ostream& os) {
   os << "sim=";
   for (const SimField& f : kSimFields) {
     os << (&f == kSimFields ? "" : ",");
-    std::visit([&](auto member) { os << sim.*member; }, f.member);  // a bool as 0 or 1
+    std::visit(
+        [&](auto member) {
+          if constexpr (std::is_same_v<decltype(member), double SimConfig::*>) {
+            os << FormatParamValue(sim.*member);  // exact, as parameters are
+          } else {
+            os << sim.*member;  // a bool as 0 or 1
+          }
+        },
+        f.member);
   }
   os << "\n";
 }
