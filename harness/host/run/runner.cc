@@ -14,6 +14,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <system_error>
 #include <thread>
 
 #include "crowdsim/bench/episode.h"
@@ -276,9 +277,20 @@ void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& regist
       }
     }
   };
+  // No more threads than episodes; a thread the system refuses stops the run, named.
+  const int workers = static_cast<int>(std::min<size_t>(std::max(jobs, 1), tasks.size()));
   std::vector<std::thread> threads;
-  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
+  for (int j = 1; j < workers && !failed; ++j) {
+    try {
+      threads.emplace_back(worker);
+    } catch (const std::system_error& e) {
+      std::lock_guard<std::mutex> lock(mutex);
+      failure = "cannot start worker thread " + std::to_string(j + 1) + " of " +
+                std::to_string(workers) + " (" + e.what() + "); rerun with fewer --jobs";
+      failed = true;
+    }
+  }
+  if (!failed) worker();
   for (auto& th : threads) th.join();
   sink.Finish(failure);
 }
@@ -333,7 +345,7 @@ void RunTasksInProcesses(const Suite& suite, const std::vector<SuiteRow>& rows,
     return sink.Add(std::move(line), &failure);
   };
   WorkerPoolOptions options;
-  options.workers = jobs;
+  options.workers = jobs;  // RunInWorkerProcesses starts no more than the tasks
   options.task_timeout_s = suite.episode_timeout_s;
   try {
     RunInWorkerProcesses(tasks.size(), options, callbacks);
