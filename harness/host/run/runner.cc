@@ -371,6 +371,22 @@ bool Isolated(const Suite& suite, const RunOptions& options) {
                      [&](const RowSpec& row) { return RowNeedsIsolation(suite, row, mode); });
 }
 
+/// Result files beside no episodes.csv are no run's episodes to resume, and a run would
+/// replace them: refused unless --fresh (as merge refuses a folder it did not write).
+void RefuseForeignResults(const fs::path& dir) {
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(dir / "episodes.csv", ec))) return;
+  std::string held;
+  for (const char* name : {"table.md", "table.csv", "manifest.json"}) {
+    if (fs::exists(fs::symlink_status(dir / name, ec)))
+      held += (held.empty() ? "" : ", ") + std::string(name);
+  }
+  if (held.empty()) return;
+  throw RunRefused("'" + dir.string() + "' holds " + held +
+                   " but no episodes.csv: no run's episodes to resume, and this run would replace "
+                   "them; give --fresh to replace them, or choose another --out");
+}
+
 /// A shard's files: its episodes in (row, episode) order and a manifest naming the shard; the
 /// tables come from `merge`.
 void WriteShardFiles(const Suite& suite, const RunScope& scope, const EpisodeLines& done,
@@ -443,6 +459,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
                         ? nullptr
                         : ClaimOutputFolder(summary.out_dir, "a suite run", &refused);
   if (!lock && !options.out_dir_claimed) throw RunRefused(refused);
+  if (!options.fresh) RefuseForeignResults(summary.out_dir);
   if (options.fresh) {
     // --fresh discards the stored results, those set aside by earlier reruns with them.
     std::error_code ec;
