@@ -1411,5 +1411,30 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   }
 }
 
+// A folder with tables but no episodes.csv holds no run this one resumes: its files are kept
+// unless --fresh, as merge keeps a folder it did not write.
+TEST_F(RunSuiteTest, ResultsBesideNoEpisodesAreReplacedOnlyWithFresh) {
+  const Suite s = LoadOrDie(kSuite);
+  const auto out = dir_.path() / "foreign";
+  fs::create_directories(out);
+  std::ofstream(out / "table.md") << "someone's table\n";
+  try {
+    Run(s, "foreign", 1, 2);
+    ADD_FAILURE() << "the run replaced a table it did not write";
+  } catch (const RunRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("holds table.md but no episodes.csv"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(ReadText(out / "table.md"), "someone's table\n");
+  EXPECT_FALSE(fs::exists(out / "manifest.json"));
+  RunOptions o;
+  o.out_dir = out;
+  o.episodes = 2;
+  o.fresh = true;
+  o.progress = false;
+  RunSuite(s, registry_, o);
+  EXPECT_NE(ReadText(out / "table.md"), "someone's table\n");
+}
+
 }  // namespace
 }  // namespace crowdsim

@@ -1,6 +1,8 @@
 // Plugin loading: the good path and each kind of broken plugin gives a clear error.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "crowdsim/bench/plugin_registry.h"
 #include "test_paths.h"
 
@@ -156,6 +158,31 @@ TEST(PluginLoader, DiscoverReportsBrokenFilesWithoutStopping) {
   for (const auto* p : found.plugins) has_linear |= std::string(p->descriptor->name) == "linear";
   EXPECT_TRUE(has_linear);
   EXPECT_GE(found.problems.size(), 3u);  // not_a_library, no_alias, wrong_abi
+}
+
+// A plugin file cut short (an interrupted copy: its first 1-12 kB) is an error naming it, for
+// loading and for the discovery list-plugins runs, never a SIGBUS of the whole process.
+TEST(PluginLoader, APluginFileCutShortIsAnErrorNotACrash) {
+  const auto dir = std::filesystem::temp_directory_path() / "crowdsim_cut_plugins";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ifstream whole(PluginDir() / "crowdsim_orca.so", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(whole)),
+                          std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 12000u);
+  for (const std::size_t kb : {1, 4, 12}) {
+    const auto cut = dir / ("crowdsim_cut" + std::to_string(kb) + ".so");
+    std::ofstream(cut, std::ios::binary) << bytes.substr(0, kb * 1024);
+    PluginRegistry reg(std::vector<std::filesystem::path>{});
+    const std::string err = LoadError(reg, cut.string(), PluginKind::kPolicy);
+    EXPECT_NE(err.find("cannot load plugin file '" + cut.string() + "': it is cut short"),
+              std::string::npos)
+        << err;
+  }
+  PluginRegistry reg({dir, PluginDir()});
+  const auto found = reg.Discover();
+  EXPECT_EQ(found.problems.size(), 3u);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

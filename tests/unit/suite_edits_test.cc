@@ -323,5 +323,41 @@ TEST_F(SuiteEdits, TrainingFilesTakeOverridesToo) {
   EXPECT_EQ(r.spec->seed, 9u);
 }
 
+// The config hash tells apart numbers that differ past six significant digits (a resume would
+// take episodes made with 1.3 for 1.3000004), and prints what six digits give as it always did.
+TEST_F(SuiteEdits, TheConfigHashCarriesNumbersExactly) {
+  const auto base = Load(kSuite, {"sim.robot_v_pref=1.3"});
+  ASSERT_TRUE(base.suite) << All(base);
+  for (const std::string& set :
+       {"sim.robot_v_pref=1.3000004", "sim.robot_v_pref=1.30000000000001"}) {
+    const auto near = Load(kSuite, {set});
+    ASSERT_TRUE(near.suite) << All(near);
+    EXPECT_NE(near.suite->ConfigHash(), base.suite->ConfigHash()) << set;
+  }
+  const auto param = Load(kSuite, {"rows[linear].params.speed_factor=1.2"});
+  const auto param_near = Load(kSuite, {"rows[linear].params.speed_factor=1.2000001"});
+  ASSERT_TRUE(param.suite && param_near.suite) << All(param) << All(param_near);
+  EXPECT_NE(param.suite->ConfigHash(), param_near.suite->ConfigHash());
+  EXPECT_NE(base.suite->canonical.find("1.3,"), std::string::npos) << base.suite->canonical;
+  EXPECT_EQ(FormatParamValue(1.3), "1.3");
+  EXPECT_EQ(FormatParamValue(0.25), "0.25");
+  EXPECT_EQ(FormatParamValue(1e-05), "1e-05");
+  EXPECT_EQ(FormatParamValue(1.3000004), "1.3000004000000001");
+  EXPECT_EQ(FormatParamValue(std::vector<double>{0.1, 1.0000001}), "[0.1, 1.0000001000000001]");
+}
+
+TEST_F(SuiteEdits, TheTrainingHashCarriesNumbersExactly) {
+  const auto file =
+      dir_.Write("train.yaml",
+                 "name: tr\nseed: 1\npolicy: cadrl\nparams: {sensors: person}\nsensors: [person]\n"
+                 "world: {source: random_rect, obstacles: 0}\nhumans: {count: 1}\ntraining: "
+                 "{rl_episodes: 100}\n");
+  const auto a = training::LoadTrainSpec(file, registry_, {"training.rl_learning_rate=0.001"});
+  const auto b =
+      training::LoadTrainSpec(file, registry_, {"training.rl_learning_rate=0.0010000001"});
+  ASSERT_TRUE(a.spec && b.spec);
+  EXPECT_NE(a.spec->ConfigHash(), b.spec->ConfigHash());
+}
+
 }  // namespace
 }  // namespace crowdsim

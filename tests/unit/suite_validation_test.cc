@@ -668,6 +668,20 @@ TEST_F(SuiteValidation, PluginDefaultsComeFromTheSchemaDefaultsFile) {
       << All(none);
 }
 
+// A label of bytes that are not UTF-8 (a file saved as Latin-1) is refused before any run:
+// it would write malformed SVG and HTML. Valid multi-byte labels pass.
+TEST_F(SuiteValidation, ALabelMustBeUtf8) {
+  const std::string head =
+      "name: u\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\nrows:\n";
+  for (const std::string bad : {"caf\xe9", "\xff\xfe", "\xc0\xaf", "\xed\xa0\x80", "a\xe2\x82"}) {
+    auto r = Load(head + "  - {label: \"" + bad + "\", policy: linear}\n");
+    ASSERT_FALSE(r.suite) << bad;
+    EXPECT_NE(Find(r, "rows[0].label: is not valid UTF-8 text"), "") << All(r);
+  }
+  auto good = Load(head + "  - {label: \"café ∆ 🚶\", policy: linear}\n");
+  EXPECT_TRUE(good.suite) << All(good);
+}
+
 TEST_F(SuiteValidation, FolderNamesAndLabelsThatWouldMisplaceResults) {
   auto dotdot = Load(
       "name: ..\nepisodes: 3\nworld: {source: random_rect, obstacles: 1, split: test}\n"

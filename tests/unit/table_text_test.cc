@@ -1,8 +1,12 @@
 // Text that users put in suites (labels, info values) cannot break the result files: a '|'
 // would open a new Markdown cell, a carriage return would split a CSV record.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -142,22 +146,57 @@ TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
       << text;
 }
 
-TEST(ResultFiles, AFullDiskIsNamedAndLeavesNoTemporaryFile) {
-  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full here";
+// The files in a folder other than `keep`, hidden ones included.
+std::vector<std::string> OtherFiles(const std::filesystem::path& dir, const std::string& keep) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (e.path().filename() != keep) names.push_back(e.path().filename().string());
+  }
+  return names;
+}
+
+TEST(ResultFiles, AFailedWriteIsNamedAndLeavesNoTemporaryFile) {
   testing::TempDir dir;
   const auto target = dir.path() / "table.md";
   std::ofstream(target) << "the previous table\n";
-  // The temporary file the writer uses is a link to /dev/full: every write fails with ENOSPC.
-  std::filesystem::create_symlink("/dev/full", dir.path() / "table.md.tmp");
-  try {
-    WriteFileAtomically(target, std::string(1 << 16, 'x'));
-    ADD_FAILURE() << "a write to a full disk succeeded";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
+  // In a child whose files may not grow past 4 kB (a full disk's failure, as a write sees it).
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{4096, 4096};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      WriteFileAtomically(target, std::string(1 << 16, 'x'));
+      _exit(1);
+    } catch (const std::runtime_error& e) {
+      const std::string what = e.what();
+      _exit(what.find("cannot write " + target.string() + ": File too large") == 0 ? 0 : 2);
+    }
   }
-  EXPECT_FALSE(
-      std::filesystem::exists(std::filesystem::symlink_status(dir.path() / "table.md.tmp")));
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: the write succeeded; 2: another message";
+  EXPECT_EQ(OtherFiles(dir.path(), "table.md"), std::vector<std::string>{});
   EXPECT_EQ(testing::ReadText(target), "the previous table\n");
+}
+
+// A link planted in a shared output folder never leads a write outside it: not at the file's
+// name (the link is replaced), nor at a temporary file's name (a new file is made each time).
+TEST(ResultFiles, AWriteNeverFollowsALinkOutOfTheFolder) {
+  testing::TempDir dir;
+  const auto out = dir.path() / "out";
+  std::filesystem::create_directories(out);
+  const auto outside = dir.path() / "outside.txt";
+  std::ofstream(outside) << "not yours\n";
+  std::filesystem::create_symlink(outside, out / "table.md");
+  std::filesystem::create_symlink(outside, out / "table.md.tmp");
+  WriteFileAtomically(out / "table.md", "the table\n");
+  EXPECT_EQ(testing::ReadText(outside), "not yours\n");
+  EXPECT_FALSE(std::filesystem::is_symlink(out / "table.md"));
+  EXPECT_EQ(testing::ReadText(out / "table.md"), "the table\n");
+  EXPECT_TRUE(std::filesystem::is_symlink(out / "table.md.tmp"));
+  EXPECT_EQ(OtherFiles(out, "table.md"), std::vector<std::string>{"table.md.tmp"});
 }
 
 }  // namespace

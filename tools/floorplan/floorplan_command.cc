@@ -107,6 +107,18 @@ int Import(const std::vector<std::string>& args) {
       throw UsageError("'" + *path + "' is a folder; give the file to write (e.g. " +
                        (std::filesystem::path(*path) / "plan.yaml").string() + ")");
     }
+    // The image read is never the file written (links and other spellings of it included).
+    if (std::filesystem::equivalent(*path, a.positional[0], ec) ||
+        std::filesystem::weakly_canonical(*path, ec) ==
+            std::filesystem::weakly_canonical(a.positional[0], ec)) {
+      throw UsageError("'" + *path + "' is the input image " + a.positional[0] +
+                       "; writing it would destroy the image: choose another file");
+    }
+  }
+  if (mask_png && (*mask_png == *out || std::filesystem::weakly_canonical(*mask_png) ==
+                                            std::filesystem::weakly_canonical(*out))) {
+    throw UsageError("--mask-png and --out name the same file '" + *out +
+                     "'; give each its own file");
   }
   const ImportResult r = [&] {
     try {

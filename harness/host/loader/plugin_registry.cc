@@ -10,6 +10,7 @@
 
 #include "install_location.h"
 #include "loader/blas_kernel.h"
+#include "loader/elf_check.h"
 #include "loader/shipped_plugins.h"
 #include "spec/schema_check.h"
 
@@ -163,6 +164,9 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   const std::string use = (folder / path.filename()).string();
   if (auto it = loaded_.find(use); it != loaded_.end()) return *it->second;
 
+  if (const std::string problem = ElfFileProblem(canonical); !problem.empty()) {
+    throw PluginError("cannot load plugin file '" + key + "': it " + problem);
+  }
   auto lib = std::make_shared<boost::dll::shared_library>();
   PinBlasKernel();  // before a learned policy's plugin brings OpenBLAS in
   try {

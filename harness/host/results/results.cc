@@ -16,6 +16,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "atomic_file.h"
 #include "crowdsim/bench/csv.h"
 #include "crowdsim/version.h"
 
@@ -527,24 +528,7 @@ std::string FormatTableCsv(const Suite& suite, const std::vector<TableRow>& rows
 }
 
 void WriteFileAtomically(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-  if (!f) throw std::runtime_error("cannot create " + tmp.string() + ": " + std::strerror(errno));
-  f << text;
-  f.close();  // a full disk shows here, when the buffer is written
-  std::error_code ec;
-  if (!f) {
-    const int error = errno;
-    fs::remove(tmp, ec);
-    throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(error) +
-                             " (the previous file, if any, is unchanged)");
-  }
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw std::runtime_error("cannot replace " + path.string() + ": " + ec.message());
-  }
+  common::WriteFileAtomically(path, text);
 }
 
 std::string NowUtc() {

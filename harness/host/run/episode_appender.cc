@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <system_error>
 
 #include "crowdsim/bench/runner.h"
 
@@ -36,7 +37,13 @@ EpisodeAppender::EpisodeAppender(std::filesystem::path path, std::chrono::millis
   fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) throw RunError("cannot append to " + path_.string() + ": " + std::strerror(errno));
   g_open.store(this);
-  if (max_delay_.count() > 0) flusher_ = std::thread([this] { FlushPeriodically(); });
+  if (max_delay_.count() > 0) {
+    try {
+      flusher_ = std::thread([this] { FlushPeriodically(); });
+    } catch (const std::system_error&) {
+      max_delay_ = std::chrono::milliseconds(0);  // no thread to spare: each line written at once
+    }
+  }
 }
 
 EpisodeAppender::~EpisodeAppender() {

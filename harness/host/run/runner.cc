@@ -14,6 +14,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <system_error>
 #include <thread>
 
 #include "crowdsim/bench/episode.h"
@@ -276,9 +277,20 @@ void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& regist
       }
     }
   };
+  // No more threads than episodes; a thread the system refuses stops the run, named.
+  const int workers = static_cast<int>(std::min<size_t>(std::max(jobs, 1), tasks.size()));
   std::vector<std::thread> threads;
-  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
+  for (int j = 1; j < workers && !failed; ++j) {
+    try {
+      threads.emplace_back(worker);
+    } catch (const std::system_error& e) {
+      std::lock_guard<std::mutex> lock(mutex);
+      failure = "cannot start worker thread " + std::to_string(j + 1) + " of " +
+                std::to_string(workers) + " (" + e.what() + "); rerun with fewer --jobs";
+      failed = true;
+    }
+  }
+  if (!failed) worker();
   for (auto& th : threads) th.join();
   sink.Finish(failure);
 }
@@ -333,7 +345,7 @@ void RunTasksInProcesses(const Suite& suite, const std::vector<SuiteRow>& rows,
     return sink.Add(std::move(line), &failure);
   };
   WorkerPoolOptions options;
-  options.workers = jobs;
+  options.workers = jobs;  // RunInWorkerProcesses starts no more than the tasks
   options.task_timeout_s = suite.episode_timeout_s;
   try {
     RunInWorkerProcesses(tasks.size(), options, callbacks);
@@ -357,6 +369,22 @@ bool Isolated(const Suite& suite, const RunOptions& options) {
   }
   return std::any_of(suite.rows.begin(), suite.rows.end(),
                      [&](const RowSpec& row) { return RowNeedsIsolation(suite, row, mode); });
+}
+
+/// Result files beside no episodes.csv are no run's episodes to resume, and a run would
+/// replace them: refused unless --fresh (as merge refuses a folder it did not write).
+void RefuseForeignResults(const fs::path& dir) {
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(dir / "episodes.csv", ec))) return;
+  std::string held;
+  for (const char* name : {"table.md", "table.csv", "manifest.json"}) {
+    if (fs::exists(fs::symlink_status(dir / name, ec)))
+      held += (held.empty() ? "" : ", ") + std::string(name);
+  }
+  if (held.empty()) return;
+  throw RunRefused("'" + dir.string() + "' holds " + held +
+                   " but no episodes.csv: no run's episodes to resume, and this run would replace "
+                   "them; give --fresh to replace them, or choose another --out");
 }
 
 /// A shard's files: its episodes in (row, episode) order and a manifest naming the shard; the
@@ -431,6 +459,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
                         ? nullptr
                         : ClaimOutputFolder(summary.out_dir, "a suite run", &refused);
   if (!lock && !options.out_dir_claimed) throw RunRefused(refused);
+  if (!options.fresh) RefuseForeignResults(summary.out_dir);
   if (options.fresh) {
     // --fresh discards the stored results, those set aside by earlier reruns with them.
     std::error_code ec;

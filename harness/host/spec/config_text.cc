@@ -12,6 +12,7 @@
 
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/data_root.h"
+#include "crowdsim/input_file.h"
 #include "crowdsim/rng.h"
 
 namespace crowdsim::suite_internal {
@@ -32,7 +33,15 @@ void CanonicalSim(const SimConfig& sim, std::ostream& os) {
   os << "sim=";
   for (const SimField& f : kSimFields) {
     os << (&f == kSimFields ? "" : ",");
-    std::visit([&](auto member) { os << sim.*member; }, f.member);  // a bool as 0 or 1
+    std::visit(
+        [&](auto member) {
+          if constexpr (std::is_same_v<decltype(member), double SimConfig::*>) {
+            os << FormatParamValue(sim.*member);  // exact, as parameters are
+          } else {
+            os << sim.*member;  // a bool as 0 or 1
+          }
+        },
+        f.member);
   }
   os << "\n";
 }
@@ -41,6 +50,7 @@ namespace {
 
 /// FNV-1a of a file's bytes, as 16 hex digits ("unreadable" when it cannot be read).
 std::string FileContentHash(const fs::path& file) {
+  if (!NotARegularFile(file).empty()) return "unreadable";  // never opened: a pipe would block
   std::ifstream in(file, std::ios::binary);
   if (!in) return "unreadable";
   std::uint64_t h = 0xcbf29ce484222325ULL;

@@ -3,9 +3,12 @@
 #include <fstream>
 #include <string>
 
+#include "crowdsim/input_file.h"
+
 namespace crowdsim {
 
 SpecFileKind KindOfSpecFile(const std::filesystem::path& file) {
+  if (!NotARegularFile(file).empty()) return SpecFileKind::kUnknown;  // a pipe would block
   std::ifstream f(file);
   std::string line;
   for (bool first = true; std::getline(f, line); first = false) {

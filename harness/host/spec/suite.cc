@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <set>
@@ -74,10 +75,39 @@ const RowRules kSuiteRowRules{"a policy plugin name such as linear or orca, or a
                               "no world: give 'world' at the top of the suite or in this row",
                               /*sensors_required=*/false, /*humans_range=*/false};
 
+// Whether `s` is well-formed UTF-8 (RFC 3629: no overlong forms, surrogates or code points
+// past U+10FFFF).
+bool ValidUtf8(const std::string& s) {
+  for (size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const int n = c < 0x80           ? 0
+                  : (c >> 5) == 0x6  ? 1
+                  : (c >> 4) == 0xE  ? 2
+                  : (c >> 3) == 0x1E ? 3
+                                     : -1;
+    if (n < 0 || i + n >= s.size()) return false;
+    std::uint32_t cp = n == 0 ? c : c & (0x3F >> n);
+    for (int k = 1; k <= n; ++k) {
+      const auto t = static_cast<unsigned char>(s[i + k]);
+      if ((t >> 6) != 0x2) return false;
+      cp = (cp << 6) | (t & 0x3F);
+    }
+    static constexpr std::uint32_t kMin[] = {0, 0x80, 0x800, 0x10000};
+    if (cp < kMin[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return false;
+    i += n + 1;
+  }
+  return true;
+}
+
 /// Labels name rows in episodes.csv and tables, where control characters become spaces and could
 /// merge rows.
 void CheckLabel(Reader& r, const YAML::Node& n, const std::string& path) {
   const std::string& label = n.Scalar();
+  if (!ValidUtf8(label)) {
+    r.Error(n, path,
+            "is not valid UTF-8 text (the file's encoding?): labels name rows in CSV, SVG and "
+            "HTML files; save the suite as UTF-8");
+  }
   if (std::all_of(label.begin(), label.end(),
                   [](char c) { return std::isspace(static_cast<unsigned char>(c)); })) {
     r.Error(n, path, "must not be empty or blank");

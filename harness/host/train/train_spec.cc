@@ -184,12 +184,14 @@ std::string Canonical(const TrainSpec& s) {
   suite_internal::Canonical(s.teacher, os);
   const TrainingSettings& t = s.training;
   // In the order of kTrainingLineFields (train_spec.h), which names them in messages.
-  os << "\ntraining:" << t.il_episodes << "," << t.il_epochs << "," << t.il_learning_rate << ","
-     << t.rl_episodes << "," << t.rl_learning_rate << "," << t.momentum << "," << t.epsilon_start
-     << "," << t.epsilon_end << "," << t.epsilon_decay_episodes << "," << t.target_update_interval
-     << "," << t.capacity << "," << t.batch_size << "," << t.train_batches << ","
-     << t.validation_interval << "," << t.validation_episodes
-     << ",store_timeouts=" << ToString(t.store_timeouts);
+  // Numbers exactly (FormatParamValue), as parameters and sim settings are.
+  os << "\ntraining:" << t.il_episodes << "," << t.il_epochs << ","
+     << FormatParamValue(t.il_learning_rate) << "," << t.rl_episodes << ","
+     << FormatParamValue(t.rl_learning_rate) << "," << FormatParamValue(t.momentum) << ","
+     << FormatParamValue(t.epsilon_start) << "," << FormatParamValue(t.epsilon_end) << ","
+     << t.epsilon_decay_episodes << "," << t.target_update_interval << "," << t.capacity << ","
+     << t.batch_size << "," << t.train_batches << "," << t.validation_interval << ","
+     << t.validation_episodes << ",store_timeouts=" << ToString(t.store_timeouts);
   // Written only when not the default, so existing trainings' hashes stay valid.
   if (t.exploration != ExplorationRule::kUniform) os << ",exploration=" << ToString(t.exploration);
   os << "\n";

@@ -1,5 +1,7 @@
 #include "crowdsim/params.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -23,6 +25,22 @@ const char* ParamTypeName(ParamType t) {
   return "unknown";
 }
 
+namespace {
+
+// A number as six significant digits where they give it back exactly, else as 17, which
+// always do: two values that differ never print alike (config hashes tell them apart), and a
+// value written with up to six digits prints as it always has.
+std::string ExactNumber(double x) {
+  char six[32];
+  std::snprintf(six, sizeof(six), "%g", x);
+  if (std::strtod(six, nullptr) == x || x != x) return six;
+  char all[32];
+  std::snprintf(all, sizeof(all), "%.17g", x);
+  return all;
+}
+
+}  // namespace
+
 std::string FormatParamValue(const ParamValue& v) {
   std::ostringstream os;
   std::visit(
@@ -32,8 +50,10 @@ std::string FormatParamValue(const ParamValue& v) {
           os << (x ? "true" : "false");
         } else if constexpr (std::is_same_v<T, std::vector<double>>) {
           os << "[";
-          for (size_t i = 0; i < x.size(); ++i) os << (i ? ", " : "") << x[i];
+          for (size_t i = 0; i < x.size(); ++i) os << (i ? ", " : "") << ExactNumber(x[i]);
           os << "]";
+        } else if constexpr (std::is_same_v<T, double>) {
+          os << ExactNumber(x);
         } else {
           os << x;
         }

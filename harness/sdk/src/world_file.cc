@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "atomic_file.h"
+#include "crowdsim/input_file.h"
 #include "yaml_document.h"
 
 namespace crowdsim {
@@ -261,6 +263,7 @@ WorldFile ParseWorld(const std::string& file, const YAML::Node& root) {
 
 // Refuses a floor-plan image (PNG, PGM) given as a world file, saying how to import it.
 void RefuseImage(const std::filesystem::path& path) {
+  if (!NotARegularFile(path).empty()) return;  // the loader says what it is, unopened
   std::ifstream in(path, std::ios::binary);
   char head[8] = {};
   in.read(head, sizeof(head));
@@ -370,16 +373,11 @@ void Emit(const WorldFile& w, const std::string& indent, bool first_dash, std::o
 
 void WriteText(const std::string& text, const std::filesystem::path& path) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  const auto tmp = path.string() + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!f)
-      throw WorldFileError(path.string() +
-                           ": cannot write (check the folder exists and is writable)");
-    f << text;
-    if (!f) throw WorldFileError(path.string() + ": write failed");
+  try {
+    common::WriteFileAtomically(path, text);
+  } catch (const std::runtime_error& e) {
+    throw WorldFileError(std::string(e.what()) + " (check the folder exists and is writable)");
   }
-  std::filesystem::rename(tmp, path);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "crowdsim/input_file.h"
 #include "value_rl/zip_crc_check.h"
 
 namespace crowdsim::torchscript {
@@ -37,8 +38,8 @@ void CheckForward(const torch::jit::Module& module, const std::string& file) {
 }  // namespace
 
 torch::jit::Module LoadPolicyModule(const std::string& file) {
-  if (!fs::is_regular_file(file)) {
-    throw std::runtime_error(Where(file) + " does not exist; export the policy with " + kExport +
+  if (const std::string why = NotARegularFile(file); !why.empty()) {
+    throw std::runtime_error(Where(file) + " " + why + "; export the policy with " + kExport +
                              " and name that file in `weights`");
   }
   if (const auto damage = value_rl::FindZipDamage(file)) {

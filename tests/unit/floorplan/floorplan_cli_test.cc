@@ -98,5 +98,25 @@ TEST(FloorplanCliTest, OptionsOutOfRangeAndOutputsAreUsageErrorsThatWriteNothing
   EXPECT_TRUE(std::filesystem::exists(svg));
 }
 
+// The input image is never an output: --out or --mask-png naming it (or a link to it) is a
+// usage error and the image is left as it was; both outputs naming one file are refused too.
+TEST(FloorplanCliTest, TheInputImageIsNeverOverwritten) {
+  TempDir dir;
+  const auto image = testing::WriteRoomPlan(dir.path());
+  const std::string before = ReadText(image);
+  std::filesystem::create_symlink(image, dir.path() / "link.png");
+  const std::string plan = image.string() + " --resolution 0.1 --test-pairs 5 --train-pairs 5";
+  const std::string link = (dir.path() / "link.png").string();
+  EXPECT_EQ(Floorplan("import " + plan + " --out " + image.string()), 2);
+  EXPECT_EQ(Floorplan("import " + plan + " --out " + link), 2);
+  EXPECT_EQ(Floorplan("import " + plan + " --out " + (dir.path() / "w.yaml").string() +
+                      " --mask-png " + image.string()),
+            2);
+  EXPECT_EQ(ReadText(image), before);
+  const auto same = (dir.path() / "same.yaml").string();
+  EXPECT_EQ(Floorplan("import " + plan + " --out " + same + " --mask-png " + same), 2);
+  EXPECT_FALSE(std::filesystem::exists(same));
+}
+
 }  // namespace
 }  // namespace crowdsim::floorplan

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "crowdsim/input_file.h"
 #include "value_rl/zip_crc_check.h"
 
 namespace crowdsim::value_rl {
@@ -59,9 +60,9 @@ void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs:
 }
 
 void LoadWeightsFile(const WeightsMeta& expected, const fs::path& file, ValueNetwork* net) {
-  if (!fs::exists(file)) {
-    throw std::runtime_error("weights file '" + file.string() +
-                             "' does not exist (train one with `crowdsim-bench train`)");
+  if (const std::string why = NotARegularFile(file); !why.empty()) {
+    throw std::runtime_error("weights file '" + file.string() + "' " + why +
+                             (fs::exists(file) ? "" : " (train one with `crowdsim-bench train`)"));
   }
   if (const std::optional<ZipDamage> damage = FindZipDamage(file)) {
     throw std::runtime_error(

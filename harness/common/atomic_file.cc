@@ -1,0 +1,59 @@
+#include "atomic_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <system_error>
+
+namespace crowdsim::common {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Writes all of `text` to `fd`; 0 or the errno of the failed write.
+int WriteAll(int fd, const std::string& text) {
+  const char* data = text.data();
+  size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return n < 0 ? errno : ENOSPC;
+    data += n;
+    left -= static_cast<size_t>(n);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void WriteFileAtomically(const fs::path& path, const std::string& text) {
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  std::string name = (folder / ("." + path.filename().string() + ".XXXXXX")).string();
+  const int fd = ::mkstemp(name.data());
+  if (fd < 0) {
+    throw std::runtime_error("cannot create a file in " + folder.string() + " to write " +
+                             path.string() + ": " + std::strerror(errno));
+  }
+  // mkstemp makes it 0600; a result file is the user's as any other (0666 less the umask).
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
+  int error = WriteAll(fd, text);
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) {
+    ::unlink(name.c_str());
+    throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(error) +
+                             " (the previous file, if any, is unchanged)");
+  }
+  if (::rename(name.c_str(), path.c_str()) != 0) {
+    error = errno;
+    ::unlink(name.c_str());
+    throw std::runtime_error("cannot replace " + path.string() + ": " + std::strerror(error));
+  }
+}
+
+}  // namespace crowdsim::common
