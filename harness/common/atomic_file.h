@@ -6,9 +6,9 @@
 
 namespace crowdsim::common {
 
-/// Writes `text` to a new file of its own (mkstemp: created exclusively, in path's folder) and
-/// renames it over `path`: a reader sees the old file or the new one, and a symbolic link at
-/// `path` is replaced, its target untouched. Throws std::runtime_error naming path and reason.
+/// Writes `text` to a fresh mkstemp file in path's folder, then renames it over `path`: readers see
+/// old or new, a link at `path` is replaced, not followed. Throws std::runtime_error naming path
+/// and reason.
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace crowdsim::common

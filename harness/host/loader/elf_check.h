@@ -1,5 +1,5 @@
-// A plugin file checked before dlopen maps it: a file cut short (an interrupted copy) maps
-// pages past its end, and touching them kills the process with SIGBUS.
+// Checks a plugin before dlopen: a truncated file maps pages past its end, and touching them raises
+// SIGBUS.
 #pragma once
 
 #include <filesystem>
@@ -7,9 +7,9 @@
 
 namespace crowdsim {
 
-/// "" when `file` is a whole 64-bit ELF shared object of this machine's kind as far as its
-/// headers tell (program and section headers and every loaded segment within the file); else
-/// what is wrong, as a predicate: "is cut short: ...", "is not an ELF file ...".
+/// "" when `file`'s headers show a whole 64-bit ELF shared object of this machine, headers and
+/// loaded segments inside the file; else a predicate: "is cut short: ...", "is not an ELF file
+/// ...".
 std::string ElfFileProblem(const std::filesystem::path& file);
 
 }  // namespace crowdsim

@@ -90,10 +90,8 @@ Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const World
 
 namespace {
 
-/// Plays the episode once in a worker process (with the suite's episode_timeout_s): a plugin
-/// that crashes or hangs there ends the worker, and this throws saying so, where it took the
-/// caller down (render died of SIGSEGV, or hung, on an episode the run had recorded as
-/// policy_crash / policy_timeout). Nothing is kept from it: the replay is deterministic.
+/// Plays the episode once in a worker (with episode_timeout_s), so a plugin crash or hang throws
+/// here instead of ending the caller. The replay is deterministic: nothing is kept.
 void ProbeInWorker(const Suite& suite, size_t row_index, int episode, PluginRegistry& registry) {
   std::optional<WorkerLoss> lost;
   WorkerPoolOptions options;

@@ -76,8 +76,7 @@ std::string PolicyErrorNote::First() const {
 
 namespace {
 
-/// Which (row, episode) pairs a run covers: the first `episodes` of every row, or the shard's
-/// slice of them (row-major position modulo the shard count).
+/// The (row, episode) pairs a run covers: each row's first `episodes`, or the shard's slice.
 struct RunScope {
   int episodes = 0;
   int shard_index = 1;
@@ -109,9 +108,8 @@ fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
     throw RunError("cannot create the output folder '" + dir.string() + "': " + ec.message() +
                    ". Choose another with --out.");
   }
-  // A folder that takes no file (on a read-only disk, a system folder such as /sys) failed
-  // later, at the first table written, naming a temporary file and not --out. A file of its
-  // own is the test: access() lets root pass where the disk or the file system refuses.
+  // A file of its own tests the folder before any table (access() lets root pass where the disk
+  // refuses), so the error names --out.
   const fs::path probe = dir / ".crowdsim-bench.write-test";
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0) {
@@ -123,9 +121,8 @@ fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
   return dir;
 }
 
-/// Preflights every row (SuiteRow::Preflight), so a bad parameter stops the run before any
-/// episode with the plugin's own message, every row at fault named; records the worlds'
-/// identities.
+/// Preflights every row, so bad parameters stop the run before any episode, naming each row at
+/// fault; records the worlds' identities.
 std::vector<SuiteRow> PreflightRows(const Suite& suite, PluginRegistry& registry, RunFacts* facts,
                                     IsolationMode mode) {
   std::vector<SuiteRow> rows;
@@ -195,8 +192,7 @@ std::vector<PolicyErrorNote> PolicyErrorNotes(const Suite& suite, const EpisodeL
   return notes;
 }
 
-/// Where finished episodes go: appended to episodes.csv (EpisodeAppender: written within
-/// `max_delay`, at once when zero), counted on the progress line and added to `done`. Not
+/// Finished episodes go to episodes.csv (within `max_delay`), the progress line and `done`. Not
 /// thread-safe.
 class EpisodeSink {
  public:
@@ -204,8 +200,8 @@ class EpisodeSink {
               EpisodeLines* done)
       : path_(episodes_csv), out_(episodes_csv, max_delay), progress_(progress), done_(done) {}
 
-  /// False when the append failed (a full disk or a lost mount: the run stops, naming the
-  /// cause in *why; the lines written so far stay, a cut last line is skipped on resume).
+  /// False when the append fails (full disk, lost mount), the cause in *why; written lines stay,
+  /// and resume skips a cut last line.
   bool Add(EpisodeLine line, std::string* why) {
     if (!out_.Append(FormatEpisodeLine(line), why)) return false;
     progress_.Episode(line.outcome.status == EpisodeStatus::kSuccess);
@@ -213,8 +209,8 @@ class EpisodeSink {
     return true;
   }
 
-  /// Writes the pending lines and ends the progress line; throws RunError with `failure`
-  /// (or the failed write) when the run stopped early.
+  /// Writes pending lines, ends the progress line; throws RunError with `failure` (or the failed
+  /// write) if stopped early.
   void Finish(std::string failure) {
     std::string why;
     if (!out_.Finish(&why) && failure.empty()) failure = why;
@@ -235,8 +231,8 @@ class EpisodeSink {
 // The failure of a run whose RunOptions::stop_requested said stop.
 constexpr const char* kStopped = "stopped on request";
 
-/// Runs the tasks on `jobs` threads, each with its own plugin instances. Throws RunError
-/// naming the row and episode of the first failure, or the reason an append failed.
+/// Runs the tasks on `jobs` threads with their own plugin instances. Throws RunError naming the
+/// first failing episode or append.
 void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& registry,
                        const std::vector<Task>& tasks, int jobs,
                        const std::function<bool()>& stop_requested, EpisodeSink& sink) {
@@ -295,10 +291,10 @@ void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& regist
   sink.Finish(failure);
 }
 
-/// Runs the tasks in `jobs` worker processes (worker_process.h): an episode whose worker dies
-/// or runs past the suite's episode_timeout_s is recorded as policy_crash / policy_timeout,
-/// named on stderr, and the run goes on. Throws RunError as RunTasksInThreads does, and when a
-/// worker was stopped from outside (SIGINT, SIGTERM, SIGHUP).
+/// Runs the tasks in `jobs` worker processes: an episode whose worker dies or exceeds
+/// episode_timeout_s is policy_crash / policy_timeout, named on stderr, and the run goes on.
+/// Throws as RunTasksInThreads, and when a worker is stopped from outside (SIGINT, SIGTERM,
+/// SIGHUP).
 void RunTasksInProcesses(const Suite& suite, const std::vector<SuiteRow>& rows,
                          PluginRegistry& registry, const std::vector<Task>& tasks, int jobs,
                          const std::function<bool()>& stop_requested, EpisodeSink& sink) {
@@ -355,8 +351,8 @@ void RunTasksInProcesses(const Suite& suite, const std::vector<SuiteRow>& rows,
   sink.Finish(failure);
 }
 
-/// Whether this run's episodes run in worker processes: the suite's `isolation` (or the run's
-/// override); auto = when a timeout is set or a plugin is not one of the harness's own.
+/// Whether episodes run in worker processes: `isolation` (suite's or the run's override); auto
+/// means a timeout or a foreign plugin.
 bool Isolated(const Suite& suite, const RunOptions& options) {
   const IsolationMode mode = options.isolation.value_or(suite.isolation);
   if (mode == IsolationMode::kOff && suite.episode_timeout_s > 0) {
@@ -371,8 +367,8 @@ bool Isolated(const Suite& suite, const RunOptions& options) {
                      [&](const RowSpec& row) { return RowNeedsIsolation(suite, row, mode); });
 }
 
-/// Result files beside no episodes.csv are no run's episodes to resume, and a run would
-/// replace them: refused unless --fresh (as merge refuses a folder it did not write).
+/// Result files without episodes.csv are no resumable run, and a run would replace them: refused
+/// unless --fresh.
 void RefuseForeignResults(const fs::path& dir) {
   std::error_code ec;
   if (fs::exists(fs::symlink_status(dir / "episodes.csv", ec))) return;
@@ -387,8 +383,8 @@ void RefuseForeignResults(const fs::path& dir) {
                    "them; give --fresh to replace them, or choose another --out");
 }
 
-/// A shard's files: its episodes in (row, episode) order and a manifest naming the shard; the
-/// tables come from `merge`.
+/// A shard's files: its episodes in (row, episode) order and its manifest; `merge` writes the
+/// tables.
 void WriteShardFiles(const Suite& suite, const RunScope& scope, const EpisodeLines& done,
                      const RunFacts& facts, RunSummary* summary) {
   std::vector<const EpisodeLine*> lines;
@@ -404,9 +400,8 @@ void WriteShardFiles(const Suite& suite, const RunScope& scope, const EpisodeLin
                             " episodes; join the shards with `crowdsim-bench merge`\n";
 }
 
-/// A whole run's files: episodes in (row, episode) order, so any job count gives the same file
-/// (stored episodes beyond the requested count kept for a later, longer run), the tables and
-/// the manifest.
+/// A run's files: episodes in (row, episode) order for any job count (extra stored episodes kept),
+/// tables and manifest.
 void WriteRunFiles(const Suite& suite, const RunScope& scope, const EpisodeLines& done,
                    const RunFacts& facts, RunSummary* summary) {
   std::vector<const EpisodeLine*> lines;
@@ -474,9 +469,8 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   for (const auto& [key, line] : done) stored.push_back(&line);
   WriteFileAtomically(summary.out_dir / "episodes.csv", EpisodesCsvText(stored));
   WriteFileAtomically(summary.out_dir / "manifest.json", FormatManifestJson(suite, {}, facts));
-  // Until this run finishes, no table: an earlier run's (another configuration, or fewer
-  // episodes) would be read as this folder's result if the run is cut short. A shard never
-  // writes one.
+  // No table until the run finishes: an older one would pass for this run's result if it is cut
+  // short. Shards write none.
   std::error_code ec;
   fs::remove(summary.out_dir / "table.md", ec);
   fs::remove(summary.out_dir / "table.csv", ec);
@@ -486,9 +480,8 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   Progress progress(scope.shards > 1 ? suite.name + " shard " + facts.shard : suite.name,
                     static_cast<int>(tasks.size()) + summary.episodes_resumed,
                     summary.episodes_resumed, options.progress);
-  // Threads: lines written within 200 ms (a crash loses at most that). Worker processes
-  // already pay a pipe round trip per episode: each line written at once, and no thread of
-  // ours alive when the workers are forked.
+  // Threads write lines within 200 ms (a crash loses at most that). Workers already pay a pipe
+  // round trip per episode, and no thread of ours may live across fork: write at once.
   EpisodeSink sink(
       summary.out_dir / "episodes.csv",
       facts.isolated ? std::chrono::milliseconds(0) : EpisodeAppender::kThreadedRunDelay, progress,

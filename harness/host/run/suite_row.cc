@@ -49,16 +49,16 @@ void SuiteRow::Preflight(PluginRegistry& registry, int episodes, IsolationMode m
   CheckFirstStep(*instance, episode0, mode);
 }
 
-// The first scenario of each other frozen layout among the first `episodes` (episode 0's is
-// checked already): a crowd may fit one room of a world set and not a smaller one. Only for
-// the harness's own worlds: one of yours that fails in a layout costs its episodes, isolated.
+// The first scenario of each other frozen layout among the first `episodes`: a crowd may fit one
+// room and not a smaller. Harness worlds only: a foreign one that fails costs only its episodes,
+// isolated.
 void SuiteRow::CheckEveryLayout(int episodes, std::set<std::string>* checked) const {
   const RowSpec& row = spec();
   if (!PluginRegistry::IsHarnessPlugin(*row.world.loaded)) return;
   const int layouts = std::min(episodes, world_->LayoutCount());
   if (layouts < 2) return;
-  // A world is known by its canonical text (parameters and file contents), not Identity(),
-  // which names a world set by its file name alone.
+  // A world is keyed by its canonical text, not Identity(), which names a world set by file name
+  // alone.
   std::ostringstream crowd;
   suite_internal::Canonical(row.world, crowd);
   crowd << " " << row.humans.count << " " << static_cast<int>(row.humans.goal_mode);
@@ -74,9 +74,8 @@ void SuiteRow::CheckEveryLayout(int episodes, std::set<std::string>* checked) co
   checked->insert(crowd.str());
 }
 
-// Episode 0's first step, as a run plays it: what fails on every step (a lidar that does not
-// fit a model) fails before the run. Only in rows of the harness's own plugins that need no
-// isolation: a crash or hang of another plugin would end this process.
+// Episode 0's first step, so what fails every step fails before the run. Only for rows of the
+// harness's own plugins: another's crash would end this process.
 void SuiteRow::CheckFirstStep(RowInstance& instance, const Scenario& episode0,
                               IsolationMode mode) const {
   if (!AllHarnessPlugins(spec()) || RowNeedsIsolation(suite_, spec(), mode)) return;

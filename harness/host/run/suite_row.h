@@ -1,5 +1,5 @@
-// One row of a suite as a run owns it: its name in messages, its world, its preflight and the
-// episodes it plays. The runner keeps one per row and asks it, not the suite.
+// One suite row as a run owns it: its name in messages, world, preflight and episodes. The runner
+// asks it, not the suite.
 #pragma once
 
 #include <memory>
@@ -23,10 +23,9 @@ class SuiteRow {
   /// "row 'orca', episode 3": how run errors name an episode.
   std::string Where(int episode) const;
 
-  /// Builds the row's world and plugins once, checks the robot's sensor needs and the
-  /// scenarios of episode 0 and of each frozen layout among the first `episodes`, and plays
-  /// episode 0's first step where `mode` lets the harness step it in this process. `checked`
-  /// holds the (world, crowd) pairs earlier rows passed. Throws RunError naming the row.
+  /// Builds the row's world and plugins once, checks sensor needs and the scenarios of episode 0
+  /// and each frozen layout among the first `episodes`, and plays episode 0's first step if `mode`
+  /// allows it in-process. `checked`: (world, crowd) pairs passed. Throws RunError naming the row.
   void Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
                  std::set<std::string>* checked);
   /// The world Preflight built; null before.
@@ -34,7 +33,7 @@ class SuiteRow {
 
   /// Episode `episode` as the CLI runs it, with its line for episodes.csv.
   EpisodeLine Run(RowInstance& instance, int episode) const;
-  /// The line of an episode whose worker died or was killed: no result, its own status.
+  /// The line of an episode whose worker dies or is killed: no result, its own status.
   EpisodeLine Lost(int episode, const WorkerLoss& loss) const;
 
  private:

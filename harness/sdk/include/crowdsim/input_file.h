@@ -1,5 +1,5 @@
-// What a file a user names is, found without opening it: opening a named pipe blocks until a
-// writer comes, so every reader asks this first.
+// What a user-named file is, without opening it: opening a named pipe blocks until a writer comes,
+// so every reader asks this first.
 #pragma once
 
 #include <filesystem>
@@ -9,9 +9,9 @@
 
 namespace crowdsim {
 
-/// "" when `path` is a regular file (links followed); else why it is none, as a predicate for
-/// a message "PATH " + reason: "does not exist", "is a folder", "is a named pipe (FIFO)", "is a
-/// device", "is a socket". Never opens the file.
+/// "" when `path` is a regular file (links followed); else a predicate for "PATH " + reason: "does
+/// not exist", "is a folder", "is a named pipe (FIFO)", "is a device", "is a socket". Never opens
+/// the file.
 CROWDSIM_SDK_API std::string NotARegularFile(const std::filesystem::path& path);
 
 }  // namespace crowdsim

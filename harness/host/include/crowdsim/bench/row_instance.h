@@ -1,5 +1,5 @@
-// The plugin objects of one row spec, made for one thread, and the exact scenario of any
-// (row, episode): shared by suite runs, trainings, replays (rendering) and tools.
+// One row's plugin objects for one thread, and the exact scenario of any (row, episode); shared by
+// runs, trainings, replays and tools.
 #pragma once
 
 #include <memory>
@@ -22,16 +22,13 @@ class RowInstance {
   const EpisodeAgents& Agents(size_t humans);
   Policy& robot() { return *robot_; }
 
-  /// The first sensor the robot policy needs (Policy::Needs) that the row does not configure,
-  /// as "policy 'cadrl' needs the sensor 'lidar2d'"; "" when every need is met. Suite runs and
-  /// trainings both check it before their first episode.
+  /// The first sensor the robot policy needs (Policy::Needs) that the row lacks, as "policy 'cadrl'
+  /// needs the sensor 'lidar2d'"; "" if none.
   std::string UnmetSensorNeed() const;
 
-  /// What the humans' policy needs that only the robot is given (PolicyNeeds::sensors and
-  /// ::lookahead: a human sees the others through Observation::agents), as "the humans' policy
-  /// 'x' needs the sensor 'person', which only the robot is given"; "" when it needs neither,
-  /// when the row has no humans (the policy never runs), or before Agents made a human. Suite
-  /// runs, trainings and the Python env check it before their first episode, and say the fix,
+  /// What the humans' policy needs that only the robot gets (sensors, lookahead; humans see others
+  /// via Observation::agents), as "the humans' policy 'x' needs the sensor 'person', which only the
+  /// robot is given"; "" when none, the row has no humans, or before Agents made one. The fix:
   /// kPlainHumansPolicy.
   std::string HumansNeedRobotOnly() const;
 
@@ -48,14 +45,13 @@ class RowInstance {
 inline constexpr char kPlainHumansPolicy[] =
     "give the humans a policy that needs neither, e.g. humans: {policy: orca}";
 
-/// The request a suite run makes for episode `episode` of `row` (seed from the suite seed,
-/// the world's identity and the episode index).
+/// A suite run's request for episode `episode` of `row`, seeded from suite seed, world identity and
+/// episode index.
 ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const WorldSource& world,
                                    int episode);
 
-/// The world's scenario for that request, checked to hold the humans asked for
-/// (CheckHumanCount); `request` (optional) receives the request. Throws what the world throws,
-/// or std::invalid_argument.
+/// The world's scenario for that request, checked for the humans asked (CheckHumanCount); `request`
+/// optionally receives it. Throws the world's errors or std::invalid_argument.
 Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const WorldSource& world,
                              int episode, ScenarioRequest* request = nullptr);
 
@@ -64,17 +60,13 @@ Scenario MakeEpisodeScenario(const Suite& suite, const RowSpec& row, const World
 std::vector<std::pair<std::string, const PluginUse*>> RowPlugins(const RowSpec& row);
 /// Whether every plugin of the row is the harness's own (PluginRegistry::IsHarnessPlugin).
 bool AllHarnessPlugins(const RowSpec& row);
-/// Whether the row's episodes must run in worker processes under isolation `mode` (the suite's,
-/// or a run's override): on; or auto with an episode_timeout_s or a plugin that is not the
-/// harness's own. What is not, the harness may step in its own process (validate's first step,
-/// a replay for render).
+/// Whether the row's episodes need worker processes under `mode`: on, or auto with a timeout or a
+/// plugin not the harness's own.
 bool RowNeedsIsolation(const Suite& suite, const RowSpec& row, IsolationMode mode);
 
-/// Re-simulates one episode of a suite exactly as `crowdsim-bench run` does, optionally
-/// recording the trajectory. Throws PluginError or std::out_of_range for a bad row index. A row
-/// that `run` would isolate (a plugin not the harness's own, a timeout, isolation: on) is first
-/// played in a worker process (`probe`): a plugin that crashes or hangs there is a
-/// std::runtime_error naming the episode, not the end of the caller.
+/// Re-simulates one suite episode exactly as `run` does, optionally recording the trajectory.
+/// Throws PluginError, or std::out_of_range for a bad row. A row `run` would isolate is first
+/// played in a worker (`probe`): a crash or hang there is a std::runtime_error naming the episode.
 struct Replay {
   Scenario scenario;
   EpisodeResult result;

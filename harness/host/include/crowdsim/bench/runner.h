@@ -1,6 +1,5 @@
-// Runs a suite: every (row, episode) in parallel worker threads with their own plugin
-// instances, or in worker processes that a crashing or hanging plugin cannot take down with the
-// run (isolation), results written as episodes finish, resumable.
+// Runs a suite's (row, episode) pairs in worker threads, or in worker processes that a crashing
+// plugin cannot take down; results written as episodes finish, resumable.
 #pragma once
 
 #include <filesystem>
@@ -20,16 +19,15 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A run or merge refused before it did anything: its inputs do not fit together (a folder of
-/// another configuration or shard, shards that are not one run). The CLI exits 2 for it, as for
-/// a usage or validation error; 1 stays for what failed while running.
+/// A run or merge refused before acting: its inputs do not fit together (another configuration's
+/// folder, shards of different runs). The CLI exits 2 for it, 1 for failures while running.
 class RunRefused : public RunError {
  public:
   using RunError::RunError;
 };
 
-/// Rows that cannot run, found before any episode (the preflight of every row): one message per
-/// row at fault, each naming its row; what() joins them with newlines.
+/// Rows that cannot run, found by preflight: one message per row, each naming it; what() joins them
+/// with newlines.
 class RowsRefused : public RunRefused {
  public:
   explicit RowsRefused(std::vector<std::string> errors);
@@ -39,39 +37,37 @@ class RowsRefused : public RunRefused {
   std::vector<std::string> errors_;
 };
 
-/// The ranges a run takes for its worker count and its episode count (the CLI's --jobs and
-/// --episodes, the Python package's jobs= and episodes=).
+/// The ranges of a run's worker count and episode count (--jobs/--episodes, jobs=/episodes=).
 inline constexpr int kMaxJobs = 1024;
 inline constexpr int kMaxEpisodes = 10'000'000;
 
 struct RunOptions {
   std::filesystem::path out_dir;  ///< default: DefaultRunDir(suite)
   int jobs = 1;                   ///< worker threads, or worker processes when isolated
-  /// Overrides the suite's `isolation` when set (e.g. off for a policy that lives in this
-  /// process's Python interpreter, which a forked worker must not run).
+  /// Overrides the suite's `isolation` when set (off for a policy in this process's Python, which a
+  /// forked worker must not run).
   std::optional<IsolationMode> isolation;
   int episodes = -1;     ///< overrides the suite's count when > 0
   bool fresh = false;    ///< discard stored episodes instead of resuming
   bool progress = true;  ///< progress line on stderr
-  /// Shard `shard_index` (1-based) of `shard_count`: only the (row, episode) pairs whose
-  /// position in row-major order is shard_index - 1 modulo shard_count; no table is written
-  /// (`merge` joins the shards). 1 of 1 is the whole suite.
+  /// Shard `shard_index` (1-based) of `shard_count`: the pairs whose row-major position is
+  /// shard_index - 1 modulo shard_count; writes no table (`merge` joins shards). 1 of 1 is the
+  /// whole suite.
   int shard_index = 1;
   int shard_count = 1;
-  /// The caller already holds `out_dir` (its lock and kind checked), as merge does around
-  /// the run that writes the joined tables: the run does not claim it again.
+  /// The caller already holds `out_dir` (lock and kind checked, as merge does): the run does not
+  /// claim it again.
   bool out_dir_claimed = false;
   /// The run joins shards' stored episodes (merge): its manifest says `"merged": true`.
   bool merge = false;
-  /// Asked between episodes (from any worker thread); true stops the run as an AbortRun
-  /// would: the finished episodes are kept, RunSuite throws RunError. The Python package
-  /// checks for Ctrl-C here, which reaches Python code only between calls into C++.
+  /// Asked between episodes, from any worker thread; true stops the run as AbortRun does, keeping
+  /// finished episodes; RunSuite throws RunError. Python checks Ctrl-C here, as it runs only
+  /// between calls into C++.
   std::function<bool()> stop_requested;
 };
 
-/// The shard (1-based, of `shards`) that runs episode `episode` of row `row` when every row runs
-/// `episodes`: its position in row-major order modulo the shard count (RunOptions::shard_index).
-/// `shards` >= 1.
+/// The 1-based shard that runs (`row`, `episode`) when each row runs `episodes`: row-major position
+/// modulo `shards` (>= 1).
 int ShardOfEpisode(std::size_t row, int episode, int episodes, int shards);
 
 /// A row's episodes that ended in policy_error (run or resumed) and the first one's message.
@@ -93,45 +89,37 @@ struct RunSummary {
   int episodes_run = 0;      ///< this invocation
   int episodes_resumed = 0;  ///< found on disk
   std::filesystem::path out_dir;
-  /// Per row whose episodes (run or resumed) ended in policy_error: how many and the first
-  /// one's message, for the CLI and the Python package to say; an error is otherwise only a
-  /// column of the table.
+  /// Per row with policy_error episodes (run or resumed): their count and the first message, which
+  /// the table alone does not show.
   std::vector<PolicyErrorNote> policy_errors;
 };
 
-/// Joins the output folders of the shards of one suite run into `out_dir` and writes the tables
-/// as a single run would: the shards must hold the same configuration (config hash, episode
-/// count) and together every (row, episode) exactly once, and have been made by one commit
-/// (their manifests' git_commit) unless `allow_mixed_commits`. `suite_file` empty: the
-/// manifests'. The merged manifest records the shards' commit (shards_git_commit, "mixed" if
-/// several) and each shard's (shard_commits). Throws RunError naming the folders at fault.
+/// Joins one suite run's shard folders into `out_dir` and writes the tables as one run would. The
+/// shards must share configuration (config hash, episode count), cover every (row, episode) once,
+/// and share git_commit unless `allow_mixed_commits`. `suite_file` empty: the manifests'. The
+/// manifest records shards_git_commit ("mixed" if several) and shard_commits. Throws RunError
+/// naming the folders at fault.
 RunSummary MergeShards(const std::vector<std::filesystem::path>& shard_dirs,
                        const std::filesystem::path& out_dir,
                        const std::filesystem::path& suite_file, PluginRegistry& registry,
                        bool allow_mixed_commits = false);
 
-/// Where a run writes without an explicit folder: runs/<suite name>/ under the working folder
-/// (ignored by git). The committed reference outputs under results/ are only ever written
-/// through an explicit --out, so trying a suite in the checkout never changes them.
+/// A run's folder without --out: runs/<suite name>/ under the working folder (git-ignored), so
+/// results/ changes only through an explicit --out.
 std::filesystem::path DefaultRunDir(const Suite& suite);
 
-/// What `validate` checks: what `run` does before any episode (builds every row's plugins once:
-/// world and its files, sensors, robot and human policies, their weights; checks that each
-/// robot has the sensors it needs; makes the scenario of the first episode of each frozen
-/// layout of a world of the harness's own, else of episode 0), then plays the first step of
-/// episode 0 of each row whose plugins are all the harness's own (in this process; `run`
-/// isolates a row with yours, whose crash or hang would end validate). Returns one
-/// message per failing row (naming the row and with the plugin's own message); empty when
-/// every row can run.
+/// What `validate` checks: run's preflight (every row's plugins and files built once, robot sensor
+/// needs, the first scenario of each frozen layout of the harness's worlds, else episode 0), then
+/// episode 0's first step in-process for rows of only the harness's plugins (another's crash would
+/// end validate). Returns one message per failing row, naming it; empty when all can run.
 std::vector<std::string> PreflightSuite(const Suite& suite, PluginRegistry& registry);
 
 /// Runs the suite and writes DIR/{episodes.csv, table.md, table.csv, manifest.json}.
 /// Throws RunError for problems that stop the whole run (output folder, mismatched results).
 RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptions& options);
 
-/// Writes the finished episodes a running RunSuite still holds in memory (at most the last
-/// 200 ms of them) to its episodes.csv; async-signal-safe, for a handler (Ctrl-C) that ends
-/// the process right after.
+/// Writes a running RunSuite's pending episodes (at most the last 200 ms) to episodes.csv;
+/// async-signal-safe, for a Ctrl-C handler that then exits.
 void FlushPendingEpisodesForSignal() noexcept;
 
 }  // namespace crowdsim
