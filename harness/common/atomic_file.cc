@@ -12,23 +12,16 @@
 namespace crowdsim::common {
 namespace fs = std::filesystem;
 
-namespace {
-
-// Writes all of `text` to `fd`; 0 or the errno of the failed write.
-int WriteAll(int fd, const std::string& text) {
-  const char* data = text.data();
-  size_t left = text.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, data, left);
+int WriteAll(int fd, const char* data, size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return n < 0 ? errno : ENOSPC;
     data += n;
-    left -= static_cast<size_t>(n);
+    size -= static_cast<size_t>(n);
   }
   return 0;
 }
-
-}  // namespace
 
 void WriteFileAtomically(const fs::path& path, const std::string& text) {
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
@@ -42,7 +35,7 @@ void WriteFileAtomically(const fs::path& path, const std::string& text) {
   const mode_t mask = ::umask(0);
   ::umask(mask);
   ::fchmod(fd, 0666 & ~mask);
-  int error = WriteAll(fd, text);
+  int error = WriteAll(fd, text.data(), text.size());
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error != 0) {
     ::unlink(name.c_str());

@@ -1,6 +1,7 @@
 // Writing a file whole or not at all, never through a link a third party planted.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -10,5 +11,9 @@ namespace crowdsim::common {
 /// old or new, a link at `path` is replaced, not followed. Throws std::runtime_error naming path
 /// and reason.
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
+
+/// write(2) of all `size` bytes, retrying on EINTR: 0, or the failure's errno (ENOSPC when no
+/// byte goes). Async-signal-safe.
+int WriteAll(int fd, const char* data, size_t size);
 
 }  // namespace crowdsim::common

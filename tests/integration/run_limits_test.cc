@@ -17,16 +17,10 @@
 namespace crowdsim {
 namespace {
 
-constexpr const char* kSuite = R"(name: limits
-episodes: 6
-seed: 3
-world: {source: random_rect, obstacles: 1, split: test}
-humans: {count: 3, policy: orca}
-robot:
-  sensors: [person]
-rows:
-  - {label: linear, policy: linear}
-)";
+// One row of straight-line robots among three ORCA people.
+constexpr const char* kSuite =
+    "{name: limits, episodes: 6, seed: 3, world: {source: random_rect, obstacles: 1}, "
+    "humans: {count: 3, policy: orca}, rows: [{label: linear, policy: linear}]}\n";
 
 // The process's virtual size in bytes (/proc/self/statm's first field is in pages).
 long VirtualBytes() {

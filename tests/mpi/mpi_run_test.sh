@@ -34,9 +34,10 @@ for bad in "--suite suites/quick.yaml --suite suites/quick.yaml" "--suite suites
   [[ $status -ne 0 ]] || { cat "$work/merge_bad.log"; fail "mpirun -n 2 merge $bad succeeded"; }
   grep -q "^error: " "$work/merge_bad.log" || { cat "$work/merge_bad.log"; fail "merge $bad said nothing"; }
 done
-# A rank whose run fails (here its episodes.csv cannot be written) must not leave the others
-# waiting in a collective call: the launch ends with exit 1 and says so.
-mkdir -p "$work/broken/ranks/2of2/episodes.csv.tmp"
+# A rank whose run fails (here its manifest.json cannot be written: a folder holds its name)
+# must not leave the others waiting in a collective call: the launch ends with exit 1 and says so.
+mkdir -p "$work/broken/ranks/2of2/manifest.json/held"
+head -n 1 results/quick/episodes.csv > "$work/broken/ranks/2of2/episodes.csv"
 status=0
 timeout 120 "$mpiexec" "${mpi_flags[@]}" -n 2 "$bin" run suites/quick.yaml --episodes 4 --quiet \
   --out "$work/broken" > "$work/broken.log" 2>&1 || status=$?

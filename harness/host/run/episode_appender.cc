@@ -7,6 +7,7 @@
 #include <cstring>
 #include <system_error>
 
+#include "atomic_file.h"
 #include "crowdsim/bench/runner.h"
 
 namespace crowdsim {
@@ -17,18 +18,7 @@ constexpr size_t kCapacity = size_t{1} << 16;
 /// The appender open in this process (a run has one at a time), for the signal handler.
 std::atomic<EpisodeAppender*> g_open{nullptr};
 
-/// write(2) of all `size` bytes, retrying on EINTR; 0 or the failure's errno (ENOSPC for no
-/// progress). Async-signal-safe.
-int WriteAll(int fd, const char* data, size_t size) {
-  while (size > 0) {
-    const ssize_t n = ::write(fd, data, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return n < 0 ? errno : ENOSPC;
-    data += n;
-    size -= static_cast<size_t>(n);
-  }
-  return 0;
-}
+using common::WriteAll;
 
 }  // namespace
 
