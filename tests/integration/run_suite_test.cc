@@ -11,6 +11,7 @@
 #include <regex>
 #include <sstream>
 
+#include "crowdsim/bench/csv.h"
 #include "crowdsim/bench/results.h"
 #include "crowdsim/bench/runner.h"
 #include "shell.h"
@@ -145,6 +146,51 @@ TEST_F(RunSuiteTest, ResumeRerunsDamagedLinesAndRefusesAnUnreadableEpisodesCsv) 
     const std::string msg = e.what();
     EXPECT_NE(msg.find(csv.string() + ":1: the header is 'garbage'"), std::string::npos) << msg;
     EXPECT_NE(msg.find("--fresh"), std::string::npos) << msg;
+  }
+}
+
+// Numbers no run writes (a NaN time, negative steps, an infinite path length) mark a line as
+// damaged, and two different lines for one episode are both set aside: each such episode runs
+// again, so the table equals a clean run's.
+TEST_F(RunSuiteTest, ResumeSetsAsideImpossibleNumbersAndConflictingCopies) {
+  const Suite s = LoadOrDie(kSuite);
+  Run(s, "full", 1);
+  Run(s, "edited", 1);
+  const auto csv = dir_.path() / "edited" / "episodes.csv";
+  std::vector<std::string> lines;
+  {
+    std::ifstream in(csv);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  ASSERT_EQ(lines.size(), 25u);
+  auto cells = [](const std::string& line) { return SplitCsvLine(line); };
+  auto join = [](std::vector<std::string> v) {
+    std::string out;
+    for (size_t k = 0; k < v.size(); ++k) out += (k ? "," : "") + CsvField(v[k]);
+    return out;
+  };
+  std::vector<std::string> nan_time = cells(lines[1]), negative_steps = cells(lines[2]),
+                           inf_path = cells(lines[3]), other = cells(lines[4]);
+  nan_time[5] = "nan";
+  negative_steps[6] = "-5";
+  inf_path[8] = "-inf";
+  other[5] = other[5] == "1.00" ? "2.00" : "1.00";  // episode 3's line, with another time
+  lines[1] = join(nan_time);
+  lines[2] = join(negative_steps);
+  lines[3] = join(inf_path);
+  lines.push_back(join(other));
+  lines.push_back(lines[5]);  // an identical second copy of episode 4
+  {
+    std::ofstream out(csv);
+    for (const std::string& line : lines) out << line << "\n";
+  }
+  const RunSummary r = Run(s, "edited", 1);
+  EXPECT_EQ(r.episodes_run, 4);  // episodes 0, 1, 2 (damaged) and 3 (two results)
+  EXPECT_EQ(WithoutTimingColumns(ReadText(dir_.path() / "full" / "episodes.csv")),
+            WithoutTimingColumns(ReadText(csv)));
+  const std::string dropped = ReadText(dir_.path() / "edited" / "episodes.dropped.csv");
+  for (const std::string& line : {lines[1], lines[2], lines[3], lines[4], lines[25]}) {
+    EXPECT_NE(dropped.find(line), std::string::npos) << line << "\n" << dropped;
   }
 }
 

@@ -193,7 +193,7 @@ TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
   ASSERT_EQ(read.lines.size(), 2u);
   EXPECT_EQ(read.lines[1].episode, 1);
   EXPECT_EQ(read.damaged, 2);
-  EXPECT_EQ(read.first_damage, file.string() + ":3: its episode 'two' is not a whole number");
+  EXPECT_EQ(read.first_damage, file.string() + ":3: its episode 'two' is not a whole number >= 0");
   EXPECT_TRUE(read.cut_last_line);
   EXPECT_EQ(ReadEpisodesCsv(file).size(), 2u);
 
@@ -204,7 +204,7 @@ TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
   const EpisodesCsvRead p = ReadEpisodesCsvChecked(partial);
   EXPECT_EQ(p.lines.size(), 1u);
   EXPECT_EQ(p.damaged, 2);
-  EXPECT_EQ(p.first_damage, partial.string() + ":3: its episode '4x' is not a whole number");
+  EXPECT_EQ(p.first_damage, partial.string() + ":3: its episode '4x' is not a whole number >= 0");
 }
 
 TEST(EpisodesCsv, AFileWithoutItsHeaderOrAReadableLineIsAnErrorNamingFileLineAndFix) {

@@ -299,11 +299,12 @@ std::string ParseCell(const EpisodeColumn& c, const std::string& text, EpisodeLi
             v = kInfinity;
             return "";
           }
-          return ParseReal(text, &v) ? "" : "a number";
-        } else if constexpr (std::is_unsigned_v<T>) {
-          return ParseWhole(text, &v) ? "" : "a whole number >= 0";
+          // The writer leaves a non-finite value empty: "nan" or "inf" is no line of ours.
+          if (!ParseReal(text, &v) || !std::isfinite(v)) return "a finite number";
+          return "";
         } else {
-          return ParseWhole(text, &v) ? "" : "a whole number";
+          // Counts, indices and seeds: every whole number an episode writes is >= 0.
+          return ParseWhole(text, &v) && v >= 0 ? "" : "a whole number >= 0";
         }
       },
       c.field);

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "crowdsim/bench/row_instance.h"
@@ -172,6 +173,10 @@ EpisodeLines StoredEpisodes(const Suite& suite,
   std::set<std::string> removed, changed;
   int foreign = 0;
   std::string first_foreign;
+  // Episodes stored twice with different outcomes: neither is trusted, both move aside.
+  std::map<std::pair<std::string, int>, const EpisodeLine*> kept_line;
+  std::set<std::pair<std::string, int>> conflicting;
+  int copies = 0;
   for (const EpisodeLine& line : stored_lines.lines) {
     const auto row = row_of.find(line.row);
     if (row == row_of.end() || !kept.count(line.row)) {
@@ -191,7 +196,22 @@ EpisodeLines StoredEpisodes(const Suite& suite,
       aside.push_back(&line);
       continue;
     }
-    done[{line.row, line.episode}] = line;
+    const std::pair<std::string, int> key{line.row, line.episode};
+    if (conflicting.count(key)) {
+      aside.push_back(&line);
+    } else if (const auto other = kept_line.find(key); other == kept_line.end()) {
+      kept_line[key] = &line;
+      done[key] = line;
+    } else if (WithoutTimingColumns(FormatEpisodeLine(*other->second)) ==
+               WithoutTimingColumns(FormatEpisodeLine(line))) {
+      aside.push_back(&line);  // a second copy of the same result
+      ++copies;
+    } else {
+      conflicting.insert(key);
+      aside.push_back(other->second);
+      aside.push_back(&line);
+      done.erase(key);
+    }
   }
   if (note && (kept.size() < suite.rows.size() || !removed.empty())) {
     std::string rerun;
@@ -224,6 +244,16 @@ EpisodeLines StoredEpisodes(const Suite& suite,
       if (foreign > 0) {
         why += std::string(why.empty() ? "" : "; ") + std::to_string(foreign) +
                " not this suite's episodes (the first: " + first_foreign + ")";
+      }
+      if (!conflicting.empty()) {
+        const auto& [row, episode] = *conflicting.begin();
+        why += std::string(why.empty() ? "" : "; ") + std::to_string(conflicting.size()) +
+               " episode(s) stored twice with different results, run again (the first: row '" +
+               row + "', episode " + std::to_string(episode) + ")";
+      }
+      if (copies > 0) {
+        why += std::string(why.empty() ? "" : "; ") + std::to_string(copies) +
+               " second copies of stored episodes";
       }
       std::fprintf(stderr, "note: %zu stored episode line(s) moved to %s: %s\n", aside.size(),
                    path.string().c_str(), why.c_str());
