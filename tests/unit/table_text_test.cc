@@ -29,6 +29,30 @@ TEST(TableText, CsvFieldsKeepOneRecordPerLine) {
   EXPECT_EQ(SplitCsvLine(CsvField("a,\"b\"\rc")), std::vector<std::string>{"a,\"b\" c"});
 }
 
+// table.csv's user cells (labels, info) that a spreadsheet would run as a formula start with
+// a quote; numbers, a lone dash and the harness's own columns are written as they are.
+TEST(TableText, CsvCellsAreNoFormulas) {
+  testing::TempDir dir;
+  const auto file = dir.Write(
+      "s.yaml",
+      "name: t\nepisodes: 1\nworld: {source: random_rect, obstacles: 1, split: test}\n"
+      "columns: [model, \"@note\"]\nrows:\n"
+      "  - {label: \"=HYPERLINK(1)\", policy: linear, info: {model: \"+cmd\", \"@note\": \"-\"}}\n"
+      "  - {label: \"-orca\", policy: linear, info: {model: \"-1.5\", \"@note\": \"@x\"}}\n");
+  PluginRegistry registry{{testing::PluginDir()}};
+  const SuiteLoadResult loaded = LoadSuite(file, registry);
+  ASSERT_TRUE(loaded.suite) << loaded.errors[0].Format();
+  RowMetrics metrics;
+  metrics.discounted_return = -0.25;
+  const std::vector<TableRow> rows = {TableRow{&loaded.suite->rows[0], metrics},
+                                      TableRow{&loaded.suite->rows[1], metrics}};
+  const std::string csv = FormatTableCsv(*loaded.suite, rows);
+  EXPECT_NE(csv.find("row,label,model,'@note,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("1,'=HYPERLINK(1),'+cmd,-,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("2,'-orca,-1.5,'@x,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",-0.2500"), std::string::npos) << csv;  // a number of ours, unchanged
+}
+
 TEST(TableText, MarkdownCellsEscapeThePipe) {
   testing::TempDir dir;
   const auto file = dir.Write(

@@ -13,6 +13,7 @@
 #include <functional>
 #include <iomanip>
 #include <sstream>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 
@@ -117,7 +118,18 @@ bool AnyReference(const std::vector<TableRow>& rows) {
 struct Column {
   std::string header;
   std::function<std::string(const TableRow&)> value;
+  bool user_text = false;  ///< the suite's words (label, info): a spreadsheet may read a formula
 };
+
+// A user's cell for table.csv: one a spreadsheet would run as a formula (=, +, -, @, a tab or
+// a carriage return first, and not a number) starts with a quote, which shows it as text.
+std::string SpreadsheetText(const std::string& s) {
+  if (s.size() < 2 || std::string_view("=+-@\t\r").find(s[0]) == std::string_view::npos) return s;
+  double number = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), number);
+  if (ec == std::errc() && end == s.data() + s.size()) return s;
+  return "'" + s;
+}
 
 /// Table columns: the paper's and ours, then (CSV) 95% intervals, nav. time's standard error, and
 /// published values with differences.
@@ -125,14 +137,16 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
                             bool with_uncertainty) {
   std::vector<Column> cols;
   cols.push_back({"row", nullptr});
-  cols.push_back({"label", [](const TableRow& r) { return r.Label(); }});
+  cols.push_back({"label", [](const TableRow& r) { return r.Label(); }, true});
   for (const auto& name : suite.info_columns) {
-    cols.push_back({name, [name](const TableRow& r) {
+    cols.push_back({name,
+                    [name](const TableRow& r) {
                       for (const auto& [k, v] : r.Info()) {
                         if (k == name) return v;
                       }
                       return std::string("");
-                    }});
+                    },
+                    true});
   }
   cols.push_back({"sensors", [](const TableRow& r) { return SensorsLabel(r); }});
   auto metric = [](const char* h, double RowMetrics::*field, int digits) {
@@ -517,11 +531,15 @@ std::string FormatTableMarkdown(const Suite& suite, const std::vector<TableRow>&
 std::string FormatTableCsv(const Suite& suite, const std::vector<TableRow>& rows) {
   const auto cols = Columns(suite, rows, true);
   std::ostringstream os;
-  for (size_t i = 0; i < cols.size(); ++i) os << (i ? "," : "") << CsvField(cols[i].header);
+  for (size_t i = 0; i < cols.size(); ++i) {
+    os << (i ? "," : "")
+       << CsvField(cols[i].user_text ? SpreadsheetText(cols[i].header) : cols[i].header);
+  }
   os << "\n";
   for (size_t r = 0; r < rows.size(); ++r) {
     for (size_t i = 0; i < cols.size(); ++i) {
-      os << (i ? "," : "") << CsvField(cols[i].value ? cols[i].value(rows[r]) : RowNumber(rows, r));
+      const std::string v = cols[i].value ? cols[i].value(rows[r]) : RowNumber(rows, r);
+      os << (i ? "," : "") << CsvField(cols[i].user_text ? SpreadsheetText(v) : v);
     }
     os << "\n";
   }
