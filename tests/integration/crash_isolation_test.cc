@@ -230,5 +230,36 @@ TEST_F(CrashIsolationTest, SuiteKeysAreChecked) {
   EXPECT_EQ(plain.ConfigHash(), isolated.ConfigHash());
 }
 
+// With no episode_timeout_s, an isolated run still bounds each episode (RunOptions::
+// default_episode_timeout_s, kDefaultEpisodeTimeoutS by default): a hung plugin costs its
+// episode, never the run. A threaded run cannot stop a hung episode: it names a slow one.
+TEST_F(CrashIsolationTest, EpisodesAreWatchedWithoutATimeoutInTheSuite) {
+  const std::string plugin = (testing::FixturePluginDir() / "crowdsim_throwing_policy.so").string();
+  const std::string head =
+      "name: watched\nepisodes: 1\nworld: {source: random_rect, obstacles: 1}\n"
+      "humans: {count: 2, policy: linear}\nrows:\n  - {label: l, policy: " +
+      plugin;
+  const Suite hang = LoadOrDie(head + ", params: {mode: hang}}\n");
+  EXPECT_EQ(hang.episode_timeout_s, 0.0);
+  RunOptions options;
+  options.out_dir = dir_.path() / "hang";
+  options.isolation = IsolationMode::kOn;
+  options.progress = false;
+  options.default_episode_timeout_s = 1;
+  const RunSummary r = RunSuite(hang, registry_, options);
+  EXPECT_DOUBLE_EQ(r.rows.at(0).metrics.policy_timeout_rate, 1.0);
+  EXPECT_GT(kDefaultEpisodeTimeoutS, 0.0);
+
+  const Suite slow = LoadOrDie(head + ", params: {mode: slow}}\n");
+  options.out_dir = dir_.path() / "slow";
+  options.isolation = IsolationMode::kOff;
+  options.slow_episode_note_s = 1;
+  ::testing::internal::CaptureStderr();
+  RunSuite(slow, registry_, options);
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(said.find("note: row 'l', episode 0 has run 1 s"), std::string::npos) << said;
+  EXPECT_NE(said.find("give the suite episode_timeout_s"), std::string::npos) << said;
+}
+
 }  // namespace
 }  // namespace crowdsim

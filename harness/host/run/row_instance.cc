@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "crowdsim/bench/runner.h"
 #include "crowdsim/rng.h"
 #include "run/worker_process.h"
 
@@ -95,7 +96,8 @@ namespace {
 void ProbeInWorker(const Suite& suite, size_t row_index, int episode, PluginRegistry& registry) {
   std::optional<WorkerLoss> lost;
   WorkerPoolOptions options;
-  options.task_timeout_s = suite.episode_timeout_s;
+  options.task_timeout_s =
+      suite.episode_timeout_s > 0 ? suite.episode_timeout_s : kDefaultEpisodeTimeoutS;
   WorkerPoolCallbacks callbacks;
   callbacks.run = [&](std::size_t) -> std::string {
     try {

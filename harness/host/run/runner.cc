@@ -24,6 +24,7 @@
 #include "run/episode_wire.h"
 #include "run/output_folder.h"
 #include "run/run_progress.h"
+#include "run/slow_episode_watch.h"
 #include "run/stored_episodes.h"
 #include "run/suite_row.h"
 #include "run/worker_process.h"
@@ -234,13 +235,17 @@ constexpr const char* kStopped = "stopped on request";
 /// Runs the tasks on `jobs` threads with their own plugin instances. Throws RunError naming the
 /// first failing episode or append.
 void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& registry,
-                       const std::vector<Task>& tasks, int jobs,
-                       const std::function<bool()>& stop_requested, EpisodeSink& sink) {
+                       const std::vector<Task>& tasks, int jobs, const RunOptions& options,
+                       EpisodeSink& sink) {
+  const std::function<bool()>& stop_requested = options.stop_requested;
+  // No more threads than episodes; a thread the system refuses stops the run, named.
+  const int workers = static_cast<int>(std::min<size_t>(std::max(jobs, 1), tasks.size()));
+  SlowEpisodeWatch watch(workers, options.slow_episode_note_s);
   std::mutex mutex;
   std::atomic<size_t> next{0};
   std::atomic<bool> failed{false};
   std::string failure;
-  auto worker = [&]() {
+  auto worker = [&](int index) {
     std::vector<std::unique_ptr<RowInstance>> instances(rows.size());
     while (!failed) {
       if (stop_requested && stop_requested()) {
@@ -254,11 +259,14 @@ void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& regist
       const Task task = tasks[t];
       const SuiteRow& row = rows[task.row];
       EpisodeLine line;
+      watch.Began(index, row.Where(task.episode));
       try {
         auto& inst = instances[task.row];
         if (!inst) inst = std::make_unique<RowInstance>(row.spec(), registry);
         line = row.Run(*inst, task.episode);
+        watch.Ended(index);
       } catch (const std::exception& e) {
+        watch.Ended(index);
         std::lock_guard<std::mutex> lock(mutex);
         if (!failed) failure = row.Where(task.episode) + ": " + e.what();
         failed = true;
@@ -273,12 +281,10 @@ void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& regist
       }
     }
   };
-  // No more threads than episodes; a thread the system refuses stops the run, named.
-  const int workers = static_cast<int>(std::min<size_t>(std::max(jobs, 1), tasks.size()));
   std::vector<std::thread> threads;
   for (int j = 1; j < workers && !failed; ++j) {
     try {
-      threads.emplace_back(worker);
+      threads.emplace_back(worker, j);
     } catch (const std::system_error& e) {
       std::lock_guard<std::mutex> lock(mutex);
       failure = "cannot start worker thread " + std::to_string(j + 1) + " of " +
@@ -286,7 +292,7 @@ void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& regist
       failed = true;
     }
   }
-  if (!failed) worker();
+  if (!failed) worker(0);
   for (auto& th : threads) th.join();
   sink.Finish(failure);
 }
@@ -297,7 +303,8 @@ void RunTasksInThreads(const std::vector<SuiteRow>& rows, PluginRegistry& regist
 /// SIGHUP).
 void RunTasksInProcesses(const Suite& suite, const std::vector<SuiteRow>& rows,
                          PluginRegistry& registry, const std::vector<Task>& tasks, int jobs,
-                         const std::function<bool()>& stop_requested, EpisodeSink& sink) {
+                         const RunOptions& run, EpisodeSink& sink) {
+  const std::function<bool()>& stop_requested = run.stop_requested;
   std::vector<std::unique_ptr<RowInstance>> instances(rows.size());  // a worker's own
   std::string failure;
   WorkerPoolCallbacks callbacks;
@@ -342,7 +349,9 @@ void RunTasksInProcesses(const Suite& suite, const std::vector<SuiteRow>& rows,
   };
   WorkerPoolOptions options;
   options.workers = jobs;  // RunInWorkerProcesses starts no more than the tasks
-  options.task_timeout_s = suite.episode_timeout_s;
+  // The suite's bound, else a default one: a hung plugin costs an episode, never the run.
+  options.task_timeout_s =
+      suite.episode_timeout_s > 0 ? suite.episode_timeout_s : run.default_episode_timeout_s;
   try {
     RunInWorkerProcesses(tasks.size(), options, callbacks);
   } catch (const std::runtime_error& e) {
@@ -487,9 +496,9 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
       facts.isolated ? std::chrono::milliseconds(0) : EpisodeAppender::kThreadedRunDelay, progress,
       &done);
   if (facts.isolated) {
-    RunTasksInProcesses(suite, rows, registry, tasks, facts.jobs, options.stop_requested, sink);
+    RunTasksInProcesses(suite, rows, registry, tasks, facts.jobs, options, sink);
   } else {
-    RunTasksInThreads(rows, registry, tasks, facts.jobs, options.stop_requested, sink);
+    RunTasksInThreads(rows, registry, tasks, facts.jobs, options, sink);
   }
   summary.episodes_run = static_cast<int>(tasks.size());
   summary.policy_errors = PolicyErrorNotes(suite, done);

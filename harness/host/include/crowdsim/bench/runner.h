@@ -41,6 +41,12 @@ class RowsRefused : public RunRefused {
 inline constexpr int kMaxJobs = 1024;
 inline constexpr int kMaxEpisodes = 10'000'000;
 
+/// A worker process's episode is killed (policy_timeout) after this many seconds unless the suite
+/// sets episode_timeout_s; a threaded run names an episode on stderr once it runs
+/// kSlowEpisodeNoteS.
+inline constexpr double kDefaultEpisodeTimeoutS = 600.0;
+inline constexpr double kSlowEpisodeNoteS = 60.0;
+
 struct RunOptions {
   std::filesystem::path out_dir;  ///< default: DefaultRunDir(suite)
   int jobs = 1;                   ///< worker threads, or worker processes when isolated
@@ -60,6 +66,10 @@ struct RunOptions {
   bool out_dir_claimed = false;
   /// The run joins shards' stored episodes (merge): its manifest says `"merged": true`.
   bool merge = false;
+  /// Isolated runs: an episode's bound when the suite sets no episode_timeout_s.
+  double default_episode_timeout_s = kDefaultEpisodeTimeoutS;
+  /// Threaded runs: an episode running this long is named on stderr, and again at each doubling.
+  double slow_episode_note_s = kSlowEpisodeNoteS;
   /// Asked between episodes, from any worker thread; true stops the run as AbortRun does, keeping
   /// finished episodes; RunSuite throws RunError. Python checks Ctrl-C here, as it runs only
   /// between calls into C++.
