@@ -43,8 +43,11 @@ VectorEnv::VectorEnv(std::unique_ptr<PythonRow> row, int num_envs, int threads)
     : row_(std::move(row)), pool_(std::clamp(threads, 1, std::max(1, num_envs))) {
   if (num_envs < 1) throw py::value_error("num_envs must be >= 1, got " + std::to_string(num_envs));
   humans_ = row_->row.humans.count;
-  for (int i = 0; i < num_envs; ++i)
+  for (int i = 0; i < num_envs; ++i) {
     envs_.push_back(std::make_unique<RowEpisodes>(row_->suite, row_->row, row_->registry));
+    // Ctrl-C while a large batch is made: Python's handler only sets a flag, read here.
+    if (i % 16 == 15 && PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
   next_episode_.assign(envs_.size(), 0);
   ended_.assign(envs_.size(), false);
   // The range sensor's beam count fixes the lidar batch's shape.

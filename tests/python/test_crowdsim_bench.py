@@ -5,9 +5,11 @@ import csv
 import math
 import os
 import pathlib
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 import numpy as np
@@ -540,6 +542,29 @@ def sampled_episodes(env, episodes):
 def outside(space, obs):
     """The keys of a dict observation its Dict space does not contain (for the messages)."""
     return [k for k in obs if not space[k].contains(obs[k])]
+
+
+class VectorEnvSize(unittest.TestCase):
+    """A VectorEnv's size is bounded, and making a large one stops on Ctrl-C."""
+
+    def test_more_than_the_bound_is_refused_before_anything_is_made(self):
+        with self.assertRaisesRegex(ValueError, "num_envs must be at most 4096, got 100000"):
+            cb.VectorEnv(QUICK, row="orca", num_envs=100_000)
+
+    def test_making_a_large_one_stops_on_an_interrupt(self):
+        # SIGALRM's handler raises as Ctrl-C's does; 4,000 environments take over a minute.
+        def interrupt(signum, frame):
+            raise KeyboardInterrupt
+        old = signal.signal(signal.SIGALRM, interrupt)
+        signal.setitimer(signal.ITIMER_REAL, 0.5)
+        start = time.monotonic()
+        try:
+            with self.assertRaises(KeyboardInterrupt):
+                cb.VectorEnv(QUICK, row="orca", num_envs=4000)
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, old)
+        self.assertLess(time.monotonic() - start, 10)
 
 
 class SpacesAndInfosAsGymnasiumWantsThem(unittest.TestCase):
