@@ -16,6 +16,19 @@ namespace {
 // aliases can stand for billions.
 constexpr std::size_t kMaxNodes = 1'000'000;
 
+// Whether the file names an anchor (&name) that aliases (*name) may repeat.
+bool HasAnchors(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  char before = '\n';
+  for (char c; in.get(c); before = c) {
+    if (c == '&' && (before == ' ' || before == '\n' || before == '\t' || before == '[' ||
+                     before == '{' || before == ',' || before == ':' || before == '-')) {
+      return true;
+    }
+  }
+  return false;
+}
+
 // One walk before any reader: refuses duplicate keys, self-containing aliases and expansions past
 // kMaxNodes. `open`: the current path.
 struct Walk {
@@ -35,8 +48,11 @@ struct Walk {
   void Visit(const YAML::Node& n) {
     if (stopped) return;
     if (++visited > kMaxNodes) {
-      Error(n, "the document holds more than " + std::to_string(kMaxNodes) +
-                   " values once its aliases (*name) are expanded; write fewer aliases of aliases");
+      Error(n, "the document holds more than " + std::to_string(kMaxNodes) + " values" +
+                   (HasAnchors(file) ? " once its aliases (*name) are expanded; write fewer "
+                                       "aliases of aliases"
+                                     : ", ten times the largest committed world set; split it "
+                                       "into several files"));
       stopped = true;
       return;
     }

@@ -570,6 +570,16 @@ TEST_F(SuiteValidation, SelfContainingAndExplodingAliasesAreErrors) {
   ASSERT_FALSE(r.suite);
   EXPECT_NE(Find(r, "more than 1000000 values once its aliases (*name) are expanded"), "")
       << All(r);
+  // Over a million plain values, no alias: told to split the file, not to write fewer aliases.
+  std::string big = "name: t\nvalues: [";
+  for (int i = 0; i < 1'000'001; ++i) big += i ? ",0" : "0";
+  auto plain = Load(big + "]\n");
+  ASSERT_FALSE(plain.suite);
+  EXPECT_NE(Find(plain,
+                 "more than 1000000 values, ten times the largest committed world set; "
+                 "split it into several files"),
+            "")
+      << All(plain).substr(0, 400);
   // An alias that is only a shared value is fine.
   auto shared = Load(std::string("defaults: &d {count: 2, policy: linear}\n") + kGood);
   EXPECT_NE(Find(shared, "unknown key 'defaults'"), "") << All(shared);
