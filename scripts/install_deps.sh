@@ -15,6 +15,7 @@ packages=(
   libpng-dev libcairo2-dev libgif-dev zlib1g-dev
   libopenmpi-dev openmpi-bin
   python3-dev python3-pybind11 python3-numpy
+  chromium  # the report's test opens the page in headless Chromium
 )
 with_torch=1
 with_fuzz=0
