@@ -20,6 +20,12 @@
 namespace crowdsim {
 namespace {
 
+// A suite written into `dir` and loaded with the built plugins (the registry outlives it).
+SuiteLoadResult LoadText(const testing::TempDir& dir, const std::string& yaml) {
+  static PluginRegistry registry{{testing::PluginDir()}};
+  return LoadSuite(dir.Write("s.yaml", yaml), registry);
+}
+
 TEST(TableText, CsvFieldsKeepOneRecordPerLine) {
   EXPECT_EQ(CsvField("plain"), "plain");
   EXPECT_EQ(CsvField("a,b"), "\"a,b\"");
@@ -33,14 +39,12 @@ TEST(TableText, CsvFieldsKeepOneRecordPerLine) {
 // a quote; numbers, a lone dash and the harness's own columns are written as they are.
 TEST(TableText, CsvCellsAreNoFormulas) {
   testing::TempDir dir;
-  const auto file = dir.Write(
-      "s.yaml",
+  const SuiteLoadResult loaded = LoadText(
+      dir,
       "name: t\nepisodes: 1\nworld: {source: random_rect, obstacles: 1, split: test}\n"
       "columns: [model, \"@note\"]\nrows:\n"
       "  - {label: \"=HYPERLINK(1)\", policy: linear, info: {model: \"+cmd\", \"@note\": \"-\"}}\n"
       "  - {label: \"-orca\", policy: linear, info: {model: \"-1.5\", \"@note\": \"@x\"}}\n");
-  PluginRegistry registry{{testing::PluginDir()}};
-  const SuiteLoadResult loaded = LoadSuite(file, registry);
   ASSERT_TRUE(loaded.suite) << loaded.errors[0].Format();
   RowMetrics metrics;
   metrics.discounted_return = -0.25;
@@ -55,12 +59,10 @@ TEST(TableText, CsvCellsAreNoFormulas) {
 
 TEST(TableText, MarkdownCellsEscapeThePipe) {
   testing::TempDir dir;
-  const auto file = dir.Write(
-      "s.yaml",
+  const SuiteLoadResult loaded = LoadText(
+      dir,
       "name: t\nepisodes: 1\nworld: {source: random_rect, obstacles: 1, split: test}\n"
       "columns: [model]\nrows:\n  - {label: a, policy: linear, info: {model: \"x | y\"}}\n");
-  PluginRegistry registry{{testing::PluginDir()}};
-  const SuiteLoadResult loaded = LoadSuite(file, registry);
   ASSERT_TRUE(loaded.suite) << loaded.errors[0].Format();
   const std::vector<TableRow> rows = {TableRow{&loaded.suite->rows[0], RowMetrics{}}};
   const std::string md = FormatTableMarkdown(*loaded.suite, rows);
@@ -102,15 +104,13 @@ RowMetrics Made(int episodes, int successes, int collisions, double nav_time, do
 
 TEST(TableText, PublishedValuesIntervalsAndSummaryLines) {
   testing::TempDir dir;
-  const auto file = dir.Write(
-      "s.yaml",
+  const SuiteLoadResult loaded = LoadText(
+      dir,
       "name: t\nepisodes: 1\nworld: {source: random_rect, obstacles: 1, split: test}\nrows:\n"
-      "  - {label: a, policy: linear, reference: {success: 0.70, collision: 0.30, nav_time: 12.0, "
-      "source: \"Paper, line 1\"}}\n"
+      "  - {label: a, policy: linear, reference: {success: 0.70, collision: 0.30, nav_time: "
+      "12.0, source: \"Paper, line 1\"}}\n"
       "  - {label: b, policy: linear}\n"
       "summaries:\n  - {label: avg, rows: [a, b], reference: {success: 0.6}}\n");
-  PluginRegistry registry{{testing::PluginDir()}};
-  const SuiteLoadResult loaded = LoadSuite(file, registry);
   ASSERT_TRUE(loaded.suite) << loaded.errors[0].Format();
   // a: 348/500 successes, interval [0.6543, 0.7347] holds 0.70; 10/500 collisions does not
   // hold 0.30; nav. time 14 +- 0.2 does not hold 12.
