@@ -25,7 +25,10 @@ int WriteAll(int fd, const char* data, size_t size) {
 
 void WriteFileAtomically(const fs::path& path, const std::string& text) {
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::string name = (folder / ("." + path.filename().string() + ".XXXXXX")).string();
+  std::string hidden = ".";  // built piece by piece: GCC 12 warns falsely (-Wrestrict) on "." + s
+  hidden += path.filename().string();
+  hidden += ".XXXXXX";
+  std::string name = (folder / hidden).string();
   const int fd = ::mkstemp(name.data());
   if (fd < 0) {
     throw std::runtime_error("cannot create a file in " + folder.string() + " to write " +

@@ -234,9 +234,16 @@ std::string BinaryKind(const fs::path& file) {
 }  // namespace
 
 std::string Problem::Format() const {
-  std::string out = file;
-  if (line > 0) out += ":" + std::to_string(line) + ":" + std::to_string(column);
-  return out + ": " + message;
+  std::string out = file;  // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on sums
+  if (line > 0) {
+    out += ':';
+    out += std::to_string(line);
+    out += ':';
+    out += std::to_string(column);
+  }
+  out += ": ";
+  out += message;
+  return out;
 }
 
 YAML::Node LoadDocument(const fs::path& file, const std::string& what,

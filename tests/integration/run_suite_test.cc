@@ -166,7 +166,10 @@ TEST_F(RunSuiteTest, ResumeSetsAsideImpossibleNumbersAndConflictingCopies) {
   auto cells = [](const std::string& line) { return SplitCsvLine(line); };
   auto join = [](std::vector<std::string> v) {
     std::string out;
-    for (size_t k = 0; k < v.size(); ++k) out += (k ? "," : "") + CsvField(v[k]);
+    for (size_t k = 0; k < v.size(); ++k) {
+      if (k) out += ',';
+      out += CsvField(v[k]);
+    }
     return out;
   };
   std::vector<std::string> nan_time = cells(lines[1]), negative_steps = cells(lines[2]),

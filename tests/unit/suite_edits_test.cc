@@ -328,8 +328,7 @@ TEST_F(SuiteEdits, TrainingFilesTakeOverridesToo) {
 TEST_F(SuiteEdits, TheConfigHashCarriesNumbersExactly) {
   const auto base = Load(kSuite, {"sim.robot_v_pref=1.3"});
   ASSERT_TRUE(base.suite) << All(base);
-  for (const std::string& set :
-       {"sim.robot_v_pref=1.3000004", "sim.robot_v_pref=1.30000000000001"}) {
+  for (const char* set : {"sim.robot_v_pref=1.3000004", "sim.robot_v_pref=1.30000000000001"}) {
     const auto near = Load(kSuite, {set});
     ASSERT_TRUE(near.suite) << All(near);
     EXPECT_NE(near.suite->ConfigHash(), base.suite->ConfigHash()) << set;

@@ -31,7 +31,8 @@ std::string ElfFileProblem(const fs::path& file) {
   }
   if (std::memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0)
     return "is not a shared library (no ELF header)";
-  if (eh.e_ident[EI_CLASS] != ELFCLASS64 || eh.e_machine != EM_X86_64 && eh.e_machine != EM_AARCH64)
+  if (eh.e_ident[EI_CLASS] != ELFCLASS64 ||
+      (eh.e_machine != EM_X86_64 && eh.e_machine != EM_AARCH64))
     return "is an ELF file for another kind of machine";
   if (eh.e_type != ET_DYN) return "is an ELF file but not a shared library";
   const std::uint64_t ph_end = eh.e_phoff + std::uint64_t{eh.e_phnum} * eh.e_phentsize;
