@@ -2,10 +2,13 @@
 
 #include <fcntl.h>
 #include <gif_lib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <stdexcept>
@@ -32,6 +35,7 @@ struct GifWriter::Impl {
   int width = 0;
   int height = 0;
   std::filesystem::path path;
+  std::string temp;  // the file written, renamed to `path` by Finish; removed if never finished
   std::vector<std::uint32_t> palette;                      // packed RGB, 256 entries
   std::unordered_map<std::uint32_t, std::uint8_t> lookup;  // colour -> nearest palette index
   std::vector<std::uint8_t> previous;                      // last frame's indices
@@ -100,15 +104,25 @@ GifWriter::GifWriter(const std::filesystem::path& path, int width, int height,
   while (m.palette.size() < 256) m.palette.push_back(0);
   m.palette.resize(256);
 
-  // Our own descriptor: EGifOpenFileName would create the file readable by its owner only.
-  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+  // A new file beside `path`, renamed over it when whole: an interrupted render leaves the
+  // previous animation as it was. Readable as any file of the user's (mkstemp makes it 0600).
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
+  std::string hidden = ".";
+  hidden += path.filename().string();
+  hidden += ".XXXXXX";
+  m.temp = (folder / hidden).string();
+  const int fd = mkstemp(m.temp.data());
   if (fd < 0) {
     throw std::runtime_error("cannot create " + path.string() + ": " + std::strerror(errno));
   }
+  const mode_t mask = umask(0);
+  umask(mask);
+  fchmod(fd, 0666 & ~mask);
   int error = 0;
   m.gif = EGifOpenFileHandle(fd, &error);
   if (m.gif == nullptr) {
     close(fd);
+    unlink(m.temp.c_str());
     throw std::runtime_error("cannot create " + path.string() + ": " + GifErrorText(error));
   }
   EGifSetGifVersion(m.gif, true);
@@ -131,9 +145,10 @@ GifWriter::GifWriter(const std::filesystem::path& path, int width, int height,
 }
 
 GifWriter::~GifWriter() {
-  if (impl_ && impl_->gif) {
+  if (impl_ && impl_->gif) {  // never finished: the animation is not whole
     int error = 0;
     EGifCloseFile(impl_->gif, &error);
+    unlink(impl_->temp.c_str());
   }
 }
 
@@ -190,8 +205,15 @@ void GifWriter::Finish() {
   int error = 0;
   const int st = EGifCloseFile(m.gif, &error);
   m.gif = nullptr;
-  if (st == GIF_ERROR)
+  if (st == GIF_ERROR) {
+    unlink(m.temp.c_str());
     throw std::runtime_error("cannot finish " + m.path.string() + ": " + GifErrorText(error));
+  }
+  if (std::rename(m.temp.c_str(), m.path.c_str()) != 0) {
+    const int err = errno;
+    unlink(m.temp.c_str());
+    throw std::runtime_error("cannot replace " + m.path.string() + ": " + std::strerror(err));
+  }
 }
 
 }  // namespace crowdsim::render

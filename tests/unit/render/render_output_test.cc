@@ -11,6 +11,7 @@
 #include "crowdsim/render/animation.h"
 #include "crowdsim/render/episode_replay.h"
 #include "crowdsim/render/figure_output.h"
+#include "crowdsim/render/gif_writer.h"
 #include "crowdsim/render/output_format.h"
 #include "crowdsim/render/palette.h"
 #include "scripted.h"
@@ -149,6 +150,29 @@ TEST(Animation, GifHasOneImagePerShownFrameWithItsDelay) {
   const auto again = tmp.path() / "b.gif";
   WriteAnimation(s.Figure(), 0.25, again, opt);
   EXPECT_EQ(crowdsim::testing::ReadText(path), crowdsim::testing::ReadText(again));
+}
+
+// An animation is written whole or not at all: one cut short (here a frame of the wrong size;
+// as Ctrl-C would) leaves the previous file as it was and no other file beside it.
+TEST(Animation, AnInterruptedGifLeavesThePreviousFileWhole) {
+  const Scripted s;
+  TempDir tmp;
+  const auto path = tmp.path() / "a.gif";
+  WriteAnimation(s.Figure(), 0.25, path, AnimationOptions{});
+  const std::string good = crowdsim::testing::ReadText(path);
+  {
+    GifWriter gif(path, 8, 8, {});
+    RgbImage wrong;
+    wrong.width = 4;
+    wrong.height = 4;
+    wrong.pixels.assign(4 * 4 * 3, 0);
+    EXPECT_THROW(gif.AddFrame(wrong, 10), std::invalid_argument);
+  }
+  EXPECT_EQ(crowdsim::testing::ReadText(path), good);
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(tmp.path()))
+    files += e.is_regular_file();
+  EXPECT_EQ(files, 1);
 }
 
 TEST(Animation, Mp4WhenBuiltOtherwiseAClearError) {

@@ -14,7 +14,7 @@ namespace crowdsim::render {
 /// Writes one looping GIF; frames go in order, Finish() ends the file.
 class GifWriter {
  public:
-  /// Opens `path` for a looping animation of `width` x `height` px whose 256-colour palette is
+  /// Starts a looping animation for `path` of `width` x `height` px whose 256-colour palette is
   /// taken from `palette_samples` (e.g. the first and last frames: every flat colour shows
   /// there). Throws std::runtime_error.
   GifWriter(const std::filesystem::path& path, int width, int height,
@@ -26,7 +26,8 @@ class GifWriter {
   /// Adds a frame shown for `delay_cs` hundredths of a second (>= 2; browsers slow faster
   /// frames down). The frame must have the animation's size.
   void AddFrame(const RgbImage& frame, int delay_cs);
-  /// Writes the trailer and closes the file (also done by the destructor, ignoring errors).
+  /// Writes the trailer and puts the whole file at `path` (written beside it until then). A
+  /// writer destroyed without Finish leaves `path` as it was.
   void Finish();
 
  private:
