@@ -23,13 +23,13 @@ int WriteAll(int fd, const char* data, size_t size) {
   return 0;
 }
 
-void WriteFileAtomically(const fs::path& path, const std::string& text) {
+int CreateBeside(const fs::path& path, std::string* temp) {
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::string hidden = ".";  // built piece by piece: GCC 12 warns falsely (-Wrestrict) on "." + s
   hidden += path.filename().string();
   hidden += ".XXXXXX";
-  std::string name = (folder / hidden).string();
-  const int fd = ::mkstemp(name.data());
+  *temp = (folder / hidden).string();
+  const int fd = ::mkstemp(temp->data());
   if (fd < 0) {
     throw std::runtime_error("cannot create a file in " + folder.string() + " to write " +
                              path.string() + ": " + std::strerror(errno));
@@ -38,6 +38,12 @@ void WriteFileAtomically(const fs::path& path, const std::string& text) {
   const mode_t mask = ::umask(0);
   ::umask(mask);
   ::fchmod(fd, 0666 & ~mask);
+  return fd;
+}
+
+void WriteFileAtomically(const fs::path& path, const std::string& text) {
+  std::string name;
+  const int fd = CreateBeside(path, &name);
   int error = WriteAll(fd, text.data(), text.size());
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error != 0) {

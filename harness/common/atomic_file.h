@@ -12,6 +12,11 @@ namespace crowdsim::common {
 /// and reason.
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
 
+/// A new file of its own beside `path` (mkstemp in its folder, named ".NAME.XXXXXX", mode 0666
+/// less the umask), open for writing: its descriptor, its name in `temp`. Rename it over `path`
+/// when whole. Throws std::runtime_error naming the folder and the reason.
+int CreateBeside(const std::filesystem::path& path, std::string* temp);
+
 /// write(2) of all `size` bytes, retrying on EINTR: 0, or the failure's errno (ENOSPC when no
 /// byte goes). Async-signal-safe.
 int WriteAll(int fd, const char* data, size_t size);

@@ -2,19 +2,19 @@
 
 #include <fcntl.h>
 #include <gif_lib.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
+
+#include "atomic_file.h"
 
 namespace crowdsim::render {
 namespace {
@@ -105,19 +105,8 @@ GifWriter::GifWriter(const std::filesystem::path& path, int width, int height,
   m.palette.resize(256);
 
   // A new file beside `path`, renamed over it when whole: an interrupted render leaves the
-  // previous animation as it was. Readable as any file of the user's (mkstemp makes it 0600).
-  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
-  std::string hidden = ".";
-  hidden += path.filename().string();
-  hidden += ".XXXXXX";
-  m.temp = (folder / hidden).string();
-  const int fd = mkstemp(m.temp.data());
-  if (fd < 0) {
-    throw std::runtime_error("cannot create " + path.string() + ": " + std::strerror(errno));
-  }
-  const mode_t mask = umask(0);
-  umask(mask);
-  fchmod(fd, 0666 & ~mask);
+  // previous animation as it was.
+  const int fd = common::CreateBeside(path, &m.temp);
   int error = 0;
   m.gif = EGifOpenFileHandle(fd, &error);
   if (m.gif == nullptr) {
