@@ -1,6 +1,9 @@
 #include "yaml_document.h"
 
+#include <yaml-cpp/depthguard.h>
+
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <system_error>
@@ -15,6 +18,9 @@ namespace {
 // Most values a document may hold, aliases expanded (ten times our largest world set): nested
 // aliases can stand for billions.
 constexpr std::size_t kMaxNodes = 1'000'000;
+
+// Largest file read (over 100 times our largest world set): yaml-cpp needs ~70 bytes per byte read.
+constexpr std::uintmax_t kMaxFileBytes = 16u << 20;
 
 // Whether the file names an anchor (&name) that aliases (*name) may repeat.
 bool HasAnchors(const std::string& file) {
@@ -282,9 +288,23 @@ YAML::Node LoadDocument(const fs::path& file, const std::string& what,
     errors->push_back({file.string(), 0, 0, "is " + binary + ", not a " + what + " (YAML text)"});
     return YAML::Node(YAML::NodeType::Null);
   }
+  if (const std::uintmax_t bytes = fs::file_size(file, ec); !ec && bytes > kMaxFileBytes) {
+    errors->push_back({file.string(), 0, 0,
+                       "is " + std::to_string(bytes >> 20) + " MB; a " + what + " may be at most " +
+                           std::to_string(kMaxFileBytes >> 20) +
+                           " MB (over 100 times the largest shipped one): split it into several "
+                           "files"});
+    return YAML::Node(YAML::NodeType::Null);
+  }
   YAML::Node root;
   try {
     root = YAML::LoadFile(file.string());
+  } catch (const YAML::DeepRecursion& e) {
+    errors->push_back({file.string(), e.mark.line + 1, e.mark.column + 1,
+                       "maps and lists are nested more than " + std::to_string(e.depth()) +
+                           " levels deep here; no " + what +
+                           " needs more than a few: close the brackets or flatten it"});
+    return YAML::Node(YAML::NodeType::Null);
   } catch (const YAML::BadFile&) {
     errors->push_back({file.string(), 0, 0, "cannot read the " + what + " (permissions?)"});
     return YAML::Node(YAML::NodeType::Null);

@@ -586,6 +586,21 @@ TEST_F(SuiteValidation, SelfContainingAndExplodingAliasesAreErrors) {
   EXPECT_EQ(Find(shared, "alias"), "") << All(shared);
 }
 
+// yaml-cpp refuses deep nesting as a "bad file"; a huge file took gigabytes before bad_alloc.
+TEST_F(SuiteValidation, DeepNestingAndHugeFilesAreNamedAsSuch) {
+  auto deep = Load("name: t\nrows: " + std::string(3000, '[') + std::string(3000, ']') + "\n");
+  ASSERT_FALSE(deep.suite);
+  EXPECT_NE(Find(deep, "maps and lists are nested more than"), "") << All(deep).substr(0, 400);
+  EXPECT_EQ(Find(deep, "bad file"), "") << All(deep).substr(0, 400);
+  // 17 MB of comments: refused by its size before any parsing.
+  std::string huge = "name: t\n";
+  const std::string comment = "# " + std::string(1022, 'x') + "\n";
+  while (huge.size() <= (17u << 20)) huge += comment;
+  auto big = Load(huge);
+  ASSERT_FALSE(big.suite);
+  EXPECT_NE(Find(big, "is 17 MB; a suite file may be at most 16 MB"), "") << All(big);
+}
+
 // Found by the suite_reader fuzz target (tests/fuzz): a `robot:` map without `sensors` threw
 // yaml-cpp's InvalidNode out of LoadSuite (the CLI ended with "terminate called").
 TEST_F(SuiteValidation, RobotMapWithoutSensorsIsAnErrorNotACrash) {
