@@ -19,6 +19,14 @@ void CheckResultsFolder(const fs::path& dir) {
   // (Builds before 2026-11-26 left an earlier run's tables in place while a rerun went on: an
   // empty finished_utc tells such a folder too.)
   const fs::path manifest = dir / "manifest.json";
+  // A damaged manifest ties its episodes to no configuration: a resumed run refuses them too.
+  if (fs::exists(manifest) && ReadManifestField(manifest, "config_hash").empty()) {
+    throw ReportError("'" + manifest.string() +
+                      "' is damaged or not crowdsim-bench's (it names no config_hash), so which "
+                      "configuration made the folder's episodes is unknown and neither report nor "
+                      "a resumed run can use them: run the suite again into a new --out folder "
+                      "(or into this one with --fresh, which replaces them)");
+  }
   if (fs::exists(manifest) &&
       (!fs::exists(dir / "table.csv") || ReadManifestField(manifest, "finished_utc").empty())) {
     const std::string shard = ReadManifestField(manifest, "shard");

@@ -161,15 +161,38 @@ TEST(ReportErrors, AShardOrAnUnfinishedRunSaysWhatToDo) {
     return std::string("no error");
   };
   std::ofstream(tmp.path() / "episodes.csv") << "row,episode\n";
-  std::ofstream(tmp.path() / "manifest.json") << R"({"suite": "quick"})";
+  std::ofstream(tmp.path() / "manifest.json") << R"({"suite": "quick", "config_hash": "ab12"})";
   EXPECT_NE(error().find("holds a run that has not finished (no table.csv, or a manifest without "
                          "finished_utc): rerun the same"),
             std::string::npos)
       << error();
-  std::ofstream(tmp.path() / "manifest.json") << R"({"suite": "quick", "shard": "2/3"})";
+  std::ofstream(tmp.path() / "manifest.json")
+      << R"({"suite": "quick", "config_hash": "ab12", "shard": "2/3"})";
   EXPECT_NE(error().find("is shard 2/3 of a run, which has no tables: join the shards with"),
             std::string::npos)
       << error();
+}
+
+// It advised a rerun, which then asked for --fresh: now the way out is said at once.
+TEST(ReportErrors, ADamagedManifestSaysItsEpisodesCannotBeUsed) {
+  TempDir tmp;
+  PluginRegistry registry;
+  std::ofstream(tmp.path() / "episodes.csv") << "row,episode\n";
+  std::ofstream(tmp.path() / "table.csv") << "row\n";
+  std::ofstream(tmp.path() / "manifest.json") << R"({"suite": "quick", "config_h)";
+  try {
+    BuildReport(tmp.path(), registry);
+    FAIL() << "expected ReportError";
+  } catch (const ReportError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("is damaged or not crowdsim-bench's (it names no config_hash)"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("into a new --out folder (or into this one with --fresh"),
+              std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("rerun the same"), std::string::npos) << what;
+  }
 }
 
 TEST_F(ReportTest, MissingSuiteFileSaysHowToFix) {
