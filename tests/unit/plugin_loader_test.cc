@@ -77,6 +77,18 @@ TEST(PluginLoader, NotASharedLibrary) {
   EXPECT_NE(err.find("crowdsim_not_a_library.so"), std::string::npos) << err;
 }
 
+// boost.dll ended the loader's message with an unrelated errno text ("Bad file descriptor").
+TEST(PluginLoader, ALibraryTheLoaderRefusesIsNamedInTheLoadersWords) {
+  PluginRegistry reg({FixturePluginDir()});
+  const std::string err = LoadError(reg, "undefined_symbol", PluginKind::kPolicy);
+  EXPECT_NE(err.find("crowdsim_undefined_symbol.so: undefined symbol: "
+                     "crowdsim_fixture_missing_symbol. It is not a loadable"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("Bad file descriptor"), std::string::npos) << err;
+  EXPECT_EQ(err.find("boost::dll"), std::string::npos) << err;
+}
+
 TEST(PluginLoader, SharedLibraryWithoutAlias) {
   PluginRegistry reg({FixturePluginDir()});
   const std::string err = LoadError(reg, "no_alias", PluginKind::kPolicy);
@@ -157,7 +169,7 @@ TEST(PluginLoader, DiscoverReportsBrokenFilesWithoutStopping) {
   bool has_linear = false;
   for (const auto* p : found.plugins) has_linear |= std::string(p->descriptor->name) == "linear";
   EXPECT_TRUE(has_linear);
-  EXPECT_GE(found.problems.size(), 3u);  // not_a_library, no_alias, wrong_abi
+  EXPECT_GE(found.problems.size(), 4u);  // not_a_library, no_alias, wrong_abi, undefined_symbol
 }
 
 // A plugin file cut short (an interrupted copy: its first 1-12 kB) is an error naming it, for

@@ -47,6 +47,16 @@ std::vector<fs::path> DefaultSearchDirs() {
   return dirs;
 }
 
+// The dynamic loader's own words inside boost.dll's message, whose errno suffix (e.g. "Bad file
+// descriptor") has nothing to do with the failure.
+std::string DynamicLoaderReason(const std::string& boost_message) {
+  const std::string marker = "dlerror system message: ";
+  const std::size_t start = boost_message.find(marker);
+  const std::size_t end = boost_message.rfind("): ");
+  if (start == std::string::npos || end == std::string::npos || end < start) return boost_message;
+  return boost_message.substr(start + marker.size(), end - start - marker.size());
+}
+
 bool LooksLikePath(const std::string& s) {
   return s.find('/') != std::string::npos || (s.size() > 3 && s.ends_with(kSuffix));
 }
@@ -172,7 +182,7 @@ const LoadedPlugin& PluginRegistry::LoadPath(const fs::path& path) {
   try {
     lib->load(canonical, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
   } catch (const std::exception& e) {
-    throw PluginError("cannot load plugin file '" + key + "': " + e.what() +
+    throw PluginError("cannot load plugin file '" + key + "': " + DynamicLoaderReason(e.what()) +
                       ". It is not a loadable shared library for this machine, or one of its "
                       "dependencies is missing (check with `ldd " +
                       key +
