@@ -171,6 +171,44 @@ TEST_F(CrashIsolationTest, AReplayThatCrashesOrHangsIsAnErrorNotTheEndOfTheCalle
   EXPECT_EQ(replay_error(2), "replayed");
 }
 
+// A TorchScript policy whose forward() hung in its load-time probe hung `validate` and `run` in
+// the main process, isolation and episode_timeout_s notwithstanding.
+TEST_F(CrashIsolationTest, APluginThatHangsOrCrashesWhileMadeIsARowErrorUnderIsolation) {
+  const std::string plugin = (testing::FixturePluginDir() / "crowdsim_throwing_policy.so").string();
+  const Suite s = LoadOrDie(
+      "name: made\nepisodes: 2\nepisode_timeout_s: 1\n"
+      "world: {source: random_rect, obstacles: 1}\nhumans: {count: 2, policy: linear}\nrows:\n"
+      "  - {label: hangs, policy: " +
+      plugin +
+      ", params: {mode: hang_on_create}}\n"
+      "  - {label: crashes, policy: " +
+      plugin +
+      ", params: {mode: segfault_on_create}}\n"
+      "  - {label: good, policy: linear}\n");
+  const std::vector<std::string> errors = PreflightSuite(s, registry_);
+  ASSERT_EQ(errors.size(), 2u);
+  EXPECT_NE(errors[0].find("row 'hangs' (rows[0]): making its plugins failed (the worker process "
+                           "that made them killed at the episode_timeout_s of 1 s while making "
+                           "policy 'throwing_policy'"),
+            std::string::npos)
+      << errors[0];
+  EXPECT_NE(errors[1].find("row 'crashes' (rows[1]): making its plugins failed (the worker "
+                           "process that made them killed by signal SIGSEGV"),
+            std::string::npos)
+      << errors[1];
+  EXPECT_THROW(Run(s, "out", 2), RunError);
+  EXPECT_FALSE(std::filesystem::exists(dir_.path() / "out" / "episodes.csv"));
+  // A plugin's own error while made still names the row, from the worker.
+  const Suite needs = LoadOrDie("name: needs\nepisodes: 1\nisolation: on\n"
+                                "world: {source: random_rect, obstacles: 1}\nrows:\n"
+                                "  - {label: n, policy: " +
+                                plugin + ", params: {mode: needs_throw}}\n");
+  const std::vector<std::string> needs_errors = PreflightSuite(needs, registry_);
+  ASSERT_EQ(needs_errors.size(), 1u);
+  EXPECT_NE(needs_errors[0].find("row 'n' (rows[0]): Needs failure (fixture)"), std::string::npos)
+      << needs_errors[0];
+}
+
 TEST_F(CrashIsolationTest, IsolatedRunsGiveTheSameEpisodesAsThreads) {
   const Suite s = LoadOrDie(kPlainSuite);
   const RunSummary threads = Run(s, "threads", 2);

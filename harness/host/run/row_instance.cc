@@ -69,6 +69,10 @@ bool RowNeedsIsolation(const Suite& suite, const RowSpec& row, IsolationMode mod
   return suite.episode_timeout_s > 0 || !AllHarnessPlugins(row);
 }
 
+double IsolatedEpisodeTimeoutS(const Suite& suite) {
+  return suite.episode_timeout_s > 0 ? suite.episode_timeout_s : kDefaultEpisodeTimeoutS;
+}
+
 ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const WorldSource& world,
                                    int episode) {
   ScenarioRequest req;
@@ -94,25 +98,17 @@ namespace {
 /// Plays the episode once in a worker (with episode_timeout_s), so a plugin crash or hang throws
 /// here instead of ending the caller. The replay is deterministic: nothing is kept.
 void ProbeInWorker(const Suite& suite, size_t row_index, int episode, PluginRegistry& registry) {
-  std::optional<WorkerLoss> lost;
-  WorkerPoolOptions options;
-  options.task_timeout_s =
-      suite.episode_timeout_s > 0 ? suite.episode_timeout_s : kDefaultEpisodeTimeoutS;
-  WorkerPoolCallbacks callbacks;
-  callbacks.run = [&](std::size_t) -> std::string {
-    try {
-      ReplayEpisode(suite, row_index, episode, registry, false, /*probe=*/false);
-    } catch (const std::exception&) {
-      // The replay in the caller's process throws the same, with its message.
-    }
-    return "done";
-  };
-  callbacks.done = [](std::size_t, const std::string&) { return true; };
-  callbacks.lost = [&](std::size_t, const WorkerLoss& loss) {
-    lost = loss;
-    return false;
-  };
-  RunInWorkerProcesses(1, options, callbacks);
+  const std::optional<WorkerLoss> lost =
+      RunOnceInWorker(IsolatedEpisodeTimeoutS(suite), [&]() -> std::string {
+                        try {
+                          ReplayEpisode(suite, row_index, episode, registry, false,
+                                        /*probe=*/false);
+                        } catch (const std::exception&) {
+                          // The replay in the caller's process throws the same, with its message.
+                        }
+                        return "done";
+                      })
+          .loss;
   if (!lost) return;
   if (lost->Interrupted()) {
     throw std::runtime_error("the replay of episode " + std::to_string(episode) + " of row '" +

@@ -19,18 +19,15 @@ std::string SuiteRow::Where(int episode) const {
 void SuiteRow::Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
                          std::set<std::string>* checked) {
   const RowSpec& row = spec();
+  const bool isolated = RowNeedsIsolation(suite_, row, mode);
   std::unique_ptr<RowInstance> instance;
   Scenario episode0;
   try {
     world_ = registry.MakeWorld(*row.world.loaded, row.world.params);
-    instance = std::make_unique<RowInstance>(row, registry);
-    instance->Agents(1);
-    if (const std::string unmet = instance->UnmetSensorNeed(); !unmet.empty()) {
-      throw RunError(Place() + ": " + unmet + "; add it to the row's sensors list");
-    }
-    if (const std::string unmet = instance->HumansNeedRobotOnly(); !unmet.empty()) {
-      throw RunError(Place() + ": " + unmet + " (a human sees the others through the neighbour " +
-                     "index); " + kPlainHumansPolicy);
+    if (isolated) {
+      MakePluginsInWorker(registry);
+    } else {
+      instance = MakePlugins(registry);
     }
     try {
       episode0 = MakeEpisodeScenario(suite_, row, *world_, 0);
@@ -46,7 +43,42 @@ void SuiteRow::Preflight(PluginRegistry& registry, int episodes, IsolationMode m
     throw RunError(Place() + ": " + e.what());
   }
   CheckEveryLayout(episodes, checked);
-  CheckFirstStep(*instance, episode0, mode);
+  if (instance) CheckFirstStep(*instance, episode0);
+}
+
+std::unique_ptr<RowInstance> SuiteRow::MakePlugins(PluginRegistry& registry) const {
+  auto instance = std::make_unique<RowInstance>(spec(), registry);
+  instance->Agents(1);
+  if (const std::string unmet = instance->UnmetSensorNeed(); !unmet.empty()) {
+    throw RunError(Place() + ": " + unmet + "; add it to the row's sensors list");
+  }
+  if (const std::string unmet = instance->HumansNeedRobotOnly(); !unmet.empty()) {
+    throw RunError(Place() + ": " + unmet + " (a human sees the others through the neighbour " +
+                   "index); " + kPlainHumansPolicy);
+  }
+  return instance;
+}
+
+// An isolated row's plugins are made in a worker under the episodes' timeout: one that hangs or
+// crashes while it is made (e.g. probing its model) is an error naming the row, not a stuck run.
+void SuiteRow::MakePluginsInWorker(PluginRegistry& registry) const {
+  const OnceInWorker made = RunOnceInWorker(IsolatedEpisodeTimeoutS(suite_), [&]() -> std::string {
+    try {
+      MakePlugins(registry);
+    } catch (const RunError& e) {
+      return e.what();
+    } catch (const std::exception& e) {
+      return Place() + ": " + e.what();
+    }
+    return "";
+  });
+  if (made.loss) {
+    throw RunError(Place() + ": making its plugins " +
+                   (made.loss->Interrupted() ? "was stopped from outside (the worker process "
+                                             : "failed (the worker process that made them ") +
+                   made.loss->Describe() + " while making " + Suspects() + ")");
+  }
+  if (!made.bytes.empty()) throw RunError(made.bytes);
 }
 
 // The first scenario of each other frozen layout among the first `episodes`: a crowd may fit one
@@ -76,9 +108,8 @@ void SuiteRow::CheckEveryLayout(int episodes, std::set<std::string>* checked) co
 
 // Episode 0's first step, so what fails every step fails before the run. Only for rows of the
 // harness's own plugins: another's crash would end this process.
-void SuiteRow::CheckFirstStep(RowInstance& instance, const Scenario& episode0,
-                              IsolationMode mode) const {
-  if (!AllHarnessPlugins(spec()) || RowNeedsIsolation(suite_, spec(), mode)) return;
+void SuiteRow::CheckFirstStep(RowInstance& instance, const Scenario& episode0) const {
+  if (!AllHarnessPlugins(spec())) return;
   try {
     Episode episode(episode0, suite_.sim, instance.Agents(episode0.humans.size()));
     if (!episode.done()) episode.Step();

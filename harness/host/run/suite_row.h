@@ -23,9 +23,9 @@ class SuiteRow {
   /// "row 'orca', episode 3": how run errors name an episode.
   std::string Where(int episode) const;
 
-  /// Builds the row's world and plugins once, checks sensor needs and the scenarios of episode 0
-  /// and each frozen layout among the first `episodes`, and plays episode 0's first step if `mode`
-  /// allows it in-process. `checked`: (world, crowd) pairs passed. Throws RunError naming the row.
+  /// Builds the row's world and plugins once (the plugins in a worker process when `mode` isolates
+  /// the row), checks sensor needs and the scenarios of episode 0 and each frozen layout among the
+  /// first `episodes`, and plays episode 0's first step in-process when not isolated. `checked`: (world, crowd) pairs passed. Throws RunError naming the row.
   void Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
                  std::set<std::string>* checked);
   /// The world Preflight built; null before.
@@ -38,7 +38,9 @@ class SuiteRow {
 
  private:
   void CheckEveryLayout(int episodes, std::set<std::string>* checked) const;
-  void CheckFirstStep(RowInstance& instance, const Scenario& episode0, IsolationMode mode) const;
+  std::unique_ptr<RowInstance> MakePlugins(PluginRegistry& registry) const;
+  void MakePluginsInWorker(PluginRegistry& registry) const;
+  void CheckFirstStep(RowInstance& instance, const Scenario& episode0) const;
   std::string Suspects() const;
 
   const Suite& suite_;

@@ -273,4 +273,22 @@ void RunInWorkerProcesses(std::size_t count, const WorkerPoolOptions& options,
   pool.Run();
 }
 
+OnceInWorker RunOnceInWorker(double timeout_s, const std::function<std::string()>& task) {
+  OnceInWorker out;
+  WorkerPoolOptions options;
+  options.task_timeout_s = timeout_s;
+  WorkerPoolCallbacks callbacks;
+  callbacks.run = [&](std::size_t) { return task(); };
+  callbacks.done = [&](std::size_t, std::string bytes) {
+    out.bytes = std::move(bytes);
+    return true;
+  };
+  callbacks.lost = [&](std::size_t, const WorkerLoss& loss) {
+    out.loss = loss;
+    return false;
+  };
+  RunInWorkerProcesses(1, options, callbacks);
+  return out;
+}
+
 }  // namespace crowdsim

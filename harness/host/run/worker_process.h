@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace crowdsim {
@@ -38,6 +39,13 @@ struct WorkerPoolCallbacks {
   /// In the parent: task `t`'s worker died or ran past the limit.
   std::function<bool(std::size_t t, const WorkerLoss& loss)> lost;
 };
+
+/// Runs `task` once in a forked worker within `timeout_s` (0 = none): its bytes, or why none came.
+struct OnceInWorker {
+  std::string bytes;
+  std::optional<WorkerLoss> loss;
+};
+OnceInWorker RunOnceInWorker(double timeout_s, const std::function<std::string()>& task);
 
 /// Runs tasks 0..count-1 in workers, each once (no retries). Throws std::runtime_error if a process
 /// or pipe fails. Hold no locks the child needs.

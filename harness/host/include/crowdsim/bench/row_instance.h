@@ -64,6 +64,9 @@ bool AllHarnessPlugins(const RowSpec& row);
 /// plugin not the harness's own.
 bool RowNeedsIsolation(const Suite& suite, const RowSpec& row, IsolationMode mode);
 
+/// An isolated episode's wall-clock limit: the suite's episode_timeout_s, else the default.
+double IsolatedEpisodeTimeoutS(const Suite& suite);
+
 /// Re-simulates one suite episode exactly as `run` does, optionally recording the trajectory.
 /// Throws PluginError, or std::out_of_range for a bad row. A row `run` would isolate is first
 /// played in a worker (`probe`): a crash or hang there is a std::runtime_error naming the episode.
