@@ -6,6 +6,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -56,6 +58,15 @@ void WriteFileAtomically(const fs::path& path, const std::string& text) {
     ::unlink(name.c_str());
     throw std::runtime_error("cannot replace " + path.string() + ": " + std::strerror(error));
   }
+}
+
+void CopyFileAtomically(const fs::path& from, const fs::path& to) {
+  std::ifstream in(from, std::ios::binary);
+  std::ostringstream bytes;
+  if (!(in && bytes << in.rdbuf())) {
+    throw std::runtime_error("cannot read " + from.string() + ": " + std::strerror(errno));
+  }
+  WriteFileAtomically(to, bytes.str());
 }
 
 }  // namespace crowdsim::common

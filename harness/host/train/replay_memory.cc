@@ -2,7 +2,10 @@
 
 #include <cstdint>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
+
+#include "atomic_file.h"
 
 namespace crowdsim::training {
 
@@ -12,7 +15,7 @@ constexpr std::uint64_t kMagic = 0x32594d4552524353ULL;    // "SCRREMY2": entrie
 constexpr std::uint64_t kMagicV1 = 0x31594d4552524353ULL;  // before sources
 
 template <typename T>
-void Put(std::ofstream& out, const T& v) {
+void Put(std::ostream& out, const T& v) {
   out.write(reinterpret_cast<const char*>(&v), sizeof(T));
 }
 
@@ -41,7 +44,7 @@ void ReplayMemory::Push(EncodedState state, float value, MemorySource source) {
 }
 
 void ReplayMemory::Save(const std::filesystem::path& file) const {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  std::ostringstream out;  // then written whole: a full disk is said as such
   Put(out, kMagic);
   Put(out, static_cast<std::uint64_t>(capacity_));
   Put(out, static_cast<std::uint64_t>(position_));
@@ -53,7 +56,7 @@ void ReplayMemory::Save(const std::filesystem::path& file) const {
     out.write(reinterpret_cast<const char*>(states_[i].values.data()),
               static_cast<std::streamsize>(states_[i].values.size() * sizeof(float)));
   }
-  if (!out) throw std::runtime_error("cannot write the replay memory to " + file.string());
+  common::WriteFileAtomically(file, out.str());
 }
 
 void ReplayMemory::Load(const std::filesystem::path& file) {

@@ -12,6 +12,7 @@
 #include <optional>
 #include <sstream>
 
+#include "atomic_file.h"
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/results.h"
 #include "crowdsim/bench/row_instance.h"
@@ -126,6 +127,7 @@ class Trainer {
   ValidationResult Validate(int rl_episode);
   double TrainOn(std::span<const std::size_t> indices);
   void SaveCheckpoint();
+  std::string CheckpointFailure(const fs::path& tmp, std::string what) const;
   void LoadCheckpoint();
   /// Accepts a checkpoint whose configuration differs only in training.rl_episodes (throws
   /// otherwise).
@@ -502,23 +504,43 @@ void Trainer::SaveCheckpoint() {
   const auto t0 = Clock::now();
   const fs::path dir = Out("checkpoint");
   const fs::path tmp = Out("checkpoint.tmp");
-  fs::remove_all(tmp);
-  fs::create_directories(tmp);
-  learner_->SaveWeights(tmp / "model.pt");
-  learner_->SaveTrainingState(tmp);
-  memory_.Save(tmp / "memory.bin");
-  probe_.Save(tmp / "probe.bin");
-  // Best weights are state: resume restores them, so best.pt never outruns the checkpoint.
-  if (state_.best_episode >= 0 && fs::exists(Out("best.pt")))
-    fs::copy_file(Out("best.pt"), tmp / "best.pt");
-  state_.episode_log_bytes = episode_log_.Flush();
-  state_.rl_episodes = t_.rl_episodes;
-  WriteCheckpointState(tmp / "state.txt", state_);
+  try {
+    fs::remove_all(tmp);
+    fs::create_directories(tmp);
+    learner_->SaveWeights(tmp / "model.pt");
+    learner_->SaveTrainingState(tmp);
+    memory_.Save(tmp / "memory.bin");
+    probe_.Save(tmp / "probe.bin");
+    // Best weights are state: resume restores them, so best.pt never outruns the checkpoint.
+    if (state_.best_episode >= 0 && fs::exists(Out("best.pt")))
+      common::CopyFileAtomically(Out("best.pt"), tmp / "best.pt");
+    state_.episode_log_bytes = episode_log_.Flush();
+    state_.rl_episodes = t_.rl_episodes;
+    WriteCheckpointState(tmp / "state.txt", state_);
+  } catch (const std::exception& e) {
+    throw TrainError(CheckpointFailure(tmp, e.what()));
+  }
   // Replace the old checkpoint; LoadCheckpoint accepts a complete checkpoint.tmp after a crash.
   fs::remove_all(dir);
   fs::rename(tmp, dir);
   WriteLearningCurve();
   summary_.times.checkpoints += Since(t0);
+}
+
+// Why a checkpoint could not be written, a full disk said as such; the half-written one is removed.
+std::string Trainer::CheckpointFailure(const fs::path& tmp, std::string what) const {
+  what = what.substr(0, what.find("\nException raised from"));  // libtorch's stack trace
+  std::error_code ec;
+  fs::remove_all(tmp, ec);
+  const fs::space_info space = fs::space(summary_.out_dir, ec);
+  const bool full = !ec && space.available < (std::uintmax_t{4} << 20);
+  return "cannot save the checkpoint in '" + tmp.string() + "': " + what +
+         (full ? "; the disk is full (" + std::to_string(space.available >> 10) + " kB free)"
+               : "") +
+         ". " +
+         (fs::exists(Out("checkpoint") / "state.txt")
+              ? "The previous checkpoint/ is unchanged: free space, then continue with --resume"
+              : "No checkpoint was made yet: free space, then start again");
 }
 
 void Trainer::AcceptNewRlLength(const fs::path& dir) {
@@ -559,8 +581,13 @@ void Trainer::LoadCheckpoint() {
     dir = Out("checkpoint.tmp");
   }
   if (!fs::exists(dir / "state.txt")) {
-    throw TrainRefused("--resume: no checkpoint in '" + summary_.out_dir.string() +
-                       "' (start without --resume, or give the --out of the interrupted training)");
+    throw TrainRefused(
+        "--resume: no checkpoint in '" + summary_.out_dir.string() + "'" +
+        (fs::exists(Out("weights.pt"))
+             ? ": its weights.pt is a model without a training state (copied there, or its "
+               "checkpoint/ was removed), which cannot be resumed; train into another folder "
+               "with --out (without --resume)"
+             : " (start without --resume, or give the --out of the interrupted training)"));
   }
   state_ = ReadCheckpointState(dir / "state.txt");
   if (state_.config_hash != spec_.ConfigHash()) AcceptNewRlLength(dir);
@@ -571,7 +598,7 @@ void Trainer::LoadCheckpoint() {
     if (fs::exists(dir / "probe.bin")) probe_.Load(dir / "probe.bin");
     // The checkpoint's best weights (absent from older checkpoints).
     if (fs::exists(dir / "best.pt")) {
-      fs::copy_file(dir / "best.pt", Out("best.pt"), fs::copy_options::overwrite_existing);
+      common::CopyFileAtomically(dir / "best.pt", Out("best.pt"));
     } else if (state_.best_episode < 0) {
       fs::remove(Out("best.pt"));
     }
@@ -679,7 +706,13 @@ TrainSummary Trainer::Run() {
     OpenEpisodeLog(state_.episode_log_bytes);
     progress_.Note("resumed from " + (summary_.out_dir / "checkpoint").string());
   } else {
-    if (fs::exists(Out("checkpoint")) || fs::exists(Out("weights.pt"))) {
+    if (!fs::exists(Out("checkpoint")) && fs::exists(Out("weights.pt"))) {
+      throw TrainRefused("'" + summary_.out_dir.string() +
+                         "' already holds a weights.pt with no checkpoint/ to resume from (a "
+                         "copied model, or a training whose checkpoint was removed); training "
+                         "here would replace it: train into another folder with --out");
+    }
+    if (fs::exists(Out("checkpoint"))) {
       // --resume continues only this configuration: say so when the folder holds another.
       std::ostringstream started;
       started << std::ifstream(Out("training.yaml")).rdbuf();

@@ -1,8 +1,13 @@
 // Trainings end to end: a short training beats the untrained network, a tiny one is
 // deterministic and resumes exactly, and every model / sensor combination trains.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <csignal>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -10,6 +15,7 @@
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "learning_test_util.h"
+#include "value_rl/value_policy.h"
 #include "test_paths.h"
 
 namespace crowdsim::testing {
@@ -206,6 +212,36 @@ TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
                training::TrainError);
 }
 
+// A model copied into the folder was answered "pass --resume", and --resume "no checkpoint".
+TEST(TrainingTest, AFolderHoldingOnlyAModelIsNotSentInACircle) {
+  TempDir dir;
+  TrainFile f;
+  f.training = kTiny;
+  const auto file = WriteTrainFile(dir, f);
+  fs::create_directories(dir.path() / "out");
+  std::ofstream(dir.path() / "out" / "weights.pt") << "someone's model";
+  std::string fresh, resumed;
+  try {
+    Train(file, dir.path() / "out");
+  } catch (const training::TrainRefused& e) {
+    fresh = e.what();
+  }
+  try {
+    Train(file, dir.path() / "out", true);
+  } catch (const training::TrainRefused& e) {
+    resumed = e.what();
+  }
+  for (const std::string& what : {fresh, resumed}) {
+    EXPECT_NE(what.find("train into another folder with --out"), std::string::npos) << what;
+    EXPECT_EQ(what.find("pass --resume"), std::string::npos) << what;
+  }
+  EXPECT_NE(fresh.find("already holds a weights.pt with no checkpoint/"), std::string::npos)
+      << fresh;
+  EXPECT_NE(resumed.find("its weights.pt is a model without a training state"), std::string::npos)
+      << resumed;
+  EXPECT_EQ(ReadText(dir.path() / "out" / "weights.pt"), "someone's model");
+}
+
 TEST(TrainingTest, LengtheningTheRlPhaseContinuesLikeALongerTraining) {
   TempDir dir;
   TrainFile f;
@@ -286,6 +322,71 @@ TEST(TrainingTest, AnIncompleteOrDamagedCheckpointIsNamedNotAStackTrace) {
   const std::string damaged = message();
   EXPECT_NE(damaged.find("cannot read"), std::string::npos) << damaged;
   EXPECT_EQ(damaged.find("frame #"), std::string::npos) << damaged;
+}
+
+/// What `task` throws in a forked child whose files may not grow past `limit` bytes (EFBIG, as a
+/// full disk fails writes); "died of signal N" when it does not return.
+std::string WhatUnderFileSizeLimit(rlim_t limit, const std::function<void()>& task) {
+  int fds[2];
+  if (pipe(fds) != 0) return "no pipe";
+  const pid_t child = fork();
+  if (child == 0) {
+    close(fds[0]);
+    signal(SIGXFSZ, SIG_IGN);
+    const rlimit l{limit, limit};
+    setrlimit(RLIMIT_FSIZE, &l);
+    std::string what = "no error";
+    try {
+      task();
+    } catch (const std::exception& e) {
+      what = e.what();
+    }
+    (void)!write(fds[1], what.data(), what.size());
+    _exit(0);
+  }
+  close(fds[1]);
+  std::string what;
+  char buf[4096];
+  for (ssize_t n; (n = read(fds[0], buf, sizeof(buf))) > 0;) what.append(buf, std::size_t(n));
+  close(fds[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFSIGNALED(status) ? "died of signal " + std::to_string(WTERMSIG(status)) : what;
+}
+
+// A full disk ended the process in libtorch's file writer (SIGABRT) and showed std::filesystem's
+// "Input/output error" when best.pt was copied.
+TEST(TrainingTest, AFullDiskIsSaidAsSuchAndKeepsThePreviousCheckpoint) {
+  TempDir dir;
+  TrainFile f;
+  f.training = std::string(kTiny).replace(std::string(kTiny).find("validation_interval: 6"), 22,
+                                          "validation_interval: 7");
+  const auto file = WriteTrainFile(dir, f);
+  Train(file, dir.path() / "out", false, 15);  // stops in RL, after a checkpoint
+  const fs::path checkpoint = dir.path() / "out" / "checkpoint";
+  // Weights writes fail, the process lives.
+  value_rl::ValueRlConfig c;
+  value_rl::ValuePolicy policy(c);
+  const std::string weights =
+      WhatUnderFileSizeLimit(4096, [&] { policy.SaveWeights(dir.path() / "w.pt"); });
+  EXPECT_NE(weights.find("cannot write " + (dir.path() / "w.pt").string() + ": File too large"),
+            std::string::npos)
+      << weights;
+  // Resuming copies best.pt: the copy's failure says why.
+  const std::string resumed =
+      WhatUnderFileSizeLimit(4096, [&] { Train(file, dir.path() / "out", true); });
+  EXPECT_NE(resumed.find("best.pt: File too large"), std::string::npos) << resumed;
+  // Without best.pt to copy (older checkpoints lack it) the resume goes on to the next
+  // checkpoint (RL episode 20; validations at 14 and 21), whose first file fails.
+  fs::remove(checkpoint / "best.pt");
+  const std::string saved =
+      WhatUnderFileSizeLimit(4096, [&] { Train(file, dir.path() / "out", true); });
+  EXPECT_NE(saved.find("cannot save the checkpoint in"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("model.pt: File too large"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("The previous checkpoint/ is unchanged"), std::string::npos) << saved;
+  EXPECT_FALSE(fs::exists(dir.path() / "out" / "checkpoint.tmp"));
+  // The kept checkpoint still resumes to the end.
+  EXPECT_NO_THROW(Train(file, dir.path() / "out", true));
 }
 
 /// The last line's replay-memory counts (imitation, success, collision, timeout).

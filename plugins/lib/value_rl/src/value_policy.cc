@@ -280,7 +280,7 @@ void ValuePolicy::SaveTrainingState(const fs::path& dir) const {
   archive.write("momentum", c10::IValue(m.momentum));
   archive.write("has_optimizer", c10::IValue(m.optimizer != nullptr));
   if (m.optimizer) m.optimizer->save(archive);
-  archive.save_to((dir / "optimizer.pt").string());
+  SaveArchive(archive, dir / "optimizer.pt");
 }
 
 void ValuePolicy::LoadTrainingState(const fs::path& dir) {

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "atomic_file.h"
 #include "crowdsim/input_file.h"
 #include "value_rl/zip_crc_check.h"
 
@@ -54,9 +55,14 @@ void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs:
                   c10::IValue(PriorText(meta.route_prior, meta.route_prior_shape)));
   net.save(archive);
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
-  const fs::path tmp = file.string() + ".tmp";
-  archive.save_to(tmp.string());
-  fs::rename(tmp, file);
+  SaveArchive(archive, file);
+}
+
+void SaveArchive(torch::serialize::OutputArchive& archive, const fs::path& file) {
+  // In memory first: libtorch's file writer aborts the process when the disk fills.
+  std::ostringstream bytes;
+  archive.save_to(bytes);
+  common::WriteFileAtomically(file, bytes.str());
 }
 
 void LoadWeightsFile(const WeightsMeta& expected, const fs::path& file, ValueNetwork* net) {

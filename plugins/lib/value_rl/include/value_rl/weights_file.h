@@ -9,6 +9,10 @@
 #include "value_rl/config.h"
 #include "value_rl/value_network.h"
 
+namespace torch::serialize {
+class OutputArchive;
+}
+
 namespace crowdsim::value_rl {
 
 /// What a weights file was trained for.
@@ -27,6 +31,10 @@ WeightsMeta MetaOf(const ValueRlConfig& config);
 /// Writes the network and `meta` (atomically: a temporary file, then a rename).
 void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta,
                      const std::filesystem::path& file);
+
+/// Writes `archive` to `file` whole or not at all; a full disk throws std::runtime_error naming
+/// the file and the reason, the previous file unchanged.
+void SaveArchive(torch::serialize::OutputArchive& archive, const std::filesystem::path& file);
 
 /// Loads into `net`; throws std::runtime_error naming the file, the expected and the found
 /// values when the metadata differ, the entry when the file is damaged (CRC-32 or size of an
