@@ -13,6 +13,7 @@ packages=(
   libompl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libpng-dev libcairo2-dev libgif-dev zlib1g-dev
+  libavcodec-dev libavformat-dev libswscale-dev  # render --animate to .mp4, tested like .gif
   libopenmpi-dev openmpi-bin
   python3-dev python3-pybind11 python3-numpy
   chromium  # the report's test opens the page in headless Chromium

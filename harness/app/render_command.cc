@@ -1,4 +1,8 @@
 // render: one episode as a figure (svg, png, pdf) or an animation (gif, mp4).
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 
@@ -12,6 +16,44 @@
 #include "crowdsim/render/output_format.h"
 
 namespace crowdsim::cli {
+
+namespace {
+
+// An animation's frames on stderr once it has taken 2 s: in place on a terminal, else every 10%.
+class FrameProgress {
+ public:
+  explicit FrameProgress(std::string out) : out_(std::move(out)) {}
+  void Frame(size_t done, size_t total) {
+    const auto now = Clock::now();
+    if (now - start_ < std::chrono::seconds(2)) return;
+    const size_t decile = total > 0 ? done * 10 / total : 10;
+    if (tty_ ? now - last_ < std::chrono::milliseconds(200) && done != total
+             : decile == last_decile_) {
+      return;
+    }
+    last_ = now;
+    last_decile_ = decile;
+    const double secs = std::chrono::duration<double>(now - start_).count();
+    const double eta = done > 0 ? secs * static_cast<double>(total - done) / done : 0.0;
+    std::fprintf(stderr, "%s[render] %s: frame %zu/%zu  ETA %.0fs%s", tty_ ? "\r" : "",
+                 out_.c_str(), done, total, eta, tty_ ? "   " : "\n");
+    std::fflush(stderr);
+    printed_ = true;
+  }
+  void Finish() const {
+    if (printed_ && tty_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::string out_;
+  bool tty_ = isatty(STDERR_FILENO);
+  bool printed_ = false;
+  Clock::time_point start_ = Clock::now(), last_{};
+  size_t last_decile_ = 11;
+};
+
+}  // namespace
 
 int RenderCommand(const std::vector<std::string>& args) {
   const Args a = Args::Parse(
@@ -120,7 +162,10 @@ int RenderCommand(const std::vector<std::string>& args) {
   if (animate) {
     render::AnimationOptions options;
     options.speed = speed;
+    FrameProgress progress(*out);
+    options.on_frame = [&](size_t done, size_t total) { progress.Frame(done, total); };
     render::WriteAnimation(figure, suite.sim.time_step, *out, options);
+    progress.Finish();
   } else {
     render::WriteFigure(render::DrawEpisode(figure), *out, png_scale);
   }

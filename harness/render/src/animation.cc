@@ -30,8 +30,12 @@ void WriteGif(const EpisodeFigure& figure, double time_step, const std::filesyst
   const std::vector<RgbImage> samples = {Rasterize(DrawEpisodeFrame(figure, 0, fopt)),
                                          Rasterize(DrawEpisodeFrame(figure, n - 1, fopt))};
   GifWriter gif(path, samples[0].width, samples[0].height, samples);
-  for (const TimedFrame& f : GifTimeline(n, time_step, options.speed, options.hold_end_s)) {
-    gif.AddFrame(Rasterize(DrawEpisodeFrame(figure, f.frame, fopt)), f.delay_cs);
+  const std::vector<TimedFrame> timeline =
+      GifTimeline(n, time_step, options.speed, options.hold_end_s);
+  for (size_t k = 0; k < timeline.size(); ++k) {
+    gif.AddFrame(Rasterize(DrawEpisodeFrame(figure, timeline[k].frame, fopt)),
+                 timeline[k].delay_cs);
+    if (options.on_frame) options.on_frame(k + 1, timeline.size());
   }
   gif.Finish();
 }
@@ -56,6 +60,8 @@ void WriteMp4(const EpisodeFigure& figure, double time_step, const std::filesyst
       shown = f;
     }
     mp4.AddFrame(image);
+    if (options.on_frame)
+      options.on_frame(static_cast<size_t>(k) + 1, static_cast<size_t>(video_frames));
   }
   mp4.Finish();
 }

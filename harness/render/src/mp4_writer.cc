@@ -1,11 +1,17 @@
 #include "crowdsim/render/mp4_writer.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #ifdef CROWDSIM_RENDER_WITH_MP4
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "atomic_file.h"
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -33,6 +39,9 @@ std::string AvError(int code) {
 
 struct Mp4Writer::Impl {
   std::filesystem::path path;
+  std::string temp;  // the file written, renamed to `path` by Finish; removed if never finished
+  int fd = -1;
+  int write_errno = 0;  // the first failed write's errno
   AVFormatContext* format = nullptr;
   AVCodecContext* encoder = nullptr;
   AVStream* stream = nullptr;
@@ -45,7 +54,6 @@ struct Mp4Writer::Impl {
   int even_height = 0;
   std::vector<std::uint8_t> padded;
   std::int64_t pts = 0;
-  bool header_written = false;
   bool finished = false;
 
   void Check(int status, const char* what) const {
@@ -66,15 +74,39 @@ struct Mp4Writer::Impl {
     }
   }
 
+  // The muxer writes and seeks through the temp file's descriptor (custom I/O), never by name.
+  static int WritePacket(void* opaque, uint8_t* buf, int size) {
+    Impl& m = *static_cast<Impl*>(opaque);
+    const int error = common::WriteAll(m.fd, reinterpret_cast<const char*>(buf),
+                                       static_cast<size_t>(size));
+    if (error == 0) return size;
+    if (m.write_errno == 0) m.write_errno = error;
+    return AVERROR(error);
+  }
+  static int64_t Seek(void* opaque, int64_t offset, int whence) {
+    Impl& m = *static_cast<Impl*>(opaque);
+    if (whence & AVSEEK_SIZE) {
+      struct stat st {};
+      return fstat(m.fd, &st) == 0 ? static_cast<int64_t>(st.st_size) : AVERROR(errno);
+    }
+    const off_t at = lseek(m.fd, static_cast<off_t>(offset), whence & ~AVSEEK_FORCE);
+    return at < 0 ? AVERROR(errno) : static_cast<int64_t>(at);
+  }
+
   ~Impl() {
     if (sws) sws_freeContext(sws);
     if (packet) av_packet_free(&packet);
     if (frame) av_frame_free(&frame);
     if (encoder) avcodec_free_context(&encoder);
     if (format) {
-      if (format->pb) avio_closep(&format->pb);
+      if (format->pb) {
+        av_freep(&format->pb->buffer);
+        avio_context_free(&format->pb);
+      }
       avformat_free_context(format);
     }
+    if (fd >= 0) close(fd);
+    if (!temp.empty()) unlink(temp.c_str());
   }
 };
 
@@ -117,9 +149,19 @@ Mp4Writer::Mp4Writer(const std::filesystem::path& path, int width, int height, i
   m.Check(avcodec_open2(m.encoder, codec, nullptr), "opening the encoder");
   m.Check(avcodec_parameters_from_context(m.stream->codecpar, m.encoder), "stream parameters");
   m.stream->time_base = m.encoder->time_base;
-  m.Check(avio_open(&m.format->pb, path.c_str(), AVIO_FLAG_WRITE), "opening the file");
+  // A new file beside `path`, renamed over it when whole: an interrupted render leaves the
+  // previous video as it was.
+  m.fd = common::CreateBeside(path, &m.temp);
+  constexpr int kIoBuffer = 1 << 16;
+  auto* buffer = static_cast<unsigned char*>(av_malloc(kIoBuffer));
+  m.format->pb = avio_alloc_context(buffer, kIoBuffer, 1, &m, nullptr, &Impl::WritePacket,
+                                    &Impl::Seek);
+  if (m.format->pb == nullptr) {
+    av_free(buffer);
+    throw std::runtime_error("cannot write " + path.string() + ": out of memory");
+  }
+  m.format->flags |= AVFMT_FLAG_CUSTOM_IO;
   m.Check(avformat_write_header(m.format, nullptr), "header");
-  m.header_written = true;
   m.frame = av_frame_alloc();
   m.frame->format = AV_PIX_FMT_YUV420P;
   m.frame->width = m.even_width;
@@ -133,15 +175,8 @@ Mp4Writer::Mp4Writer(const std::filesystem::path& path, int width, int height, i
   m.padded.assign(static_cast<size_t>(m.even_width) * m.even_height * 3, 255);
 }
 
-Mp4Writer::~Mp4Writer() {
-  if (impl_ && impl_->header_written && !impl_->finished) {
-    try {
-      Finish();
-    } catch (const std::exception&) {
-      // Destructors do not throw; Finish() reports errors to callers that call it.
-    }
-  }
-}
+// Without Finish (an error or an interrupt), Impl removes the unfinished file: `path` stays.
+Mp4Writer::~Mp4Writer() = default;
 
 void Mp4Writer::AddFrame(const RgbImage& image) {
   Impl& m = *impl_;
@@ -169,6 +204,18 @@ void Mp4Writer::Finish() {
   m.finished = true;
   m.Encode(nullptr);
   m.Check(av_write_trailer(m.format), "trailer");
+  avio_flush(m.format->pb);
+  if (m.write_errno == 0 && close(m.fd) != 0) m.write_errno = errno;
+  m.fd = -1;
+  if (m.write_errno != 0) {
+    throw std::runtime_error("cannot write " + m.path.string() + ": " +
+                             std::strerror(m.write_errno) +
+                             " (the previous file, if any, is unchanged)");
+  }
+  if (std::rename(m.temp.c_str(), m.path.c_str()) != 0) {
+    throw std::runtime_error("cannot replace " + m.path.string() + ": " + std::strerror(errno));
+  }
+  m.temp.clear();
 }
 
 #else  // no libav: the class exists so callers compile; constructing it explains what to do

@@ -12,6 +12,7 @@
 #include "crowdsim/render/episode_replay.h"
 #include "crowdsim/render/figure_output.h"
 #include "crowdsim/render/gif_writer.h"
+#include "crowdsim/render/mp4_writer.h"
 #include "crowdsim/render/output_format.h"
 #include "crowdsim/render/palette.h"
 #include "scripted.h"
@@ -167,6 +168,47 @@ TEST(Animation, AnInterruptedGifLeavesThePreviousFileWhole) {
     wrong.height = 4;
     wrong.pixels.assign(4 * 4 * 3, 0);
     EXPECT_THROW(gif.AddFrame(wrong, 10), std::invalid_argument);
+  }
+  EXPECT_EQ(crowdsim::testing::ReadText(path), good);
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(tmp.path()))
+    files += e.is_regular_file();
+  EXPECT_EQ(files, 1);
+}
+
+// `render --animate` of a long episode ran for minutes without a word: it reports each frame.
+TEST(Animation, EveryFrameWrittenIsReported) {
+  const Scripted s;
+  TempDir tmp;
+  for (const char* name : {"a.gif", "a.mp4"}) {
+    if (std::string(name) == "a.mp4" && !Mp4Supported()) continue;
+    std::vector<std::pair<size_t, size_t>> calls;
+    AnimationOptions opt;
+    opt.on_frame = [&](size_t done, size_t total) { calls.emplace_back(done, total); };
+    WriteAnimation(s.Figure(), 0.25, tmp.path() / name, opt);
+    ASSERT_FALSE(calls.empty()) << name;
+    for (size_t k = 0; k < calls.size(); ++k) {
+      EXPECT_EQ(calls[k].first, k + 1) << name;
+      EXPECT_EQ(calls[k].second, calls.size()) << name;
+    }
+  }
+}
+
+// As the GIF: an MP4 cut short leaves the previous file as it was and nothing beside it.
+TEST(Animation, AnInterruptedMp4LeavesThePreviousFileWhole) {
+  if (!Mp4Supported()) GTEST_SKIP() << "this build has no MP4 support (libav not found)";
+  const Scripted s;
+  TempDir tmp;
+  const auto path = tmp.path() / "a.mp4";
+  WriteAnimation(s.Figure(), 0.25, path, AnimationOptions{});
+  const std::string good = crowdsim::testing::ReadText(path);
+  {
+    Mp4Writer mp4(path, 8, 8, 25);
+    RgbImage wrong;
+    wrong.width = 4;
+    wrong.height = 4;
+    wrong.pixels.assign(4 * 4 * 3, 0);
+    EXPECT_THROW(mp4.AddFrame(wrong), std::invalid_argument);
   }
   EXPECT_EQ(crowdsim::testing::ReadText(path), good);
   int files = 0;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "crowdsim/render/episode_figure.h"
@@ -13,6 +14,8 @@ struct AnimationOptions {
   double speed = 1.0;       ///< playback speed, x real time, in (0, 100]
   double max_side = 560.0;  ///< px, the longer side of the world area
   double hold_end_s = 1.5;  ///< s the last frame stays before the loop restarts
+  /// Called after each frame written: (frames done, frames in all); e.g. a progress line.
+  std::function<void(size_t done, size_t total)> on_frame;
 };
 
 /// One shown frame: the trajectory frame index and how long it stays (centiseconds).

@@ -21,7 +21,8 @@ class Mp4Writer {
 
   /// Appends one frame of the video's size.
   void AddFrame(const RgbImage& frame);
-  /// Flushes the encoder and writes the trailer.
+  /// Flushes the encoder, writes the trailer and puts the whole file at `path` (written beside it
+  /// until then). A writer destroyed without Finish leaves `path` as it was.
   void Finish();
 
  private:
