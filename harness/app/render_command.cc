@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "commands.h"
+#include "crowdsim/bench/input_files.h"
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/cli/args.h"
@@ -156,6 +157,8 @@ int RenderCommand(const std::vector<std::string>& args) {
   } catch (const PluginError& e) {
     throw named(compare_row, e);
   }
+  if (const std::string over = OutputOverAnInput({*out}, SuiteInputFiles(suite)); !over.empty())
+    throw UsageError(over);
   CreateFolderOf("--out", *out);  // every argument checked, the episodes replayed
   const render::EpisodeFigure figure =
       render::MakeFigure(suite, replay, compare ? &*compare : nullptr);

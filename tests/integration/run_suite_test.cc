@@ -482,6 +482,36 @@ TEST_F(RunSuiteTest, AFileReplacedAtTheSamePathIsAnotherConfiguration) {
   }
 }
 
+// A world file kept in the output folder under a result's name was overwritten by the run.
+TEST_F(RunSuiteTest, AnOutputFolderWhoseResultWouldReplaceAnInputIsRefused) {
+  const std::string world = ReadText(testing::SourceDir() / "worlds" / "gibson" / "easy.yaml");
+  fs::create_directories(dir_.path() / "out");
+  dir_.Write("out/table.md", world);
+  const Suite s = LoadOrDie(
+      "name: files\nepisodes: 1\nseed: 3\nworld: {source: floorplan, file: out/table.md}\n"
+      "humans: {count: 2, policy: orca}\nrobot: {sensors: [person]}\n"
+      "rows:\n  - {label: orca, policy: orca}\n");
+  for (const bool fresh : {false, true}) {
+    try {
+      RunOptions options;
+      options.out_dir = dir_.path() / "out";
+      options.fresh = fresh;
+      options.progress = false;
+      RunSuite(s, registry_, options);
+      ADD_FAILURE() << "ran over its own world file";
+    } catch (const RunRefused& e) {
+      EXPECT_NE(std::string(e.what()).find("--out would write " +
+                                           (dir_.path() / "out" / "table.md").string() +
+                                           ", which is row 'orca' world's file this command "
+                                           "reads: choose another --out"),
+                std::string::npos)
+          << e.what();
+    }
+    EXPECT_EQ(ReadText(dir_.path() / "out" / "table.md"), world);
+    EXPECT_FALSE(fs::exists(dir_.path() / "out" / "episodes.csv"));
+  }
+}
+
 TEST_F(RunSuiteTest, DataFilesNoParameterNamesCountWithTheirContent) {
   // A random_rect row without `file` reads the default frozen set, a floorplan row may find its
   // world file under the data root: both contents are in the config hash, under a name

@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/input_files.h"
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/version.h"
 #include "run/episode_appender.h"
@@ -458,6 +459,12 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   std::vector<std::shared_ptr<WorldSource>> worlds;
   for (const SuiteRow& row : rows) worlds.push_back(row.world());
   summary.out_dir = PrepareOutDir(suite, options);
+  std::vector<fs::path> outputs;
+  for (const char* name :
+       {"episodes.csv", "manifest.json", "table.md", "table.csv", "episodes.dropped.csv"})
+    outputs.push_back(summary.out_dir / name);
+  if (const std::string over = OutputOverAnInput(outputs, SuiteInputFiles(suite)); !over.empty())
+    throw RunRefused(over);
   std::string refused;
   const auto lock = options.out_dir_claimed
                         ? nullptr

@@ -14,6 +14,7 @@
 
 #include "atomic_file.h"
 #include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/input_files.h"
 #include "crowdsim/bench/results.h"
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/rng.h"
@@ -128,6 +129,7 @@ class Trainer {
   double TrainOn(std::span<const std::size_t> indices);
   void SaveCheckpoint();
   std::string CheckpointFailure(const fs::path& tmp, std::string what) const;
+  void RefuseOutputsOverInputs() const;
   void LoadCheckpoint();
   /// Accepts a checkpoint whose configuration differs only in training.rl_episodes (throws
   /// otherwise).
@@ -527,6 +529,20 @@ void Trainer::SaveCheckpoint() {
   summary_.times.checkpoints += Since(t0);
 }
 
+// A teacher's or a row's weights in --out would be replaced while the training reads them.
+void Trainer::RefuseOutputsOverInputs() const {
+  std::vector<InputFile> inputs = {{spec_.file, "the training file"}};
+  AddRowInputFiles(spec_.row, "the training's", &inputs);
+  AddPluginInputFiles(spec_.teacher, "the teacher (training.il_policy)", &inputs);
+  std::vector<fs::path> outputs;
+  for (const char* name : {"weights.pt", "best.pt", "il.pt", "summary.json", "training.yaml",
+                           "training_episodes.csv", "training_log.csv", "learning_curve.png",
+                           "learning_curve.svg"})
+    outputs.push_back(Out(name));
+  if (const std::string over = OutputOverAnInput(outputs, inputs); !over.empty())
+    throw TrainRefused(over);
+}
+
 // Why a checkpoint could not be written, a full disk said as such; the half-written one is removed.
 std::string Trainer::CheckpointFailure(const fs::path& tmp, std::string what) const {
   what = what.substr(0, what.find("\nException raised from"));  // libtorch's stack trace
@@ -698,6 +714,7 @@ TrainSummary Trainer::Run() {
     throw TrainError("cannot create the output folder '" + summary_.out_dir.string() +
                      "': " + ec.message());
   }
+  RefuseOutputsOverInputs();
   std::string refused;
   const auto lock = ClaimOutputFolder(summary_.out_dir, "a training", &refused);
   if (!lock) throw TrainRefused(refused);

@@ -242,6 +242,26 @@ TEST(TrainingTest, AFolderHoldingOnlyAModelIsNotSentInACircle) {
   EXPECT_EQ(ReadText(dir.path() / "out" / "weights.pt"), "someone's model");
 }
 
+// A teacher's weights in the output folder would be replaced by the training that reads them.
+TEST(TrainingTest, AnOutputThatIsATeachersWeightsIsRefused) {
+  TempDir dir;
+  TrainFile f;
+  f.training = kTiny;
+  Train(WriteTrainFile(dir, f), dir.path() / "first");
+  fs::create_directories(dir.path() / "out");
+  const fs::path teacher = dir.path() / "out" / "best.pt";
+  fs::copy_file(dir.path() / "first" / "weights.pt", teacher);
+  f.training = std::string(kTiny).substr(0, std::string(kTiny).size() - 1) +
+               ", il_policy: cadrl, il_params: {sensors: person, weights: " + teacher.string() +
+               "}}";
+  const std::string what = RefusalOf(dir, f);  // trains into dir/out
+  EXPECT_NE(what.find("--out would write " + teacher.string() +
+                      ", which is the teacher (training.il_policy)'s weights this command reads"),
+            std::string::npos)
+      << what;
+  EXPECT_EQ(ReadText(teacher), ReadText(dir.path() / "first" / "weights.pt"));
+}
+
 TEST(TrainingTest, LengtheningTheRlPhaseContinuesLikeALongerTraining) {
   TempDir dir;
   TrainFile f;
