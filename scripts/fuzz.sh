@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzes the readers of user-written files (suites, world files, training files; the targets are
+# Fuzzes the readers of user-written files (suites, world files, training files) and of the files
+# a run leaves (episodes.csv, manifest.json) or loads (plugin files' headers; the targets are
 # listed in tests/fuzz/fuzz_targets.cc) with libFuzzer, AddressSanitizer and UBSan: configures a
 # clang build in build-fuzz/ (CROWDSIM_FUZZ=ON; only the core, the plugins and the fuzzers are
 # built), then runs each target for a bounded time, nice'd, starting from its committed corpus
@@ -8,7 +9,8 @@
 #
 # Usage: scripts/fuzz.sh [SECONDS] [--target NAME]... [--update-corpus] [--reseed]
 #   SECONDS          fuzzing time per target (default 60)
-#   --target NAME    only this target (repeatable): suite_reader, world_reader, training_reader
+#   --target NAME    only this target (repeatable): suite_reader, world_reader, training_reader,
+#                    episodes_reader, manifest_reader, plugin_file
 #   --update-corpus  afterwards, add to the committed corpus the new inputs that reach new code
 #                    (libFuzzer -merge=1: nothing already there is removed)
 #   --reseed         first add to the committed corpus the seeds made from the project's files
@@ -32,7 +34,8 @@ while [[ $# -gt 0 ]]; do
     *) seconds=$1; shift ;;
   esac
 done
-[[ ${#targets[@]} -gt 0 ]] || targets=(suite_reader world_reader training_reader)
+[[ ${#targets[@]} -gt 0 ]] ||
+  targets=(suite_reader world_reader training_reader episodes_reader manifest_reader plugin_file)
 
 clangxx=${CLANGXX:-clang++}
 if ! command -v "$clangxx" >/dev/null; then
@@ -71,8 +74,10 @@ for t in "${targets[@]}"; do
   fi
   echo "== $t: ${seconds} s over $(ls "$committed" | wc -l) committed inputs"
   rc=0
+  dict=()  # YAML's tokens help the YAML readers only
+  case $t in suite_reader|world_reader|training_reader) dict=(-dict="$root/tests/fuzz/yaml.dict") ;; esac
   nice -n "${FUZZ_NICE:-10}" "$fuzzer" "$work" "$committed" -max_total_time="$seconds" -timeout=10 \
-    -rss_limit_mb=2048 -max_len="$max_len" -dict="$root/tests/fuzz/yaml.dict" -artifact_prefix="$artifacts/" \
+    -rss_limit_mb=2048 -max_len="$max_len" "${dict[@]}" -artifact_prefix="$artifacts/" \
     -print_final_stats=1 >"$build/fuzz-logs/$t.log" 2>&1 || rc=$?
   grep -E '^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)' \
     "$build/fuzz-logs/$t.log" || true

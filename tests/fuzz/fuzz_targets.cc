@@ -1,12 +1,16 @@
 #include "fuzz_targets.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/results.h"
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/bench/training/train_spec.h"
 #include "crowdsim/world_file.h"
+#include "loader/elf_check.h"
 #include "temp_dir.h"
 
 namespace crowdsim::fuzz {
@@ -149,6 +153,56 @@ std::string WorldReader(std::string_view input) {
   return "";
 }
 
+/// episodes.csv as a resume or merge reads it: lines kept are valid, damaged ones counted, and an
+/// unreadable file is a runtime_error naming it.
+std::string EpisodesReader(std::string_view input) {
+  const fs::path file = WriteScratch("episodes.csv", input);
+  EpisodesCsvRead read;
+  try {
+    read = ReadEpisodesCsvChecked(file);
+  } catch (const std::runtime_error& e) {
+    return std::string_view(e.what()).find(file.string()) == std::string_view::npos
+               ? std::string("error without the file name: ") + e.what()
+               : "";
+  }
+  if (read.damaged != static_cast<int>(read.damaged_lines.size()))
+    return "damaged count and damaged lines differ";
+  if (read.damaged > 0 && read.first_damage.empty()) return "damage without its place";
+  for (const EpisodeLine& l : read.lines) {
+    const EpisodeOutcome& o = l.outcome;
+    if (l.episode < 0 || o.steps < 0 || o.danger_steps < 0 || o.humans_at_goal < 0)
+      return "a negative count was kept (episode " + std::to_string(l.episode) + ")";
+    for (const double v : {o.time, o.path_length, o.discounted_return, o.decision_time_us,
+                           o.max_speed}) {
+      if (!std::isfinite(v)) return "a non-finite number was kept";
+    }
+    if (o.time < 0 || o.path_length < 0 || o.max_speed < 0) return "a negative measure was kept";
+  }
+  return "";
+}
+
+/// manifest.json through every reader the harness uses on it: anything missing, mistyped or
+/// malformed reads as absent, never throws.
+std::string ManifestReader(std::string_view input) {
+  const fs::path file = WriteScratch("manifest.json", input);
+  for (const char* key : {"config_hash", "suite", "shard", "/procedure/rl_episodes", "/a/0/b", "/"})
+    (void)ReadManifestField(file, key);
+  (void)ReadManifestStrings(file, "overrides");
+  (void)ReadManifestStrings(file, "row_hashes");
+  (void)ReadManifestInteger(file, "episodes");
+  (void)ReadManifestInteger(file, "/procedure/rl_episodes");
+  (void)ReadManifestBool(file, "finished");
+  return "";
+}
+
+/// A plugin file's ELF check, before any dlopen: a verdict for any bytes, never a crash.
+std::string PluginFileCheck(std::string_view input) {
+  const fs::path file = WriteScratch("crowdsim_fuzzed.so", input);
+  const std::string problem = ElfFileProblem(file);
+  if (problem.empty() && input.size() < 64) return "a file shorter than an ELF header accepted";
+  return "";
+}
+
 }  // namespace
 
 const std::vector<FuzzTarget>& FuzzTargets() {
@@ -158,6 +212,12 @@ const std::vector<FuzzTarget>& FuzzTargets() {
       {"world_reader", "ReadWorldFile and ReadWorldSet: a world file or a world set", WorldReader},
       {"training_reader", "LoadTrainSpec: a training file (leading '#set k=v' lines as --set)",
        TrainingReader},
+      {"episodes_reader", "ReadEpisodesCsvChecked: an episodes.csv as resume and merge read it",
+       EpisodesReader},
+      {"manifest_reader", "the manifest.json readers (fields, lists, numbers, JSON pointers)",
+       ManifestReader},
+      {"plugin_file", "ElfFileProblem: a plugin file's headers, checked before dlopen",
+       PluginFileCheck},
   };
   return targets;
 }
