@@ -12,8 +12,9 @@ namespace crowdsim::common {
 /// and reason.
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& text);
 
-/// Copies `from` to `to` as WriteFileAtomically writes: a full disk is said as such (std::filesystem's
-/// copy says "Input/output error"). Throws std::runtime_error naming the file and the reason.
+/// Copies `from` to `to` as WriteFileAtomically writes: a full disk is said as such
+/// (std::filesystem's copy says "Input/output error"). Throws std::runtime_error naming the file
+/// and the reason.
 void CopyFileAtomically(const std::filesystem::path& from, const std::filesystem::path& to);
 
 /// A new file of its own beside `path` (mkstemp in its folder, named ".NAME.XXXXXX", mode 0666

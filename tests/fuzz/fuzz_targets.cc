@@ -172,8 +172,8 @@ std::string EpisodesReader(std::string_view input) {
     const EpisodeOutcome& o = l.outcome;
     if (l.episode < 0 || o.steps < 0 || o.danger_steps < 0 || o.humans_at_goal < 0)
       return "a negative count was kept (episode " + std::to_string(l.episode) + ")";
-    for (const double v : {o.time, o.path_length, o.discounted_return, o.decision_time_us,
-                           o.max_speed}) {
+    for (const double v :
+         {o.time, o.path_length, o.discounted_return, o.decision_time_us, o.max_speed}) {
       if (!std::isfinite(v)) return "a non-finite number was kept";
     }
     if (o.time < 0 || o.path_length < 0 || o.max_speed < 0) return "a negative measure was kept";

@@ -199,10 +199,11 @@ TEST_F(CrashIsolationTest, APluginThatHangsOrCrashesWhileMadeIsARowErrorUnderIso
   EXPECT_THROW(Run(s, "out", 2), RunError);
   EXPECT_FALSE(std::filesystem::exists(dir_.path() / "out" / "episodes.csv"));
   // A plugin's own error while made still names the row, from the worker.
-  const Suite needs = LoadOrDie("name: needs\nepisodes: 1\nisolation: on\n"
-                                "world: {source: random_rect, obstacles: 1}\nrows:\n"
-                                "  - {label: n, policy: " +
-                                plugin + ", params: {mode: needs_throw}}\n");
+  const Suite needs = LoadOrDie(
+      "name: needs\nepisodes: 1\nisolation: on\n"
+      "world: {source: random_rect, obstacles: 1}\nrows:\n"
+      "  - {label: n, policy: " +
+      plugin + ", params: {mode: needs_throw}}\n");
   const std::vector<std::string> needs_errors = PreflightSuite(needs, registry_);
   ASSERT_EQ(needs_errors.size(), 1u);
   EXPECT_NE(needs_errors[0].find("row 'n' (rows[0]): Needs failure (fixture)"), std::string::npos)

@@ -100,15 +100,14 @@ namespace {
 void ProbeInWorker(const Suite& suite, size_t row_index, int episode, PluginRegistry& registry) {
   const std::optional<WorkerLoss> lost =
       RunOnceInWorker(IsolatedEpisodeTimeoutS(suite), [&]() -> std::string {
-                        try {
-                          ReplayEpisode(suite, row_index, episode, registry, false,
-                                        /*probe=*/false);
-                        } catch (const std::exception&) {
-                          // The replay in the caller's process throws the same, with its message.
-                        }
-                        return "done";
-                      })
-          .loss;
+        try {
+          ReplayEpisode(suite, row_index, episode, registry, false,
+                        /*probe=*/false);
+        } catch (const std::exception&) {
+          // The replay in the caller's process throws the same, with its message.
+        }
+        return "done";
+      }).loss;
   if (!lost) return;
   if (lost->Interrupted()) {
     throw std::runtime_error("the replay of episode " + std::to_string(episode) + " of row '" +

@@ -25,7 +25,8 @@ class SuiteRow {
 
   /// Builds the row's world and plugins once (the plugins in a worker process when `mode` isolates
   /// the row), checks sensor needs and the scenarios of episode 0 and each frozen layout among the
-  /// first `episodes`, and plays episode 0's first step in-process when not isolated. `checked`: (world, crowd) pairs passed. Throws RunError naming the row.
+  /// first `episodes`, and plays episode 0's first step in-process when not isolated. `checked`:
+  /// (world, crowd) pairs passed. Throws RunError naming the row.
   void Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
                  std::set<std::string>* checked);
   /// The world Preflight built; null before.

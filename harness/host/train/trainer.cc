@@ -535,9 +535,9 @@ void Trainer::RefuseOutputsOverInputs() const {
   AddRowInputFiles(spec_.row, "the training's", &inputs);
   AddPluginInputFiles(spec_.teacher, "the teacher (training.il_policy)", &inputs);
   std::vector<fs::path> outputs;
-  for (const char* name : {"weights.pt", "best.pt", "il.pt", "summary.json", "training.yaml",
-                           "training_episodes.csv", "training_log.csv", "learning_curve.png",
-                           "learning_curve.svg"})
+  for (const char* name :
+       {"weights.pt", "best.pt", "il.pt", "summary.json", "training.yaml", "training_episodes.csv",
+        "training_log.csv", "learning_curve.png", "learning_curve.svg"})
     outputs.push_back(Out(name));
   if (const std::string over = OutputOverAnInput(outputs, inputs); !over.empty())
     throw TrainRefused(over);

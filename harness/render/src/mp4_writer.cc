@@ -77,8 +77,8 @@ struct Mp4Writer::Impl {
   // The muxer writes and seeks through the temp file's descriptor (custom I/O), never by name.
   static int WritePacket(void* opaque, uint8_t* buf, int size) {
     Impl& m = *static_cast<Impl*>(opaque);
-    const int error = common::WriteAll(m.fd, reinterpret_cast<const char*>(buf),
-                                       static_cast<size_t>(size));
+    const int error =
+        common::WriteAll(m.fd, reinterpret_cast<const char*>(buf), static_cast<size_t>(size));
     if (error == 0) return size;
     if (m.write_errno == 0) m.write_errno = error;
     return AVERROR(error);
@@ -154,8 +154,8 @@ Mp4Writer::Mp4Writer(const std::filesystem::path& path, int width, int height, i
   m.fd = common::CreateBeside(path, &m.temp);
   constexpr int kIoBuffer = 1 << 16;
   auto* buffer = static_cast<unsigned char*>(av_malloc(kIoBuffer));
-  m.format->pb = avio_alloc_context(buffer, kIoBuffer, 1, &m, nullptr, &Impl::WritePacket,
-                                    &Impl::Seek);
+  m.format->pb =
+      avio_alloc_context(buffer, kIoBuffer, 1, &m, nullptr, &Impl::WritePacket, &Impl::Seek);
   if (m.format->pb == nullptr) {
     av_free(buffer);
     throw std::runtime_error("cannot write " + path.string() + ": out of memory");

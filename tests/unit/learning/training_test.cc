@@ -15,8 +15,8 @@
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "learning_test_util.h"
-#include "value_rl/value_policy.h"
 #include "test_paths.h"
+#include "value_rl/value_policy.h"
 
 namespace crowdsim::testing {
 namespace {
