@@ -1,0 +1,153 @@
+#include "social_force_policy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "crowdsim/agent_index.h"
+#include "crowdsim/static_map.h"
+#include "orca/roadmap.h"
+
+namespace crowdsim::social_force {
+
+ParamSchema Schema() {
+  const Constants c;
+  return {
+      {"tau", ParamType::kDouble, c.tau, 0.05, 10.0, {}, "s; relaxation time (HM95: 0.5)"},
+      {"v0", ParamType::kDouble, c.v0_ped, 0.0, 100.0, {},
+       "m^2/s^2; strength of another pedestrian's repulsive potential (HM95: 2.1)"},
+      {"sigma", ParamType::kDouble, c.sigma, 0.01, 10.0, {},
+       "m; range of that potential (HM95: 0.3)"},
+      {"step_time", ParamType::kDouble, c.step_time, 0.0, 10.0, {},
+       "s; Δt, another's step width is its speed times this (HM95: 2)"},
+      {"u0", ParamType::kDouble, c.u0_wall, 0.0, 1000.0, {},
+       "m^2/s^2; strength of an obstacle's repulsive potential (HM95: 10)"},
+      {"r", ParamType::kDouble, c.r_wall, 0.01, 10.0, {},
+       "m; range of that potential (HM95: 0.2)"},
+      {"view_angle", ParamType::kDouble, 200.0, 0.0, 360.0, {},
+       "degrees; field of view 2φ, others outside it weigh out_of_view (HM95: 200)"},
+      {"out_of_view", ParamType::kDouble, c.out_of_view, 0.0, 1.0, {},
+       "weight c of a pedestrian outside the field of view (HM95: 0.5)"},
+      {"max_speed_factor", ParamType::kDouble, 1.3, 0.1, 3.0, {},
+       "max speed as a multiple of v_pref (HM95: 1.3)"},
+      {"neighbor_dist", ParamType::kDouble, 5.0, 0.0, 100.0, {},
+       "m; only people whose centre is closer than this push (V at 5 m: 1e-7 of V0)"},
+      {"max_neighbors", ParamType::kInt, std::int64_t{10}, 0, 100, {},
+       "number of nearest people that push (as ORCA's max_neighbors)"},
+      {"wall_range", ParamType::kDouble, 2.0, 0.0, 100.0, {},
+       "m; only rectangles closer than this push (U at 2 m: 5e-5 of U0)"},
+      {"guidance", ParamType::kBool, true, 0, 1, {},
+       "follow the ORCA humans' roadmap around the map's rectangles (false: straight to goal)"},
+      {"guidance_margin", ParamType::kDouble, 0.2, 0.0, 2.0, {},
+       "m; roadmap corners sit this much farther out than the agent's radius (as ORCA's)"},
+  };
+}
+
+SocialForcePolicy::SocialForcePolicy(const Params& params)
+    : max_speed_factor_(params.GetDouble("max_speed_factor")),
+      neighbor_dist_(params.GetDouble("neighbor_dist")),
+      max_neighbors_(static_cast<int>(params.GetInt("max_neighbors"))),
+      wall_range_(params.GetDouble("wall_range")),
+      guidance_enabled_(params.GetBool("guidance")),
+      guidance_margin_(params.GetDouble("guidance_margin")) {
+  constants_.tau = params.GetDouble("tau");
+  constants_.v0_ped = params.GetDouble("v0");
+  constants_.sigma = params.GetDouble("sigma");
+  constants_.step_time = params.GetDouble("step_time");
+  constants_.u0_wall = params.GetDouble("u0");
+  constants_.r_wall = params.GetDouble("r");
+  constants_.cos_view = std::cos(params.GetDouble("view_angle") * M_PI / 360.0);
+  constants_.out_of_view = params.GetDouble("out_of_view");
+}
+
+PolicyNeeds SocialForcePolicy::Needs() const {
+  PolicyNeeds needs;
+  needs.map = true;
+  needs.heading_frame = false;  // neighbours in world coordinates
+  return needs;
+}
+
+void SocialForcePolicy::Reset(const EpisodeContext& ctx) {
+  map_ = ctx.map;
+  time_step_ = ctx.sim.time_step;
+  roadmap_radius_ = -1.0;  // the roadmap is made for the agent's radius at its first decision
+  guidance_.Reset(nullptr);
+}
+
+void SocialForcePolicy::GatherOthers(const Observation& obs) {
+  others_.clear();
+  if (obs.agents != nullptr) {
+    obs.agents->Nearest(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index, &ids_);
+    const auto all = obs.agents->agents();
+    for (const int id : ids_) others_.emplace_back(all[id].position, all[id].velocity);
+    return;
+  }
+  const SensorReading* reading = obs.Reading("person");
+  if (reading == nullptr) return;
+  for (const PersonObservation& person : reading->people) {
+    const Vec2 position = obs.frame.origin + obs.frame.VectorToWorld(person.position);
+    if ((position - obs.self.position).norm() < neighbor_dist_)
+      others_.emplace_back(position, obs.frame.VectorToWorld(person.velocity));
+  }
+}
+
+Vec2 SocialForcePolicy::Acceleration(const AgentState& self, const orca::GuidanceTarget& target,
+                                     const std::vector<std::pair<Vec2, Vec2>>& others) const {
+  const Vec2 desired = orca::PreferredVelocity(self.position, target, self.v_pref);
+  Vec2 total = DrivingForce(self.velocity, desired, constants_.tau);
+  // The heading that decides the field of view: where the agent wants to go.
+  const double norm = desired.norm();
+  const Vec2 e = norm > 0.0 ? Vec2(desired / norm) : Vec2::Zero();
+  for (const auto& [position, velocity] : others) {
+    const Vec2 f = PedestrianRepulsion(self.position - position, velocity, constants_);
+    total += ViewWeight(e, f, constants_) * f;
+  }
+  if (map_ != nullptr) {
+    for (const Rect& rect : map_->rectangles) {
+      const Vec2 r = self.position - NearestPoint(rect, self.position);
+      if (r.squaredNorm() < wall_range_ * wall_range_) total += WallRepulsion(r, constants_);
+    }
+  }
+  return total;
+}
+
+Vec2 SocialForcePolicy::SlideAlongRectangles(const Vec2& position, double radius,
+                                             Vec2 velocity) const {
+  if (map_ == nullptr) return velocity;
+  // Whether the step would end closer than `radius` to `rect`, and closer than now.
+  const auto touches = [&](const Rect& rect, const Vec2& v) {
+    const Vec2 next = position + v * time_step_;
+    const double gap = (next - NearestPoint(rect, next)).squaredNorm();
+    return gap < radius * radius && gap < (position - NearestPoint(rect, position)).squaredNorm();
+  };
+  for (const Rect& rect : map_->rectangles) {
+    if (!touches(rect, velocity)) continue;
+    const Vec2 out = position - NearestPoint(rect, position);
+    const double d = out.norm();
+    if (d > 0.0) velocity -= std::min(0.0, velocity.dot(out / d)) * (out / d);  // slide
+  }
+  // A corner, or two rectangles at once: stop rather than touch.
+  for (const Rect& rect : map_->rectangles) {
+    if (touches(rect, velocity)) return Vec2::Zero();
+  }
+  return velocity;
+}
+
+Action SocialForcePolicy::Decide(const Observation& obs) {
+  const AgentState& self = obs.self;
+  if (guidance_enabled_ && map_ != nullptr && !map_->rectangles.empty() &&
+      self.radius != roadmap_radius_) {
+    roadmap_radius_ = self.radius;
+    guidance_.Reset(orca::SharedRoadmap(*map_, self.radius, guidance_margin_));
+  }
+  const orca::GuidanceTarget target =
+      guidance_.roadmap() != nullptr ? guidance_.Next(self.position, self.goal)
+                                     : orca::GuidanceTarget{self.goal, true};
+  GatherOthers(obs);
+  Vec2 velocity = self.velocity + Acceleration(self, target, others_) * time_step_;
+  const double max_speed = max_speed_factor_ * self.v_pref;
+  if (velocity.norm() > max_speed) velocity *= max_speed / velocity.norm();
+  return Action{SlideAlongRectangles(self.position, self.radius, velocity)};
+}
+
+}  // namespace crowdsim::social_force
