@@ -133,8 +133,9 @@ void Canonical(const PluginUse& u, std::ostream& os) {
   for (const auto& [k, v] : u.params.values()) {
     if (u.loaded) {
       const auto& schema = u.loaded->schema;
+      const std::string& key = k;  // clang 14 cannot capture a structured binding
       const auto spec = std::find_if(schema.begin(), schema.end(),
-                                     [&k](const ParamSpec& s) { return s.name == k; });
+                                     [&key](const ParamSpec& s) { return s.name == key; });
       if (spec != schema.end() && !spec->hashed_at_default && v == spec->default_value) continue;
     }
     os << k << "=" << FormatParamValue(v);
