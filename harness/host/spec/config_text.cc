@@ -89,7 +89,7 @@ std::vector<InputFile> InputFiles(const PluginUse& u) {
     if (!text || text->empty()) continue;
     const fs::path file = u.params.ResolvePath(*text);
     if (!fs::is_regular_file(file, ec)) continue;
-    files.push_back({k, *text, FileContentHash(file)});
+    files.push_back({k, *text, FileContentHash(file), file});
     seen.insert(fs::weakly_canonical(file, ec));
   }
   // The files the plugin reads that no parameter names (a world's default frozen layouts).
@@ -97,7 +97,7 @@ std::vector<InputFile> InputFiles(const PluginUse& u) {
     for (const fs::path& file : u.loaded->descriptor->data_files(u.params)) {
       if (!fs::is_regular_file(file, ec) || !seen.insert(fs::weakly_canonical(file, ec)).second)
         continue;
-      files.push_back({"", DataFileName(file), FileContentHash(file)});
+      files.push_back({"", DataFileName(file), FileContentHash(file), file});
     }
   }
   return files;

@@ -20,6 +20,7 @@ struct InputFile {
   std::string param;    ///< the parameter that names it; empty for a plugin's data file
   std::string name;     ///< the parameter's value, or the data file relative to the data root
   std::string content;  ///< content hash ("unreadable" when it cannot be read)
+  std::filesystem::path path;  ///< where it was found
 };
 
 /// Every file a plugin use reads (named by string parameters, then declared data files): what the

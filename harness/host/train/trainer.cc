@@ -531,7 +531,7 @@ void Trainer::SaveCheckpoint() {
 
 // A teacher's or a row's weights in --out would be replaced while the training reads them.
 void Trainer::RefuseOutputsOverInputs() const {
-  std::vector<InputFile> inputs = {{spec_.file, "the training file"}};
+  std::vector<NamedInput> inputs = {{spec_.file, "the training file"}};
   AddRowInputFiles(spec_.row, "the training's", &inputs);
   AddPluginInputFiles(spec_.teacher, "the teacher (training.il_policy)", &inputs);
   std::vector<fs::path> outputs;
