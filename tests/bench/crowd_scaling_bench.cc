@@ -1,6 +1,6 @@
 // Crowd scaling: one whole episode step (Episode::Step, as a suite run steps it) with 5 to
 // 1,000 ORCA humans, with the costly robot (ORCA, lidar 45 beams + person) and with the humans
-// alone. Issue 14's target: flat cost per agent, i.e. per_agent_step at 1,000 humans at most
+// alone (ORCA or social force people). Issue 14's target: flat cost per agent, i.e. per_agent_step at 1,000 humans at most
 // 1.5x the value at 20. Each measured episode has its own scenario (seed 14 + k), as a suite's
 // episodes do: a replayed 20-human episode is short enough for the branch predictor to learn
 // (humans_only_replay keeps that form beside the others, see TimeSteps).
@@ -34,10 +34,11 @@ double SquareWidth(int humans) {
 
 // `replay`: every measured episode is seed 14's, the form this benchmark had until 2026-11-25;
 // kept to show what a replayed episode hides (see TimeSteps). Otherwise episode k is seed 14 + k.
-void BM_CrowdStep(benchmark::State& state, RobotKind robot, bool replay) {
+void BM_CrowdStep(benchmark::State& state, RobotKind robot, bool replay,
+                  const char* human_policy = "orca") {
   const int humans = static_cast<int>(state.range(0));
   const double width = SquareWidth(humans);
-  bench::RowAgents row(robot, humans);
+  bench::RowAgents row(robot, humans, human_policy);
   // With the robot: it crosses the square from the middle of one side to the other, through
   // the crowd. Alone: it stands still at twice that distance, outside the square, where the
   // humans (who do not see it, robot_visible false) never reach it.
@@ -89,6 +90,10 @@ void CrowdSizes(benchmark::internal::Benchmark* b) {
 BENCHMARK_CAPTURE(BM_CrowdStep, orca_robot_lidar_person, RobotKind::kOrcaLidarPerson, false)
     ->Apply(CrowdSizes);
 BENCHMARK_CAPTURE(BM_CrowdStep, humans_only, RobotKind::kStill, false)->Apply(CrowdSizes);
+// Issue 46's target for social force people: flat within 1.5x, at most 2x ORCA's per agent.
+BENCHMARK_CAPTURE(BM_CrowdStep, social_force_humans_only, RobotKind::kStill, false,
+                  "social_force")
+    ->Apply(CrowdSizes);
 BENCHMARK_CAPTURE(BM_CrowdStep, humans_only_replay, RobotKind::kStill, true)
     ->Arg(20)
     ->Arg(1000)
