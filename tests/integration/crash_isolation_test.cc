@@ -298,6 +298,17 @@ TEST_F(CrashIsolationTest, EpisodesAreWatchedWithoutATimeoutInTheSuite) {
   const std::string said = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(said.find("note: row 'l', episode 0 has run 1 s"), std::string::npos) << said;
   EXPECT_NE(said.find("give the suite episode_timeout_s"), std::string::npos) << said;
+
+  // A threaded row's plugins are made in the run's process: a slow one is named too.
+  const Suite slow_made =
+      LoadOrDie(head + ", params: {mode: slow_on_create, fail_after_steps: 1000}}\n");
+  options.out_dir = dir_.path() / "slow_made";
+  ::testing::internal::CaptureStderr();
+  RunSuite(slow_made, registry_, options);
+  const std::string made = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(made.find("note: row 'l' (rows[0]), making its plugins, has run 1 s"),
+            std::string::npos)
+      << made;
 }
 
 }  // namespace

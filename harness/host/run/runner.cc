@@ -126,14 +126,14 @@ fs::path PrepareOutDir(const Suite& suite, const RunOptions& options) {
 /// Preflights every row, so bad parameters stop the run before any episode, naming each row at
 /// fault; records the worlds' identities.
 std::vector<SuiteRow> PreflightRows(const Suite& suite, PluginRegistry& registry, RunFacts* facts,
-                                    IsolationMode mode) {
+                                    IsolationMode mode, double slow_note_s) {
   std::vector<SuiteRow> rows;
   std::vector<std::string> errors;
   std::set<std::string> checked;
   for (size_t r = 0; r < suite.rows.size(); ++r) {
     rows.emplace_back(suite, r);
     try {
-      rows.back().Preflight(registry, facts->episodes, mode, &checked);
+      rows.back().Preflight(registry, facts->episodes, mode, &checked, slow_note_s);
       facts->world_identities[suite.rows[r].label] = rows.back().world()->Identity();
     } catch (const RunError& e) {
       errors.push_back(e.what());
@@ -455,7 +455,8 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   RunSummary summary;
   // Before the folder is made.
   const std::vector<SuiteRow> rows =
-      PreflightRows(suite, registry, &facts, options.isolation.value_or(suite.isolation));
+      PreflightRows(suite, registry, &facts, options.isolation.value_or(suite.isolation),
+                    options.slow_episode_note_s);
   std::vector<std::shared_ptr<WorldSource>> worlds;
   for (const SuiteRow& row : rows) worlds.push_back(row.world());
   summary.out_dir = PrepareOutDir(suite, options);

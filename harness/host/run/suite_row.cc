@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "crowdsim/bench/runner.h"
+#include "run/slow_episode_watch.h"
 #include "spec/config_text.h"
 
 namespace crowdsim {
@@ -17,7 +18,7 @@ std::string SuiteRow::Where(int episode) const {
 }
 
 void SuiteRow::Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
-                         std::set<std::string>* checked) {
+                         std::set<std::string>* checked, double slow_note_s) {
   const RowSpec& row = spec();
   const bool isolated = RowNeedsIsolation(suite_, row, mode);
   std::unique_ptr<RowInstance> instance;
@@ -27,6 +28,9 @@ void SuiteRow::Preflight(PluginRegistry& registry, int episodes, IsolationMode m
     if (isolated) {
       MakePluginsInWorker(registry);
     } else {
+      // Made here, where nothing can stop a plugin that never returns: name a slow one.
+      SlowEpisodeWatch watch(1, slow_note_s);
+      watch.Began(0, Place() + ", making its plugins,");
       instance = MakePlugins(registry);
     }
     try {

@@ -8,6 +8,7 @@
 
 #include "crowdsim/bench/results.h"
 #include "crowdsim/bench/row_instance.h"
+#include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "run/worker_process.h"
 
@@ -27,8 +28,9 @@ class SuiteRow {
   /// the row), checks sensor needs and the scenarios of episode 0 and each frozen layout among the
   /// first `episodes`, and plays episode 0's first step in-process when not isolated. `checked`:
   /// (world, crowd) pairs passed. Throws RunError naming the row.
+  /// A threaded row's plugins taking `slow_note_s` to make are named on stderr.
   void Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
-                 std::set<std::string>* checked);
+                 std::set<std::string>* checked, double slow_note_s = kSlowEpisodeNoteS);
   /// The world Preflight built; null before.
   const std::shared_ptr<WorldSource>& world() const { return world_; }
 
