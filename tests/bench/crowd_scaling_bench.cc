@@ -1,9 +1,9 @@
 // Crowd scaling: one whole episode step (Episode::Step, as a suite run steps it) with 5 to
 // 1,000 ORCA humans, with the costly robot (ORCA, lidar 45 beams + person) and with the humans
-// alone (ORCA or social force people). Issue 14's target: flat cost per agent, i.e. per_agent_step at 1,000 humans at most
-// 1.5x the value at 20. Each measured episode has its own scenario (seed 14 + k), as a suite's
-// episodes do: a replayed 20-human episode is short enough for the branch predictor to learn
-// (humans_only_replay keeps that form beside the others, see TimeSteps).
+// alone (ORCA or social force people). Issue 14's target: flat cost per agent, i.e. per_agent_step
+// at 1,000 humans at most 1.5x the value at 20. Each measured episode has its own scenario (seed 14
+// + k), as a suite's episodes do: a replayed 20-human episode is short enough for the branch
+// predictor to learn (humans_only_replay keeps that form beside the others, see TimeSteps).
 //
 // The world is the crowdnav square crossing, its square grown with the crowd at one human per
 // 4 m^2 (the density of agent_index_bench), never below CrowdNav's 10 m (5 and 20 humans:
@@ -91,8 +91,7 @@ BENCHMARK_CAPTURE(BM_CrowdStep, orca_robot_lidar_person, RobotKind::kOrcaLidarPe
     ->Apply(CrowdSizes);
 BENCHMARK_CAPTURE(BM_CrowdStep, humans_only, RobotKind::kStill, false)->Apply(CrowdSizes);
 // Issue 46's target for social force people: flat within 1.5x, at most 2x ORCA's per agent.
-BENCHMARK_CAPTURE(BM_CrowdStep, social_force_humans_only, RobotKind::kStill, false,
-                  "social_force")
+BENCHMARK_CAPTURE(BM_CrowdStep, social_force_humans_only, RobotKind::kStill, false, "social_force")
     ->Apply(CrowdSizes);
 BENCHMARK_CAPTURE(BM_CrowdStep, humans_only_replay, RobotKind::kStill, true)
     ->Arg(20)

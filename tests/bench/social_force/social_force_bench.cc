@@ -19,10 +19,11 @@ void BM_SocialForceDecide10Neighbours7Rects(benchmark::State& state) {
   StaticMap map;
   map.bounds = Rect::FromCorners(-10, -10, 10, 10);
   // The seven rectangles of the ORCA benchmark (orca_bench.cc).
-  map.rectangles = {Rect::FromCorners(1.5, -0.5, 2.5, 1.0),   Rect::FromCorners(-3.0, 1.0, -1.5, 2.0),
-                    Rect::FromCorners(-1.0, -3.5, 1.0, -2.5), Rect::FromCorners(3.0, 2.5, 4.5, 4.0),
-                    Rect::FromCorners(-4.5, -2.0, -3.5, 0.0), Rect::FromCorners(2.5, -4.0, 4.0, -3.0),
-                    Rect::FromCorners(-1.0, 3.5, 1.0, 4.5)};
+  map.rectangles = {
+      Rect::FromCorners(1.5, -0.5, 2.5, 1.0),   Rect::FromCorners(-3.0, 1.0, -1.5, 2.0),
+      Rect::FromCorners(-1.0, -3.5, 1.0, -2.5), Rect::FromCorners(3.0, 2.5, 4.5, 4.0),
+      Rect::FromCorners(-4.5, -2.0, -3.5, 0.0), Rect::FromCorners(2.5, -4.0, 4.0, -3.0),
+      Rect::FromCorners(-1.0, 3.5, 1.0, 4.5)};
   EpisodeContext ctx;
   ctx.map = &map;
   ctx.role = AgentRole::kHuman;
@@ -31,7 +32,7 @@ void BM_SocialForceDecide10Neighbours7Rects(benchmark::State& state) {
   agents[0].position = Vec2::Zero();
   agents[0].velocity = Vec2(0.8, 0.2);
   agents[0].goal = Vec2(6.0, -1.0);  // behind a rectangle: guidance has a path to follow
-  for (int k = 0; k < 10; ++k) {  // ten people on a ring 1.2-3 m away, walking across
+  for (int k = 0; k < 10; ++k) {     // ten people on a ring 1.2-3 m away, walking across
     const double a = 0.63 * k;
     AgentState s;
     s.position = (1.2 + 0.18 * k) * Vec2(std::cos(a), std::sin(a));

@@ -1,6 +1,8 @@
 // The social force model: each force against its closed form by hand, the gradient against
 // finite differences, the loaded plugin never entering a rectangle, and a suite with social
 // force people giving the same episodes on any number of threads.
+#include "social_force.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
-#include "social_force.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -146,11 +147,11 @@ TEST(SocialForce, APersonNeverWalksIntoARectangle) {
 // Social force people in a suite: the same episodes on one thread and on two.
 TEST(SocialForce, ASuiteOfSocialForcePeopleGivesTheSameEpisodesOnAnyThreads) {
   testing::TempDir dir;
-  const auto file = dir.Write(
-      "sf.yaml",
-      "name: sf\nepisodes: 6\nseed: 4\nworld: {source: random_rect, obstacles: 3}\n"
-      "humans: {count: 5, policy: social_force}\nrobot: {sensors: [person]}\n"
-      "rows:\n  - {label: orca, policy: orca}\n  - {label: sf, policy: social_force}\n");
+  const auto file =
+      dir.Write("sf.yaml",
+                "name: sf\nepisodes: 6\nseed: 4\nworld: {source: random_rect, obstacles: 3}\n"
+                "humans: {count: 5, policy: social_force}\nrobot: {sensors: [person]}\n"
+                "rows:\n  - {label: orca, policy: orca}\n  - {label: sf, policy: social_force}\n");
   PluginRegistry registry;
   SuiteLoadResult loaded = LoadSuite(file, registry);
   ASSERT_TRUE(loaded.suite) << (loaded.errors.empty() ? "" : loaded.errors[0].Format());
