@@ -72,6 +72,9 @@ KEYS: Dict[str, Key] = {
     "progress_reward": Key(0.1, "float", 0.0, 10.0,
                            source="ours: shaping per metre gained towards the goal (along the "
                            "route when the row has one)"),
+    "collision_penalty": Key(0.0, "float", 0.0, 100.0,
+                             source="ours: subtracted from the reward of a collision, beside "
+                             "the environment's -0.25"),
     "hidden": Key(128, "int", 8, 4096, source="ours: width of the two trunk layers"),
     "init_log_std": Key(-0.5, "float", -10.0, 2.0, source="ours (continuous only)"),
     "checkpoint_interval": Key(20, "int", 1, 10**6,

@@ -66,8 +66,9 @@ def make_env(config: Dict[str, Any], num_envs: Optional[int] = None) -> VectorEn
         return VectorEnv(config["suite"], row=config["row"],
                          num_envs=num_envs or config["num_envs"], set=config["set"],
                          threads=config["threads"])
-    except (ValueError, RuntimeError, TypeError) as e:
-        raise PPOError(f"{config['suite']}, row {config['row']!r}: {e}") from None
+    except (ValueError, RuntimeError, TypeError, KeyError, OSError) as e:
+        message = e.args[0] if isinstance(e, KeyError) and e.args else e
+        raise PPOError(f"{config['suite']}, row {config['row']!r}: {message}") from None
 
 
 def observation_layout(env: VectorEnv, where: str) -> Dict[str, Any]:
@@ -163,6 +164,8 @@ class Trainer:
         self.optimizer = torch.optim.Adam(self.model.parameters(), lr=config["learning_rate"],
                                           eps=config["adam_epsilon"])
         self.batch = config["num_envs"] * config["steps_per_rollout"]
+        # By status code (STATUS_NAMES): 1.0 for the collisions.
+        self._collision = np.array([float(n.startswith("collision")) for n in STATUS_NAMES])
         self.total_updates = max(1, math.ceil(config["total_steps"] / self.batch))
         self.update = 0
         self.steps = 0
@@ -289,6 +292,8 @@ class Trainer:
             valid = ~ended  # a step right after an episode's end only resets that environment
             new_phi = potential(obs)
             shaped = reward + c["progress_reward"] * (phi - new_phi)
+            if c["collision_penalty"]:
+                shaped = shaped - c["collision_penalty"] * self._collision[info["status"]]
             shaped = np.where(valid, shaped, 0.0)
             phi = new_phi
             episode_return += np.where(valid, reward, 0.0)
@@ -465,8 +470,10 @@ class Trainer:
             "torch": torch.__version__, "layout": self.layout,
             "plugin_row": plugin_row(self.layout, os.path.join(self.out, "policy.pt")),
         }
-        atomic_write(os.path.join(self.out, "summary.json"),
-                     lambda tmp: open(tmp, "w").write(json.dumps(summary, indent=2) + "\n"))
+        def write(tmp):
+            with open(tmp, "w") as f:
+                f.write(json.dumps(summary, indent=2) + "\n")
+        atomic_write(os.path.join(self.out, "summary.json"), write)
         self._say(f"done: {self.steps:,} steps, {self.episodes} episodes, success of the last "
                   f"{len(self.outcomes)} {summary['last_episodes'].get('success', float('nan')):.3f}"
                   f" -> {os.path.join(self.out, 'policy.pt')}")
