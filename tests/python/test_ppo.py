@@ -58,7 +58,7 @@ def train(config, out, stop_after=None, resume=False):
 
 def curve(out):
     with open(os.path.join(out, "learning_curve.csv"), newline="") as f:
-        return [{k: v for k, v in r.items() if k not in ("seconds", "steps_per_s")}
+        return [{k: v for k, v in r.items() if k not in ("seconds", "steps_per_s", "collect_seconds", "update_seconds")}
                 for r in csv.DictReader(f)]
 
 
@@ -164,6 +164,14 @@ class Training(unittest.TestCase):
             Trainer(tiny(learning_rate=0.01), out, resume=True, quiet=True)
         self.assertIn("learning_rate: 0.0003 there, 0.01 here", str(c.exception))
         checkpoint = os.path.join(out, "checkpoint.pt")
+        # A key added after the checkpoint was written: it trained with that key's default.
+        state = torch.load(checkpoint)
+        del state["config"]["collision_penalty"]
+        torch.save(state, checkpoint)
+        Trainer(tiny(), out, resume=True, quiet=True).close()
+        with self.assertRaises(PPOError) as c:
+            Trainer(tiny(collision_penalty=0.5), out, resume=True, quiet=True)
+        self.assertIn("collision_penalty: 0.0 there, 0.5 here", str(c.exception))
         torch.save({"model": {}}, checkpoint)
         with self.assertRaises(PPOError) as c:
             Trainer(tiny(), out, resume=True, quiet=True)

@@ -25,7 +25,8 @@ CHECKPOINT_FORMAT = "crowdsim_bench.ppo checkpoint"
 CHECKPOINT_VERSION = 1
 # Observation keys the encoder takes; any other sensor's features are refused (named).
 KNOWN_KEYS = ("robot", "humans", "humans_mask", "lidar", "time", "route")
-CURVE_COLUMNS = ["update", "steps", "episodes", "seconds", "steps_per_s", "mean_return",
+CURVE_COLUMNS = ["update", "steps", "episodes", "seconds", "steps_per_s", "collect_seconds",
+                 "update_seconds", "mean_return",
                  "success", "collision", "timeout", "policy_loss", "value_loss", "entropy",
                  "approx_kl", "clip_fraction", "learning_rate"]
 # Episodes the progress line's and the curve's rates are over.
@@ -195,7 +196,9 @@ class Trainer:
             raise PPOError(f"{path}: checkpoint version {state.get('version')!r}, this trainer "
                            f"reads version {CHECKPOINT_VERSION}")
         mine = config_module.canonical(self.config)
-        theirs = state.get("config", {})
+        # A key the checkpoint does not name came after it: it trained with the default.
+        theirs = {k: config_module.KEYS[k].default for k in mine}
+        theirs.update(state.get("config", {}))
         differ = sorted(k for k in set(mine) | set(theirs) if mine.get(k) != theirs.get(k))
         if differ:
             detail = "; ".join(f"{k}: {theirs.get(k)!r} there, {mine.get(k)!r} here" for k in differ)
@@ -424,17 +427,21 @@ class Trainer:
                     group["lr"] = lr
                 (obs, ended, episode_return, batch, actions, log_probs, values, rewards, dones,
                  valids, last_value) = self._rollout(obs, ended, episode_return)
+                collected = time.monotonic()
                 advantages, returns = self._advantages(values, rewards, dones, last_value)
                 stats = self._optimize(batch, actions, log_probs, advantages, returns, valids)
                 self.update += 1
                 updates_this_run += 1
-                self.seconds += time.monotonic() - tick
+                now = time.monotonic()
+                self.seconds += now - tick
                 elapsed = time.monotonic() - started
                 rate = updates_this_run * self.batch / max(elapsed, 1e-9)
                 rates = self._rates()
                 writer.writerow({"update": self.update, "steps": self.steps,
                                  "episodes": self.episodes, "seconds": f"{self.seconds:.1f}",
                                  "steps_per_s": f"{rate:.0f}", "learning_rate": f"{lr:.3g}",
+                                 "collect_seconds": f"{collected - tick:.3f}",
+                                 "update_seconds": f"{now - collected:.3f}",
                                  **{k: f"{v:.4f}" for k, v in rates.items()},
                                  **{k: f"{v:.5f}" for k, v in stats.items()}})
                 curve.flush()
