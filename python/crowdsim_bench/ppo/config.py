@@ -1,0 +1,197 @@
+"""The PPO training file: YAML, one key per hyper-parameter, each checked by type and range.
+
+    name: table1_lidar_person          # -> results/train/ppo_<name>/
+    suite: ../baselines.yaml           # the row whose worlds, humans and sensors train the policy
+    row: orca_rect3                    # (its robot policy is replaced by the learner)
+    set: ["rows[orca_rect3].world.split=train"]   # --set overrides, as the CLI's
+    total_steps: 20000000
+    ...
+
+Defaults cite their source in KEYS (docs/training.md, "PPO" has the table)."""
+from __future__ import annotations
+
+import difflib
+import os
+from dataclasses import dataclass
+from typing import Any, Dict, List, Optional, Tuple
+
+
+class PPOError(Exception):
+    """Bad input (configuration, suite row, checkpoint): the message names the key or file;
+    `python3 -m crowdsim_bench.ppo` prints it without a traceback and exits 2."""
+
+
+@dataclass(frozen=True)
+class Key:
+    default: Any
+    kind: str  # int, float, bool, str, row, choice, list
+    low: Optional[float] = None
+    high: Optional[float] = None
+    low_open: bool = False  # (low, high] instead of [low, high]
+    choices: Tuple[str, ...] = ()
+    source: str = ""
+    # Changes the course of a training: a resumed checkpoint must have the same value.
+    fixed: bool = True
+
+
+REQUIRED = object()
+
+# Every key of the training file. Sources: "PPO paper" = Schulman et al. 2017, "Proximal Policy
+# Optimization Algorithms", Table 3 (MuJoCo) and Table 5 (Atari); "baselines" = OpenAI
+# baselines' ppo2 defaults; "ours" = chosen here (docs/training.md says why).
+KEYS: Dict[str, Key] = {
+    "name": Key("", "str", source="the file's name without .yaml"),
+    "description": Key("", "str", source="free text", fixed=False),
+    "suite": Key(REQUIRED, "str", source="required; relative to this file's folder, else the "
+                 "working folder"),
+    "row": Key(REQUIRED, "row", source="required; a row label or 1-based index"),
+    "set": Key([], "list", source="--set overrides of the suite (KEY.PATH=VALUE)"),
+    "seed": Key(1, "int", 0, 2**31 - 1, source="ours"),
+    "discrete": Key(False, "bool", source="ours: false = Gaussian velocity; true = CrowdNav's "
+                    "81 holonomic actions"),
+    "num_envs": Key(16, "int", 1, 4096, source="ours (PPO paper Atari: 8 actors)"),
+    "threads": Key(1, "int", 1, 256, source="ours; results do not depend on it", fixed=False),
+    "steps_per_rollout": Key(128, "int", 1, 100000, source="PPO paper Atari horizon T = 128"),
+    "epochs": Key(4, "int", 1, 100, source="ours (PPO paper: 10 MuJoCo, 3 Atari)"),
+    "minibatch_size": Key(512, "int", 1, 10**7, source="ours (PPO paper: 64 MuJoCo, 256 Atari)"),
+    "learning_rate": Key(3e-4, "float", 0.0, 1.0, low_open=True,
+                         source="PPO paper MuJoCo, Adam 3e-4"),
+    "lr_schedule": Key("constant", "choice", choices=("constant", "linear"),
+                       source="PPO paper MuJoCo: constant (Atari: linear to 0)"),
+    "adam_epsilon": Key(1e-5, "float", 0.0, 1.0, low_open=True, source="baselines"),
+    "clip": Key(0.2, "float", 0.0, 1.0, low_open=True, source="PPO paper, epsilon = 0.2"),
+    "gamma": Key(0.99, "float", 0.0, 1.0, source="PPO paper"),
+    "gae_lambda": Key(0.95, "float", 0.0, 1.0, source="PPO paper"),
+    "entropy_coef": Key(0.0, "float", 0.0, 1.0, source="PPO paper MuJoCo c2 = 0 (Atari 0.01)"),
+    "value_coef": Key(0.5, "float", 0.0, 100.0, source="baselines (PPO paper Atari c1 = 1)"),
+    "max_grad_norm": Key(0.5, "float", 0.0, 1000.0, source="baselines; 0 = no clipping"),
+    "normalize_advantages": Key(True, "bool", source="baselines (per minibatch)"),
+    "total_steps": Key(20_000_000, "int", 1, 10**12,
+                       source="ours (environment steps, all environments together)",
+                       fixed=False),
+    "progress_reward": Key(0.1, "float", 0.0, 10.0,
+                           source="ours: shaping per metre gained towards the goal (along the "
+                           "route when the row has one)"),
+    "collision_penalty": Key(0.0, "float", 0.0, 100.0,
+                             source="ours: subtracted from the reward of a collision, beside "
+                             "the environment's -0.25"),
+    "hidden": Key(128, "int", 8, 4096, source="ours: width of the two trunk layers"),
+    "init_log_std": Key(-0.5, "float", -10.0, 2.0, source="ours (continuous only)"),
+    "checkpoint_interval": Key(20, "int", 1, 10**6,
+                               source="ours: updates between checkpoints (the environments "
+                               "start new episodes there)"),
+}
+
+
+def _range_text(key: Key) -> str:
+    left = "(" if key.low_open else "["
+    return f"{left}{key.low:g}, {key.high:g}]"
+
+
+def _check(path: str, name: str, key: Key, value: Any) -> Any:
+    where = f"{path}: {name}"
+    if key.kind in ("int", "row"):
+        if key.kind == "row" and isinstance(value, str):
+            if not value.strip():
+                raise PPOError(f"{where} must name a row (its label or 1-based index), got ''")
+            return value
+        if not isinstance(value, int) or isinstance(value, bool):
+            what = "a row label or 1-based index" if key.kind == "row" else "a whole number"
+            raise PPOError(f"{where} must be {what}, got {value!r}")
+        if key.kind == "row":
+            if value < 1:
+                raise PPOError(f"{where} = {value} is out of range: rows are numbered from 1")
+            return value
+    elif key.kind == "float":
+        if not isinstance(value, (int, float)) or isinstance(value, bool):
+            raise PPOError(f"{where} must be a number, got {value!r}")
+        value = float(value)
+        if value != value:
+            raise PPOError(f"{where} must be a number, got NaN")
+    elif key.kind == "bool":
+        if not isinstance(value, bool):
+            raise PPOError(f"{where} must be true or false, got {value!r}")
+        return value
+    elif key.kind == "str":
+        if not isinstance(value, str):
+            raise PPOError(f"{where} must be text, got {value!r}")
+        return value
+    elif key.kind == "choice":
+        if value not in key.choices:
+            raise PPOError(f"{where} must be one of {', '.join(key.choices)}; got {value!r}")
+        return value
+    elif key.kind == "list":
+        if isinstance(value, str):
+            value = [value]
+        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+            raise PPOError(f"{where} must be a list of 'key.path=value' texts, got {value!r}")
+        for v in value:
+            if "=" not in v:
+                raise PPOError(f"{where}: {v!r} is not 'key.path=value'")
+        return list(value)
+    if key.low is not None:
+        below = value <= key.low if key.low_open else value < key.low
+        if below or value > key.high:
+            raise PPOError(f"{where} = {value!r} is out of range {_range_text(key)}")
+    return value
+
+
+def parse(data: Any, path: str = "<config>") -> Dict[str, Any]:
+    """A training file's mapping -> every key's value (defaults filled in); PPOError names the
+    file and key of the first problem."""
+    if not isinstance(data, dict):
+        raise PPOError(f"{path}: a PPO training file is a YAML mapping of keys "
+                       f"({', '.join(KEYS)}), got {type(data).__name__}")
+    config: Dict[str, Any] = {}
+    for name in data:
+        if name not in KEYS:
+            close = difflib.get_close_matches(str(name), list(KEYS), n=1)
+            hint = f" (did you mean '{close[0]}'?)" if close else ""
+            raise PPOError(f"{path}: unknown key '{name}'{hint}; the keys are: "
+                           f"{', '.join(KEYS)}")
+    for name, key in KEYS.items():
+        if name in data and data[name] is not None:
+            config[name] = _check(path, name, key, data[name])
+        elif key.default is REQUIRED:
+            raise PPOError(f"{path}: the key '{name}' is required ({key.source})")
+        else:
+            config[name] = list(key.default) if isinstance(key.default, list) else key.default
+    batch = config["num_envs"] * config["steps_per_rollout"]
+    if config["minibatch_size"] > batch:
+        raise PPOError(f"{path}: minibatch_size = {config['minibatch_size']} is larger than a "
+                       f"rollout (num_envs x steps_per_rollout = {batch})")
+    if not config["name"]:
+        config["name"] = os.path.splitext(os.path.basename(path))[0]
+    return config
+
+
+def load(path: str) -> Dict[str, Any]:
+    """Reads and checks a training file; `suite` becomes a path that exists (this file's
+    folder first, then the working folder)."""
+    try:
+        import yaml
+    except ImportError as e:  # pragma: no cover - Debian's python3-yaml
+        raise PPOError("reading a PPO training file needs PyYAML (apt install python3-yaml)") from e
+    try:
+        with open(path, encoding="utf-8") as f:
+            data = yaml.safe_load(f)
+    except OSError as e:
+        raise PPOError(f"{path}: cannot read the training file ({e.strerror})") from None
+    except yaml.YAMLError as e:
+        raise PPOError(f"{path}: not valid YAML ({str(e).splitlines()[0]})") from None
+    config = parse(data, path)
+    config["suite"] = resolve_suite(config["suite"], path)
+    return config
+
+
+def resolve_suite(suite: str, config_path: str) -> str:
+    here = os.path.join(os.path.dirname(os.path.abspath(config_path)), suite)
+    for candidate in (here, suite):
+        if os.path.isfile(candidate):
+            return os.path.relpath(candidate) if not os.path.isabs(suite) else candidate
+    raise PPOError(f"{config_path}: suite: no file {here} (nor {suite} in the working folder)")
+
+
+def canonical(config: Dict[str, Any]) -> Dict[str, Any]:
+    """The keys that decide a training's course (what a resumed checkpoint must match)."""
+    return {k: config[k] for k, key in KEYS.items() if key.fixed and k not in ("suite",)}

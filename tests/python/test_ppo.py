@@ -1,0 +1,239 @@
+"""crowdsim_bench.ppo, the PPO baseline: the training file's errors name key, value and range;
+a tiny training is seeded (same seed, same weights) and resumable (interrupted + resumed = the
+uninterrupted run, weights and curve); a damaged, foreign or other-configuration checkpoint is
+refused naming the file; the exported TorchScript module takes the plugin's observation and
+returns (vx, vy); run by the `torchscript` plugin (when CROWDSIM_BENCH names a CLI with it) it
+plays the same episodes as the Python policy through crowdsim_bench.evaluate().
+
+Run from the source root with the package on PYTHONPATH (ctest python_ppo). Skipped, saying
+so, without python3-torch or python3-yaml. Tiny runs on one thread: ~15-30 s in all."""
+import csv
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+try:
+    import torch
+    import yaml  # noqa: F401  (the training file)
+except ImportError as e:
+    torch = None
+    _MISSING = f"python3-torch and python3-yaml are needed ({e}); skipped"
+
+if torch is not None:
+    import crowdsim_bench as cb
+    from crowdsim_bench import ppo
+    from crowdsim_bench.ppo.config import PPOError, parse
+    from crowdsim_bench.ppo.trainer import Trainer, observation_layout
+    torch.set_num_threads(1)
+
+QUICK = "suites/quick.yaml"
+# A tiny training: 4 environments x 16 steps, 6 updates, a checkpoint every 2.
+TINY = {"suite": QUICK, "row": "orca", "set": ["world.split=train"], "num_envs": 4,
+        "steps_per_rollout": 16, "epochs": 2, "minibatch_size": 32, "total_steps": 6 * 64,
+        "checkpoint_interval": 2, "hidden": 32, "seed": 7}
+CLI = os.environ.get("CROWDSIM_BENCH", "")
+
+
+def tiny(**changes):
+    data = dict(TINY, **changes)
+    return parse(data, "tiny.yaml")
+
+
+def weights(trainer):
+    return {k: v.clone() for k, v in trainer.model.state_dict().items()}
+
+
+def train(config, out, stop_after=None, resume=False):
+    trainer = Trainer(config, out, resume=resume, quiet=True)
+    try:
+        trainer.train(stop_after=stop_after)
+    finally:
+        trainer.close()
+    return trainer
+
+
+def curve(out):
+    with open(os.path.join(out, "learning_curve.csv"), newline="") as f:
+        return [{k: v for k, v in r.items() if k not in ("seconds", "steps_per_s", "collect_seconds", "update_seconds")}
+                for r in csv.DictReader(f)]
+
+
+@unittest.skipIf(torch is None, _MISSING if torch is None else "")
+class Config(unittest.TestCase):
+    def assertError(self, data, *parts):
+        with self.assertRaises(PPOError) as c:
+            parse(data, "bad.yaml")
+        for part in parts:
+            self.assertIn(part, str(c.exception))
+
+    def test_a_misspelt_key_is_named_with_the_valid_keys(self):
+        self.assertError(dict(TINY, lerning_rate=0.1), "bad.yaml", "'lerning_rate'",
+                         "did you mean 'learning_rate'", "gae_lambda")
+
+    def test_values_out_of_range_name_key_value_and_range(self):
+        self.assertError(dict(TINY, clip=1.5), "clip = 1.5", "(0, 1]")
+        self.assertError(dict(TINY, gamma=-0.1), "gamma = -0.1", "[0, 1]")
+        self.assertError(dict(TINY, num_envs=0), "num_envs = 0", "[1, 4096]")
+        self.assertError(dict(TINY, learning_rate=0), "learning_rate = 0.0", "(0, 1]")
+        self.assertError(dict(TINY, epochs=2.5), "epochs must be a whole number")
+        self.assertError(dict(TINY, discrete="yes"), "discrete must be true or false")
+        self.assertError(dict(TINY, lr_schedule="cosine"), "lr_schedule", "constant, linear")
+        self.assertError(dict(TINY, minibatch_size=1000), "minibatch_size = 1000",
+                         "num_envs x steps_per_rollout = 64")
+        self.assertError({"row": "orca"}, "'suite' is required")
+        self.assertError([1, 2], "a YAML mapping")
+
+    def test_defaults_are_filled_in(self):
+        c = parse({"suite": QUICK, "row": "orca"}, "suites/ppo/x.yaml")
+        self.assertEqual((c["clip"], c["gamma"], c["gae_lambda"], c["learning_rate"]),
+                         (0.2, 0.99, 0.95, 3e-4))
+        self.assertEqual(c["name"], "x")
+        self.assertEqual(set(c), set(ppo.KEYS))
+
+    def test_the_command_line_says_one_line_and_exits_2(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "bad.yaml")
+            with open(path, "w") as f:
+                f.write("suite: suites/quick.yaml\nrow: orca\nclip: 3\n")
+            p = subprocess.run([sys.executable, "-m", "crowdsim_bench.ppo", "train", path,
+                                "--out", os.path.join(d, "out")], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 2, p.stderr)
+        self.assertNotIn("Traceback", p.stderr)
+        self.assertIn("clip = 3.0 is out of range (0, 1]", p.stderr)
+
+    def test_a_row_whose_observation_the_encoder_cannot_take(self):
+        class Space:
+            def __init__(self, shape):
+                self.shape, self.high = shape, np.full(shape, 5.0)
+
+        class FakeEnv:
+            single_observation_space = {"robot": Space((9,)), "humans": Space((5, 5)),
+                                        "humans_mask": Space((5,)), "time": Space(()),
+                                        "sonar": Space((8,))}
+        with self.assertRaises(PPOError) as c:
+            observation_layout(FakeEnv(), "suite.yaml, row 'x'")
+        self.assertIn("'sonar'", str(c.exception))
+        self.assertIn("suite.yaml, row 'x'", str(c.exception))
+
+    def test_an_unknown_row_is_named(self):
+        with tempfile.TemporaryDirectory() as d, self.assertRaises(PPOError) as c:
+            Trainer(tiny(row="no_such_row"), os.path.join(d, "out"), quiet=True)
+        self.assertIn("no_such_row", str(c.exception))
+
+
+@unittest.skipIf(torch is None, _MISSING if torch is None else "")
+class Training(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def out(self, name):
+        return os.path.join(self.tmp.name, name)
+
+    def test_same_seed_same_weights_and_resume_continues_exactly(self):
+        a = weights(train(tiny(), self.out("a")))
+        b = weights(train(tiny(), self.out("b")))
+        for k in a:
+            self.assertTrue(torch.equal(a[k], b[k]), k)
+        other = weights(train(tiny(seed=8), self.out("other")))
+        self.assertFalse(all(torch.equal(a[k], other[k]) for k in a))
+        # Interrupted after update 3 (checkpoint of update 2), then resumed to the end.
+        with self.assertRaises(KeyboardInterrupt):
+            train(tiny(), self.out("r"), stop_after=3)
+        resumed = weights(train(tiny(), self.out("r"), resume=True))
+        for k in a:
+            self.assertTrue(torch.equal(a[k], resumed[k]), k)
+        self.assertEqual(curve(self.out("r")), curve(self.out("a")))
+        for name in ("policy.pt", "checkpoint.pt", "learning_curve.svg", "summary.json"):
+            self.assertTrue(os.path.isfile(os.path.join(self.out("r"), name)), name)
+        self.assertEqual([f for f in os.listdir(self.out("r")) if ".tmp" in f], [])
+
+    def test_checkpoints_that_cannot_be_resumed_are_refused_naming_the_file(self):
+        out = self.out("c")
+        train(tiny(total_steps=2 * 64), out)
+        with self.assertRaises(PPOError) as c:
+            Trainer(tiny(), out, quiet=True)  # without --resume
+        self.assertIn("--resume", str(c.exception))
+        with self.assertRaises(PPOError) as c:
+            Trainer(tiny(learning_rate=0.01), out, resume=True, quiet=True)
+        self.assertIn("learning_rate: 0.0003 there, 0.01 here", str(c.exception))
+        checkpoint = os.path.join(out, "checkpoint.pt")
+        # A key added after the checkpoint was written: it trained with that key's default.
+        state = torch.load(checkpoint)
+        del state["config"]["collision_penalty"]
+        torch.save(state, checkpoint)
+        Trainer(tiny(), out, resume=True, quiet=True).close()
+        with self.assertRaises(PPOError) as c:
+            Trainer(tiny(collision_penalty=0.5), out, resume=True, quiet=True)
+        self.assertIn("collision_penalty: 0.0 there, 0.5 here", str(c.exception))
+        torch.save({"model": {}}, checkpoint)
+        with self.assertRaises(PPOError) as c:
+            Trainer(tiny(), out, resume=True, quiet=True)
+        self.assertIn(checkpoint, str(c.exception))
+        self.assertIn("not a crowdsim_bench.ppo checkpoint", str(c.exception))
+        with open(checkpoint, "wb") as f:
+            f.write(b"PK\x03\x04 not really a zip")
+        with self.assertRaises(PPOError) as c:
+            Trainer(tiny(), out, resume=True, quiet=True)
+        self.assertIn("not a readable checkpoint", str(c.exception))
+
+    def test_exported_module_takes_one_observation_and_acts_as_the_python_policy(self):
+        env = cb.Env(QUICK, row="orca")
+        for discrete in (False, True):
+            out = self.out(f"e{discrete}")
+            trainer = train(tiny(discrete=discrete, total_steps=64, checkpoint_interval=1), out)
+            module = torch.jit.load(os.path.join(out, "policy.pt"))
+            for episode in range(3):
+                obs, _ = env.reset(seed=episode)
+                for _ in range(5):
+                    t = {k: torch.from_numpy(np.asarray(v)) for k, v in obs.items()}
+                    with torch.no_grad():
+                        got = module(t)
+                    self.assertEqual(tuple(got.shape), (2,))
+                    self.assertEqual(got.dtype, torch.float64)
+                    with torch.no_grad():
+                        want = trainer.model.greedy({k: v.unsqueeze(0) for k, v in t.items()})[0]
+                    self.assertTrue(torch.equal(got, want), (got, want))
+                    self.assertLessEqual(float(got.norm()), obs["robot"][7] + 1e-6)
+                    obs, _, terminated, truncated, _ = env.step(got.numpy())
+                    if terminated or truncated:
+                        break
+
+    @unittest.skipUnless(CLI and os.path.exists(os.path.join(
+        os.path.dirname(os.path.dirname(os.path.abspath(CLI or "."))), "plugins",
+        "crowdsim_torchscript.so")), "CROWDSIM_BENCH names no CLI with the torchscript plugin")
+    def test_the_plugin_plays_the_python_policys_episodes(self):
+        out = self.out("p")
+        trainer = train(tiny(total_steps=64, checkpoint_interval=1), out)
+        policy = os.path.join(out, "policy.pt")
+        with open(QUICK) as f:
+            head = f.read().split("\nrows:")[0]
+        suite = self.out("suite.yaml")
+        with open(suite, "w") as f:
+            f.write(head + "\nrows:\n  - {label: ppo, policy: torchscript, weights: " + policy +
+                    ", params: {sensors: lidar+person}}\n")
+        p = subprocess.run([CLI, "run", suite, "--episodes", "4", "--jobs", "1", "--out",
+                            self.out("cli")], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+
+        def act(obs):
+            with torch.no_grad():
+                t = {k: torch.from_numpy(np.asarray(v)).unsqueeze(0) for k, v in obs.items()}
+                return trainer.model.greedy(t)[0].numpy()
+        cb.evaluate(act, suite, row="ppo", label="ppo", out=self.out("py"), episodes=4)
+
+        def episodes(folder):
+            with open(os.path.join(folder, "episodes.csv"), newline="") as f:
+                return [(e["episode"], e["status"], e["steps"], e["path_length"])
+                        for e in csv.DictReader(f)]
+        self.assertEqual(sorted(episodes(self.out("cli"))), sorted(episodes(self.out("py"))))
+
+
+if __name__ == "__main__":
+    unittest.main()
