@@ -1,9 +1,16 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <memory>
 #include <numbers>
+#include <string>
+#include <variant>
+#include <vector>
 
 #include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/suite.h"
 #include "crowdsim/collision_world.h"
+#include "temp_dir.h"
 #include "test_paths.h"
 
 namespace crowdsim {
@@ -112,6 +119,118 @@ TEST_F(PersonPlugin, ALimitedReadingGrowsAndShrinksWithTheCrowdInRange) {
   ASSERT_EQ(reading.people.size(), 5u);
   EXPECT_EQ(reading.people[1].velocity, Vec2(2, 0));
   EXPECT_EQ(reading.people[4].velocity, Vec2(5, 0));
+}
+
+// Field of view and occlusion (issue 48): off by default, and then out of the config hash.
+class PersonRealism : public ::testing::Test {
+ protected:
+  PersonRealism() : registry_({testing::PluginDir()}) {
+    auto map = std::make_shared<StaticMap>();
+    map->bounds = Rect::FromCorners(-10, -10, 10, 10);
+    map->rectangles = {Rect::FromCorners(2.0, -0.5, 2.5, 0.5)};  // a pillar 2 m ahead
+    world_ = std::make_unique<CollisionWorld>(map);
+  }
+  std::shared_ptr<Sensor> Make(double fov_deg, const std::string& occlusion) {
+    const LoadedPlugin& p = registry_.Load("person", PluginKind::kSensor);
+    Params params = Params::Defaults(p.schema);
+    params.Set("fov_deg", fov_deg);
+    params.Set("occlusion", occlusion);
+    return registry_.MakeSensor(p, params);
+  }
+  /// The x of each person reported, the robot at the origin heading +x.
+  std::vector<double> Seen(const Sensor& sensor, const std::vector<AgentState>& humans) {
+    AgentState robot;
+    const Frame frame = Frame::Make(Vec2::Zero(), 0.0);
+    SensorReading reading;
+    sensor.Sense(SenseInput{robot, frame, humans, *world_}, &reading);
+    std::vector<double> xs;
+    for (const PersonObservation& p : reading.people) xs.push_back(p.position.x());
+    return xs;
+  }
+  static AgentState At(double x, double y) {
+    AgentState h;
+    h.position = Vec2(x, y);
+    h.radius = 0.3;
+    return h;
+  }
+  PluginRegistry registry_;
+  std::unique_ptr<CollisionWorld> world_;
+};
+
+TEST_F(PersonRealism, ThePillarHidesWhoStandsBehindItOnlyWithOcclusion) {
+  const std::vector<AgentState> humans{At(4.0, 0.0), At(4.0, 2.0), At(1.0, 0.0)};
+  EXPECT_EQ(Seen(*Make(360, "none"), humans), (std::vector<double>{4.0, 4.0, 1.0}));
+  // (4, 0) is behind the pillar, all three sight lines blocked; (4, 2) is clear.
+  EXPECT_EQ(Seen(*Make(360, "obstacles"), humans), (std::vector<double>{4.0, 1.0}));
+  // Half hidden: the pillar covers its centre line but not its upper edge.
+  const std::vector<AgentState> edge{At(4.0, 0.8)};
+  EXPECT_EQ(Seen(*Make(360, "obstacles"), edge), (std::vector<double>{4.0}));
+}
+
+TEST_F(PersonRealism, PeopleHidePeopleOnlyWhenAskedTo) {
+  // Behind the person at (-2, 0) along the robot's back, away from the pillar.
+  const std::vector<AgentState> humans{At(-2.0, 0.0), At(-4.0, 0.0)};
+  EXPECT_EQ(Seen(*Make(360, "obstacles"), humans), (std::vector<double>{-2.0, -4.0}));
+  EXPECT_EQ(Seen(*Make(360, "obstacles+people"), humans), (std::vector<double>{-2.0}));
+  // A wider person behind is seen past the nearer one's edge.
+  std::vector<AgentState> wide = humans;
+  wide[1].radius = 0.9;
+  EXPECT_EQ(Seen(*Make(360, "obstacles+people"), wide), (std::vector<double>{-2.0, -4.0}));
+}
+
+TEST_F(PersonRealism, OnlyPeopleInTheFieldOfViewAreReported) {
+  // Bearings 0, 60, 100 and 180 degrees, all 3 m away and clear of the pillar's line.
+  std::vector<AgentState> humans;
+  for (const double deg : {0.0, 60.0, 100.0, 180.0}) {
+    const double a = deg * kPi / 180.0;
+    humans.push_back(At(3.0 * std::cos(a), 3.0 * std::sin(a) + (deg == 0.0 ? 3.0 : 0.0)));
+  }
+  humans[0] = At(1.0, 0.0);  // straight ahead, before the pillar
+  EXPECT_EQ(Seen(*Make(360, "none"), humans).size(), 4u);
+  EXPECT_EQ(Seen(*Make(180, "none"), humans).size(), 2u);  // 0 and 60 degrees
+  EXPECT_EQ(Seen(*Make(90, "none"), humans).size(), 1u);   // straight ahead only
+  EXPECT_EQ(Seen(*Make(220, "none"), humans).size(), 3u);  // 100 degrees too
+}
+
+TEST_F(PersonRealism, BadValuesAreRefusedAndDefaultsStayOutOfTheHash) {
+  testing::TempDir dir;
+  const auto suite = [&](const std::string& person) {
+    return dir.Write("s.yaml",
+                     "name: s\nepisodes: 1\nworld: {source: random_rect}\n"
+                     "robot: {sensors: [" +
+                         person +
+                         "]}\n"
+                         "rows:\n  - {label: a, policy: orca}\n");
+  };
+  PluginRegistry registry;
+  const auto errors = [&](const std::string& person) {
+    std::string all;
+    for (const SuiteError& e : LoadSuite(suite(person), registry).errors) all += e.Format() + "\n";
+    return all;
+  };
+  EXPECT_NE(errors("{type: person, fov_deg: 0}").find("fov_deg"), std::string::npos);
+  EXPECT_NE(errors("{type: person, fov_deg: 400}").find("fov_deg"), std::string::npos);
+  const std::string misspelt = errors("{type: person, occlusion: obstacle}");
+  EXPECT_NE(misspelt.find("obstacles+people"), std::string::npos) << misspelt;
+  // The defaults written out give the configuration of a suite that leaves them out.
+  const auto hash = [&](const std::string& person) {
+    return LoadSuite(suite(person), registry).suite->ConfigHash();
+  };
+  EXPECT_EQ(hash("person"), hash("{type: person, fov_deg: 360, occlusion: none}"));
+  EXPECT_NE(hash("person"), hash("{type: person, fov_deg: 180}"));
+  const LoadedPlugin& p = registry_.Load("person", PluginKind::kSensor);
+  for (const ParamSpec& spec : p.schema) {
+    if (spec.name == "fov_deg") {
+      EXPECT_EQ(std::get<double>(spec.default_value), 360.0);
+      EXPECT_GT(spec.min, 0.0);
+      EXPECT_EQ(spec.max, 360.0);
+      EXPECT_FALSE(spec.hashed_at_default);
+    }
+    if (spec.name == "occlusion") {
+      EXPECT_EQ(spec.choices, (std::vector<std::string>{"none", "obstacles", "obstacles+people"}));
+      EXPECT_FALSE(spec.hashed_at_default);
+    }
+  }
 }
 
 TEST_F(PersonPlugin, NoHumansNoPeople) {
