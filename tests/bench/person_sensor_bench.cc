@@ -17,8 +17,7 @@ namespace {
 
 void BM_PersonReading20PeopleFloorPlan(benchmark::State& state, double fov_deg,
                                        const char* occlusion) {
-  const WorldFile plan =
-      ReadWorldFile(testing::SourceDir() / "worlds" / "gibson" / "hard.yaml");
+  const WorldFile plan = ReadWorldFile(testing::SourceDir() / "worlds" / "gibson" / "hard.yaml");
   auto map = std::make_shared<StaticMap>();
   map->bounds = plan.bounds;
   map->rectangles = plan.rectangles;
