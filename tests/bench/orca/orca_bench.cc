@@ -12,6 +12,7 @@
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/bench/plugin_registry.h"
+#include "human_decision.h"
 #include "orca/agent_lines.h"
 #include "orca/geometry.h"
 #include "orca/obstacles.h"
@@ -23,13 +24,7 @@
 namespace crowdsim::orca {
 namespace {
 
-// Seven rectangles within obstacle range (5.3 m) of an agent at the origin.
-std::vector<Rect> SevenRects() {
-  return {Rect::FromCorners(1.5, -0.5, 2.5, 1.0),   Rect::FromCorners(-3.0, 1.0, -1.5, 2.0),
-          Rect::FromCorners(-1.0, -3.5, 1.0, -2.5), Rect::FromCorners(3.0, 2.5, 4.5, 4.0),
-          Rect::FromCorners(-4.5, -2.0, -3.5, 0.0), Rect::FromCorners(2.5, -4.0, 4.0, -3.0),
-          Rect::FromCorners(-1.0, 3.5, 1.0, 4.5)};
-}
+using bench::SevenRects;
 
 // Five humans around the agent, walking in various directions.
 std::vector<OrcaAgent> FiveNeighbours() {
@@ -184,33 +179,14 @@ BENCHMARK(BM_Blocks100AgentStep)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
 
 // The plugin as the harness runs it for a human: neighbour query, guidance, ORCA.
 void BM_PluginDecideHuman(benchmark::State& state) {
-  PluginRegistry registry({crowdsim::testing::PluginDir()});
-  const LoadedPlugin& plugin = registry.Load("orca", PluginKind::kPolicy);
-  auto policy = registry.MakePolicy(plugin, Params::Defaults(plugin.schema));
-  StaticMap map;
-  map.bounds = Rect::FromCorners(-10, -10, 10, 10);
-  map.rectangles = SevenRects();
-  EpisodeContext ctx;
-  ctx.map = &map;
-  ctx.role = AgentRole::kHuman;
-  policy->Reset(ctx);
-  std::vector<AgentState> agents(1);
-  agents[0].position = Vec2::Zero();
-  agents[0].velocity = Vec2(0.8, 0.2);
-  agents[0].goal = Vec2(6.0, -1.0);  // behind a rectangle: guidance has a path to follow
+  std::vector<AgentState> others;
   for (const OrcaAgent& n : FiveNeighbours()) {
     AgentState s;
     s.position = n.position;
     s.velocity = n.velocity;
-    agents.push_back(s);
+    others.push_back(s);
   }
-  AgentIndex index;
-  index.Rebuild(agents);
-  Observation obs;
-  obs.self = agents[0];
-  obs.agents = &index;
-  obs.self_index = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(policy->Decide(obs));
+  bench::TimeHumanDecision(state, "orca", others);
 }
 BENCHMARK(BM_PluginDecideHuman);
 
