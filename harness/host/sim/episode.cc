@@ -72,7 +72,7 @@ class Episode::StepLookahead final : public Lookahead {
       o.robot.velocity = v;
       o.robot.heading = HeadingToGoal(o.robot);
       o.frame = Frame::Make(o.robot.position, o.robot.heading);
-      e_.Sense(o.robot, o.frame, next_humans_, &o.readings);
+      e_.Sense(o.robot, o.frame, next_humans_, e_.step_index_ + 1, &o.readings);
     }
   }
 
@@ -259,10 +259,10 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
 Episode::~Episode() = default;
 
 void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
-                    std::vector<SensorReading>* out) const {
+                    int step, std::vector<SensorReading>* out) const {
   const std::span<const MountedSensor> sensors = agents_.sensors;
   out->resize(sensors.size());
-  const SenseInput input{robot, frame, humans, world_};
+  const SenseInput input{robot, frame, humans, world_, SensorNoiseSeed(scenario_.seed), step};
   for (size_t s = 0; s < sensors.size(); ++s) {
     SensorReading& r = (*out)[s];
     // Readings are reused step to step and most already carry the name: no copy.
@@ -315,7 +315,7 @@ void Episode::FillRobotObservation() {
   robot_obs_.time = time_;
   robot_obs_.self = robot_;
   robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
-  Sense(robot_, robot_obs_.frame, humans_, &robot_obs_.readings);
+  Sense(robot_, robot_obs_.frame, humans_, step_index_, &robot_obs_.readings);
   robot_obs_.lookahead = nullptr;
 }
 

@@ -27,7 +27,8 @@ SensorSnapshot TakeSensorSnapshot(const Scenario& scenario, const EpisodeResult&
   snap.frame = Frame::Make(snap.robot.position, snap.robot.heading);
   snap.humans = f.humans;
   const CollisionWorld world(scenario.map);
-  const SenseInput input{snap.robot, snap.frame, snap.humans, world};
+  const SenseInput input{snap.robot, snap.frame, snap.humans, world, SensorNoiseSeed(scenario.seed),
+                         step};
   snap.readings.resize(sensors.size());
   for (size_t s = 0; s < sensors.size(); ++s) {
     snap.readings[s].sensor = sensors[s].name;

@@ -1,6 +1,7 @@
 // Sensor plugin interface: turns the world state into a robot observation.
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "crowdsim/agent_state.h"
@@ -17,6 +18,10 @@ struct CROWDSIM_SDK_API SenseInput {
   const Frame& frame;  ///< the robot's sensor frame
   std::span<const AgentState> humans;
   const CollisionWorld& world;  ///< static rectangles (Bullet) and ray casts
+  /// The episode's stream for sensor noise: draw from (noise_seed, step, what) with no state, so
+  /// a reading is the same on any thread and in a lookahead of the same step. 0: no episode.
+  std::uint64_t noise_seed = 0;
+  int step = 0;  ///< the step sensed (a lookahead senses the next one)
 };
 
 class CROWDSIM_SDK_API Sensor {

@@ -11,6 +11,7 @@
 #include "crowdsim/collision_world.h"
 #include "crowdsim/lookahead.h"
 #include "crowdsim/policy.h"
+#include "crowdsim/rng.h"
 #include "crowdsim/scenario.h"
 #include "crowdsim/sensor.h"
 #include "crowdsim/sim_config.h"
@@ -35,6 +36,11 @@ const char* EpisodeStatusName(EpisodeStatus s);
 /// A velocity above this multiple of v_pref is a policy_error: a unit or sign bug (linear allows
 /// 2x).
 inline constexpr double kMaxSpeedFactor = 10.0;
+
+/// The sensors' noise stream of an episode (SenseInput::noise_seed), apart from the agents'.
+inline std::uint64_t SensorNoiseSeed(std::uint64_t scenario_seed) {
+  return SplitMix64(scenario_seed ^ 0x73656e736f727321ULL);  // "sensors!"
+}
 
 /// Throws std::invalid_argument for a scenario without a meaningful episode: robot start or goal
 /// off-map or blocked, a start disc overlapping beyond kStartOverlapTolerance, start within
@@ -128,8 +134,9 @@ class Episode {
 
  private:
   class StepLookahead;
+  /// The sensors' readings at step `step` (a lookahead's: the next one).
   void Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
-             std::vector<SensorReading>* out) const;
+             int step, std::vector<SensorReading>* out) const;
   void DecideHumans();
   /// Human i's decision into human_actions_[i] (throws what its policy or the checks throw).
   void DecideHuman(int i);
