@@ -7,7 +7,9 @@
 #include <variant>
 #include <vector>
 
+#include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/collision_world.h"
 #include "temp_dir.h"
@@ -192,6 +194,84 @@ TEST_F(PersonRealism, OnlyPeopleInTheFieldOfViewAreReported) {
   EXPECT_EQ(Seen(*Make(220, "none"), humans).size(), 3u);  // 100 degrees too
 }
 
+// Over 20,000 readings (200 steps x 100 episodes' seeds) of one person in the open, 5 m ahead:
+// the reported fraction is the detection probability and the position errors have the configured
+// standard deviation, within 4 standard errors; the same (seed, step) gives the same reading.
+TEST_F(PersonRealism, NoiseAndMissesFollowTheirParametersAndTheSeeds) {
+  const LoadedPlugin& p = registry_.Load("person", PluginKind::kSensor);
+  Params params = Params::Defaults(p.schema);
+  params.Set("detection_prob", 0.9);
+  params.Set("position_noise", 0.1);
+  const auto sensor = registry_.MakeSensor(p, params);
+  const std::vector<AgentState> humans{At(-5.0, 0.0)};
+  AgentState robot;
+  const Frame frame = Frame::Make(Vec2::Zero(), 0.0);
+  const auto read = [&](std::uint64_t seed, int step) {
+    SensorReading reading;
+    sensor->Sense(SenseInput{robot, frame, humans, *world_, seed, step}, &reading);
+    return reading.people;
+  };
+  int reported = 0, total = 0;
+  double sum_x = 0, sum_xx = 0, sum_y = 0, sum_yy = 0;
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    for (int step = 0; step < 200; ++step) {
+      const auto people = read(seed, step);
+      ++total;
+      if (people.empty()) continue;
+      ++reported;
+      const double dx = people[0].position.x() + 5.0, dy = people[0].position.y();
+      sum_x += dx;
+      sum_xx += dx * dx;
+      sum_y += dy;
+      sum_yy += dy * dy;
+    }
+  }
+  const double rate = static_cast<double>(reported) / total;
+  EXPECT_NEAR(rate, 0.9, 4.0 * std::sqrt(0.9 * 0.1 / total)) << rate;
+  const double sd_x = std::sqrt(sum_xx / reported - std::pow(sum_x / reported, 2));
+  const double sd_y = std::sqrt(sum_yy / reported - std::pow(sum_y / reported, 2));
+  // The standard error of a standard deviation estimate: sigma / sqrt(2n).
+  const double tolerance = 4.0 * 0.1 / std::sqrt(2.0 * reported);
+  EXPECT_NEAR(sd_x, 0.1, tolerance) << sd_x;
+  EXPECT_NEAR(sd_y, 0.1, tolerance) << sd_y;
+  EXPECT_NEAR(sum_x / reported, 0.0, 4.0 * 0.1 / std::sqrt(reported));
+  // Deterministic in (seed, step), different across steps.
+  const auto a = read(7, 3), b = read(7, 3), c = read(7, 4);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());  // seed 7 draws a detection at steps 3 and 4
+  ASSERT_FALSE(c.empty());
+  EXPECT_EQ(a[0].position, b[0].position);
+  EXPECT_NE(a[0].position, c[0].position);
+  // Velocities stay true: a tracker's estimate is not modelled yet.
+  EXPECT_EQ(a[0].velocity, Vec2::Zero());
+}
+
+// A realistic detector in a suite: the same episodes on one thread and on two (its noise comes
+// from each episode's seed and step, not from a thread's state).
+TEST_F(PersonRealism, ARealisticDetectorGivesTheSameEpisodesOnAnyThreads) {
+  testing::TempDir dir;
+  const auto file =
+      dir.Write("real.yaml",
+                "name: real\nepisodes: 6\nseed: 4\nworld: {source: random_rect, obstacles: 3}\n"
+                "humans: {count: 5, policy: orca}\n"
+                "robot: {sensors: [{type: person, fov_deg: 180, occlusion: obstacles+people, "
+                "detection_prob: 0.9, position_noise: 0.1}]}\n"
+                "rows:\n  - {label: orca, policy: orca}\n  - {label: sarl, policy: sarl}\n");
+  PluginRegistry registry;
+  SuiteLoadResult loaded = LoadSuite(file, registry);
+  ASSERT_TRUE(loaded.suite) << (loaded.errors.empty() ? "" : loaded.errors[0].Format());
+  std::vector<std::string> texts;
+  for (const int jobs : {1, 2}) {
+    RunOptions options;
+    options.out_dir = dir.path() / ("out" + std::to_string(jobs));
+    options.jobs = jobs;
+    options.progress = false;
+    RunSuite(*loaded.suite, registry, options);
+    texts.push_back(WithoutTimingColumns(testing::ReadText(options.out_dir / "episodes.csv")));
+  }
+  EXPECT_EQ(texts[0], texts[1]);
+}
+
 TEST_F(PersonRealism, BadValuesAreRefusedAndDefaultsStayOutOfTheHash) {
   testing::TempDir dir;
   const auto suite = [&](const std::string& person) {
@@ -218,6 +298,11 @@ TEST_F(PersonRealism, BadValuesAreRefusedAndDefaultsStayOutOfTheHash) {
   };
   EXPECT_EQ(hash("person"), hash("{type: person, fov_deg: 360, occlusion: none}"));
   EXPECT_NE(hash("person"), hash("{type: person, fov_deg: 180}"));
+  EXPECT_EQ(hash("person"), hash("{type: person, detection_prob: 1, position_noise: 0}"));
+  EXPECT_NE(errors("{type: person, detection_prob: 1.5}").find("detection_prob"),
+            std::string::npos);
+  EXPECT_NE(errors("{type: person, position_noise: -0.1}").find("position_noise"),
+            std::string::npos);
   const LoadedPlugin& p = registry_.Load("person", PluginKind::kSensor);
   for (const ParamSpec& spec : p.schema) {
     if (spec.name == "fov_deg") {

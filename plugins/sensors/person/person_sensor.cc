@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "crowdsim/collision_world.h"
+#include "crowdsim/rng.h"
 
 namespace crowdsim::person {
 
@@ -34,6 +35,22 @@ ParamSchema Schema() {
        "what hides a human: a human is reported when a sight line from the robot's centre reaches "
        "its centre or either edge of its disc",
        false},
+      {"detection_prob",
+       ParamType::kDouble,
+       1.0,
+       0.0,
+       1.0,
+       {},
+       "probability that a human in view is reported at a step (each step drawn anew)",
+       false},
+      {"position_noise",
+       ParamType::kDouble,
+       0.0,
+       0.0,
+       10.0,
+       {},
+       "m; standard deviation of the Gaussian noise added to each axis of a reported position",
+       false},
   };
 }
 
@@ -60,7 +77,9 @@ PersonSensor::PersonSensor(const Params& params)
       half_fov_cos_(params.GetDouble("fov_deg") >= 360.0
                         ? -2.0
                         : std::cos(params.GetDouble("fov_deg") * M_PI / 360.0)),
-      occlusion_(OcclusionFrom(params.GetString("occlusion"))) {}
+      occlusion_(OcclusionFrom(params.GetString("occlusion"))),
+      detection_prob_(params.GetDouble("detection_prob")),
+      position_noise_(params.GetDouble("position_noise")) {}
 
 bool PersonSensor::InRangeAndView(const SenseInput& in, std::size_t i) const {
   const Vec2 to = in.humans[i].position - in.frame.origin;
@@ -132,7 +151,8 @@ void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
     return PersonObservation{in.frame.PointToLocal(h.position), in.frame.VectorToLocal(h.velocity),
                              h.radius};
   };
-  if (!(max_range_ > 0.0) && half_fov_cos_ < -1.5 && occlusion_ == Occlusion::kNone) {
+  if (!(max_range_ > 0.0) && half_fov_cos_ < -1.5 && occlusion_ == Occlusion::kNone &&
+      detection_prob_ >= 1.0 && position_noise_ == 0.0) {
     // Unlimited: everybody, in the crowd's order.
     people.resize(in.humans.size());
     for (std::size_t i = 0; i < in.humans.size(); ++i) people[i] = observe(in.humans[i]);
@@ -146,14 +166,28 @@ void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
     if (InRangeAndView(in, i)) detected.push_back(i);
   }
   if (occlusion_ != Occlusion::kNone && !detected.empty()) Unoccluded(in, &detected);
-  if (people.size() > detected.size()) people.resize(detected.size());
-  for (std::size_t n = 0; n < detected.size(); ++n) {
-    if (n < people.size()) {
-      people[n] = observe(in.humans[detected[n]]);
-    } else {
-      people.push_back(observe(in.humans[detected[n]]));
+  const bool noisy = detection_prob_ < 1.0 || position_noise_ > 0.0;
+  std::size_t n = 0;
+  for (const std::size_t i : detected) {
+    PersonObservation seen = observe(in.humans[i]);
+    if (noisy) {
+      // One stream per (episode, step, human): the same draws on any thread and in a lookahead.
+      Rng rng(SplitMix64(in.noise_seed ^ SplitMix64((static_cast<std::uint64_t>(in.step) << 24) ^
+                                                    static_cast<std::uint64_t>(i))));
+      if (rng.Uniform() >= detection_prob_) continue;  // missed this step
+      if (position_noise_ > 0.0) {
+        const Vec2 noise(rng.Normal(), rng.Normal());
+        seen.position += in.frame.VectorToLocal(noise * position_noise_);
+      }
     }
+    if (n < people.size()) {
+      people[n] = seen;
+    } else {
+      people.push_back(seen);
+    }
+    ++n;
   }
+  people.resize(n);
 }
 
 }  // namespace crowdsim::person

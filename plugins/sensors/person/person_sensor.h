@@ -31,9 +31,12 @@ class PersonSensor final : public Sensor {
   double max_range_;     // m; 0 = unlimited
   double half_fov_cos_;  // cos of half the field of view; -1 = all around
   Occlusion occlusion_;
+  double detection_prob_;  // per step and human in view
+  double position_noise_;  // m, per axis
 };
 
-/// The parameters person declares (max_range, fov_deg, occlusion).
+/// The parameters person declares (max_range, fov_deg, occlusion, detection_prob,
+/// position_noise).
 ParamSchema Schema();
 
 }  // namespace crowdsim::person
