@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "crowdsim/agent_index.h"
+#include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
@@ -163,24 +164,7 @@ TEST(SocialForce, ASuiteOfSocialForcePeopleGivesTheSameEpisodesOnAnyThreads) {
     options.progress = false;
     const RunSummary s = RunSuite(*loaded.suite, registry, options);
     ASSERT_EQ(s.rows.size(), 2u);
-    std::string text = testing::ReadText(options.out_dir / "episodes.csv");
-    // The decision-time column differs run to run: drop it.
-    std::string kept;
-    for (size_t start = 0; start < text.size();) {
-      const size_t end = text.find('\n', start);
-      std::string line = text.substr(start, end - start);
-      std::vector<std::string> f;
-      for (size_t a = 0, b; a <= line.size(); a = b + 1) {
-        b = line.find(',', a);
-        if (b == std::string::npos) b = line.size();
-        f.push_back(line.substr(a, b - a));
-      }
-      if (f.size() > 11) f[11].clear();
-      for (const auto& x : f) kept += x + ",";
-      kept += "\n";
-      start = end == std::string::npos ? text.size() : end + 1;
-    }
-    texts.push_back(kept);
+    texts.push_back(WithoutTimingColumns(testing::ReadText(options.out_dir / "episodes.csv")));
   }
   EXPECT_EQ(texts[0], texts[1]);
 }
