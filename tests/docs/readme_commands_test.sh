@@ -46,6 +46,7 @@ done
 [[ ${#commands[@]} -ge 30 ]] || { echo "FAIL: found only ${#commands[@]} commands in ${#pages[@]} pages"; exit 1; }
 [[ -f "$src/docs/usage.md" ]] || { echo "FAIL: docs/usage.md, the page of the CLI's commands, is missing"; exit 1; }
 
+small_ppo='--set total_steps=128 --set num_envs=2 --set steps_per_rollout=32 --set minibatch_size=32 --set checkpoint_interval=1'
 small_train='--set training.il_episodes=3 --set training.il_epochs=1 --set training.rl_episodes=2 --set training.validation_interval=2 --set training.validation_episodes=2 --set training.checkpoint_interval=2'
 with_mpi=0
 "$build/bin/crowdsim-bench" --version | grep -q "with MPI" && command -v mpirun >/dev/null && with_mpi=1
@@ -77,7 +78,8 @@ for c in "${commands[@]}"; do
   cmd=$(sed -E -e 's/ --episodes [0-9]+//g' \
                -e 's/(crowdsim-bench run [^ ]+)/\1 --episodes 3/g' \
                -e 's/(train_policy_torch\.py) [0-9]+/\1 10/' \
-               -e "s/(crowdsim-bench train [^ ]+)/\\1 $small_train/g" <<<"$c")
+               -e "s/(crowdsim-bench train [^ ]+)/\\1 $small_train/g" \
+               -e "s/(crowdsim_bench\.ppo train [^ ]+)/\\1 $small_ppo/g" <<<"$c")
   echo "RUN  $cmd"
   if ! out=$(cd "$work" && timeout 300 bash -c "$cmd" 2>&1); then
     echo "FAIL: $c"

@@ -105,6 +105,24 @@ class Config(unittest.TestCase):
         self.assertNotIn("Traceback", p.stderr)
         self.assertIn("clip = 3.0 is out of range (0, 1]", p.stderr)
 
+    def test_set_replaces_a_key_of_the_file_for_one_run(self):
+        from crowdsim_bench.ppo.config import load
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "t.yaml")
+            with open(path, "w") as f:
+                f.write(f"suite: {os.path.abspath(QUICK)}\nrow: orca\ntotal_steps: 5000\n")
+            self.assertEqual(load(path, ["total_steps=64", "discrete=true"])["total_steps"], 64)
+            self.assertTrue(load(path, ["discrete=true"])["discrete"])
+            with self.assertRaises(PPOError) as c:
+                load(path, ["total_steps"])
+            self.assertIn("write KEY=VALUE", str(c.exception))
+            with self.assertRaises(PPOError) as c:
+                load(path, ["total_step=64"])
+            self.assertIn("did you mean", str(c.exception))
+            with self.assertRaises(PPOError) as c:
+                load(path, ["clip=3"])
+            self.assertIn("clip = 3.0 is out of range", str(c.exception))
+
     def test_a_row_whose_observation_the_encoder_cannot_take(self):
         class Space:
             def __init__(self, shape):

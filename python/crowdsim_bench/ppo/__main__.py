@@ -15,7 +15,7 @@ from typing import List, Optional
 def _train(args) -> int:
     from .config import load
     from .trainer import Trainer
-    config = load(args.config)
+    config = load(args.config, args.set or [])
     if args.seed is not None:
         if not 0 <= args.seed <= 2**31 - 1:
             from .config import PPOError
@@ -71,6 +71,8 @@ def main(argv: Optional[List[str]] = None) -> int:
                        help="continue the training in the output folder from its checkpoint")
     train.add_argument("--seed", type=int, help="another seed (default folder gets _seed<N>)")
     train.add_argument("--out", help="output folder (default results/train/ppo_<name>)")
+    train.add_argument("--set", action="append", metavar="KEY=VALUE",
+                       help="replace a key of the file (repeatable), e.g. --set total_steps=1000000")
     evaluate = sub.add_parser("evaluate", help="test an exported policy.pt on a suite row "
                               "through crowdsim_bench.evaluate (rows with the route sensor too)")
     evaluate.add_argument("policy", help="policy.pt written by train")

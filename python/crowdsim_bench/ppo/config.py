@@ -13,7 +13,7 @@ from __future__ import annotations
 import difflib
 import os
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 
 class PPOError(Exception):
@@ -165,9 +165,10 @@ def parse(data: Any, path: str = "<config>") -> Dict[str, Any]:
     return config
 
 
-def load(path: str) -> Dict[str, Any]:
-    """Reads and checks a training file; `suite` becomes a path that exists (this file's
-    folder first, then the working folder)."""
+def load(path: str, overrides: Sequence[str] = ()) -> Dict[str, Any]:
+    """Reads and checks a training file, each `key=value` of `overrides` (YAML values, as
+    `train --set`) replacing the file's; `suite` becomes a path that exists (this file's folder
+    first, then the working folder)."""
     try:
         import yaml
     except ImportError as e:  # pragma: no cover - Debian's python3-yaml
@@ -179,6 +180,16 @@ def load(path: str) -> Dict[str, Any]:
         raise PPOError(f"{path}: cannot read the training file ({e.strerror})") from None
     except yaml.YAMLError as e:
         raise PPOError(f"{path}: not valid YAML ({str(e).splitlines()[0]})") from None
+    for override in overrides:
+        key, sep, text = override.partition("=")
+        if not sep or not key:
+            raise PPOError(f"--set {override}: write KEY=VALUE, e.g. --set total_steps=100000")
+        if not isinstance(data, dict):
+            break  # parse() names what the file is instead
+        try:
+            data[key.strip()] = yaml.safe_load(text)
+        except yaml.YAMLError as e:
+            raise PPOError(f"--set {override}: not a YAML value ({str(e).splitlines()[0]})") from None
     config = parse(data, path)
     config["suite"] = resolve_suite(config["suite"], path)
     return config
