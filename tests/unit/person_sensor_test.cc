@@ -7,11 +7,10 @@
 #include <variant>
 #include <vector>
 
-#include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/plugin_registry.h"
-#include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
 #include "crowdsim/collision_world.h"
+#include "suite_runs.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -257,17 +256,10 @@ TEST_F(PersonRealism, ARealisticDetectorGivesTheSameEpisodesOnAnyThreads) {
                 "robot: {sensors: [{type: person, fov_deg: 180, occlusion: obstacles+people, "
                 "detection_prob: 0.9, position_noise: 0.1}]}\n"
                 "rows:\n  - {label: orca, policy: orca}\n  - {label: sarl, policy: sarl}\n");
-  PluginRegistry registry;
-  SuiteLoadResult loaded = LoadSuite(file, registry);
-  ASSERT_TRUE(loaded.suite) << (loaded.errors.empty() ? "" : loaded.errors[0].Format());
   std::vector<std::string> texts;
   for (const int jobs : {1, 2}) {
-    RunOptions options;
-    options.out_dir = dir.path() / ("out" + std::to_string(jobs));
-    options.jobs = jobs;
-    options.progress = false;
-    RunSuite(*loaded.suite, registry, options);
-    texts.push_back(WithoutTimingColumns(testing::ReadText(options.out_dir / "episodes.csv")));
+    texts.push_back(
+        testing::RunSuiteFile(file, dir.path() / ("out" + std::to_string(jobs)), jobs).episodes);
   }
   EXPECT_EQ(texts[0], texts[1]);
 }

@@ -10,10 +10,9 @@
 #include <vector>
 
 #include "crowdsim/agent_index.h"
-#include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/plugin_registry.h"
-#include "crowdsim/bench/runner.h"
 #include "crowdsim/bench/suite.h"
+#include "suite_runs.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -153,18 +152,12 @@ TEST(SocialForce, ASuiteOfSocialForcePeopleGivesTheSameEpisodesOnAnyThreads) {
                 "name: sf\nepisodes: 6\nseed: 4\nworld: {source: random_rect, obstacles: 3}\n"
                 "humans: {count: 5, policy: social_force}\nrobot: {sensors: [person]}\n"
                 "rows:\n  - {label: orca, policy: orca}\n  - {label: sf, policy: social_force}\n");
-  PluginRegistry registry;
-  SuiteLoadResult loaded = LoadSuite(file, registry);
-  ASSERT_TRUE(loaded.suite) << (loaded.errors.empty() ? "" : loaded.errors[0].Format());
   std::vector<std::string> texts;
   for (const int jobs : {1, 2}) {
-    RunOptions options;
-    options.out_dir = dir.path() / ("out" + std::to_string(jobs));
-    options.jobs = jobs;
-    options.progress = false;
-    const RunSummary s = RunSuite(*loaded.suite, registry, options);
-    ASSERT_EQ(s.rows.size(), 2u);
-    texts.push_back(WithoutTimingColumns(testing::ReadText(options.out_dir / "episodes.csv")));
+    const testing::SuiteRun run =
+        testing::RunSuiteFile(file, dir.path() / ("out" + std::to_string(jobs)), jobs);
+    ASSERT_EQ(run.rows, 2u);
+    texts.push_back(run.episodes);
   }
   EXPECT_EQ(texts[0], texts[1]);
 }
