@@ -119,20 +119,20 @@ void PersonSensor::Unoccluded(const SenseInput& in, std::vector<std::size_t>* ca
   std::size_t kept = 0;
   for (std::size_t c = 0; c < candidates->size(); ++c) {
     const std::size_t i = (*candidates)[c];
-    const double d = (in.humans[i].position - eye).norm();
-    bool seen = d <= in.humans[i].radius;  // touching the robot: nothing lies between
+    bool seen = lengths[3 * c] <= in.humans[i].radius;  // touching: nothing lies between
     for (std::size_t k = 3 * c; k < 3 * c + 3 && !seen; ++k) {
       if (ranges[k] < lengths[k]) continue;  // a rectangle first
-      seen = occlusion_ != Occlusion::kObstaclesAndPeople || !PersonInTheWay(in, ends[k], i);
+      seen = occlusion_ != Occlusion::kObstaclesAndPeople ||
+             !PersonInTheWay(in, ends[k], lengths[k], i);
     }
     if (seen) (*candidates)[kept++] = i;
   }
   candidates->resize(kept);
 }
 
-bool PersonSensor::PersonInTheWay(const SenseInput& in, const Vec2& end, std::size_t target) const {
+bool PersonSensor::PersonInTheWay(const SenseInput& in, const Vec2& end, double length,
+                                  std::size_t target) const {
   const Vec2& eye = in.frame.origin;
-  const double length = (end - eye).norm();
   for (std::size_t j = 0; j < in.humans.size(); ++j) {
     if (j == target) continue;
     const AgentState& other = in.humans[j];
