@@ -20,7 +20,7 @@ using testing::MakeScenario;
 TEST(Episode, StraightRunSucceedsAtTheExpectedTime) {
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
   GoStraightPolicy robot;
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   Episode ep(sc, SimConfig{}, agents, /*record_trajectory=*/true);
   const EpisodeResult& r = ep.Run();
   EXPECT_EQ(r.status, EpisodeStatus::kSuccess);
@@ -82,7 +82,7 @@ TEST(Episode, ResetGivesTheMapOnlyToPoliciesThatNeedIt) {
   sim.time_step = 0.1;
   for (const bool robot_wants : {false, true}) {
     RecordingPolicy robot(NeedsMap(robot_wants)), blind(NeedsMap(false)), seeing(NeedsMap(true));
-    EpisodeAgents agents{&robot, {&blind, &seeing}, {}};
+    EpisodeAgents agents{&robot, {&blind, &seeing}, {}, {}};
     Episode ep(sc, sim, agents);
     EXPECT_EQ(robot.map, robot_wants ? sc.map.get() : nullptr);
     EXPECT_EQ(blind.map, nullptr);
@@ -95,7 +95,7 @@ TEST(Episode, ResetGivesTheMapOnlyToPoliciesThatNeedIt) {
 TEST(Episode, GoalRadiusIsConfigurable) {
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(0, 1.0));  // overshoots when not stopped
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   SimConfig crowdnav;
   crowdnav.goal_radius = 0.3;  // CrowdNav: within the robot radius
   Episode ep(sc, crowdnav, agents);
@@ -107,7 +107,7 @@ TEST(Episode, GoalRadiusIsConfigurable) {
 TEST(Episode, TimeoutAfterTimeLimit) {
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(0, 0));
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   const EpisodeResult& r = ep.Run();
   EXPECT_EQ(r.status, EpisodeStatus::kTimeout);
@@ -121,7 +121,7 @@ TEST(Episode, ThinWallAtHighSpeedIsACollisionNotATunnel) {
   const Scenario sc =
       MakeScenario(MakeMap({Rect::FromCorners(-3, -0.01, 3, 0.01)}), Vec2(0, -1), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(0, 10.0));
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   const EpisodeResult& r = ep.Run();
   EXPECT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
@@ -132,7 +132,7 @@ TEST(Episode, ThinWallAtHighSpeedIsACollisionNotATunnel) {
 TEST(Episode, RoomWallsStopTheRobot) {
   const Scenario sc = MakeScenario(MakeRoom(), Vec2(0, 0), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(1.0, 0));  // walks into the east wall at x = 5
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   const EpisodeResult& r = ep.Run();
   EXPECT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
@@ -147,7 +147,7 @@ TEST(Episode, SweptHumanCollisionCatchesAPassThrough) {
       MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0, -2.75), Vec2(0, -2.75)}});
   ConstantVelocityPolicy robot(Vec2(0, 10.0));
   ConstantVelocityPolicy still(Vec2(0, 0));
-  EpisodeAgents agents{&robot, {&still}, {}};
+  EpisodeAgents agents{&robot, {&still}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   EXPECT_EQ(ep.Run().status, EpisodeStatus::kCollisionHuman);
   EXPECT_EQ(ep.result().steps, 1);
@@ -159,7 +159,7 @@ TEST(Episode, ACollisionNamesWhatWasHit) {
   {  // The second of two still humans stands on the path.
     const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4),
                                      {{Vec2(3, 0), Vec2(3, 0)}, {Vec2(0, -2.75), Vec2(0, -2.75)}});
-    Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {&still, &still}, {}});
+    Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {&still, &still}, {}, {}});
     const EpisodeResult& r = ep.Run();
     ASSERT_EQ(r.status, EpisodeStatus::kCollisionHuman);
     EXPECT_EQ(r.collided_human, 1);
@@ -169,7 +169,7 @@ TEST(Episode, ACollisionNamesWhatWasHit) {
     const Scenario sc = MakeScenario(
         MakeMap({Rect::FromCorners(5, 5, 6, 6), Rect::FromCorners(-3, -0.01, 3, 0.01)}),
         Vec2(0, -1), Vec2(0, 4));
-    Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {}, {}});
+    Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {}, {}, {}});
     const EpisodeResult& r = ep.Run();
     ASSERT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
     EXPECT_EQ(r.collided_rect, 1);
@@ -178,7 +178,7 @@ TEST(Episode, ACollisionNamesWhatWasHit) {
   {  // Nothing hit: both stay -1.
     ConstantVelocityPolicy slow(Vec2(0, 1.0));
     const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -1), Vec2(0, 1));
-    Episode ep(sc, SimConfig{}, EpisodeAgents{&slow, {}, {}});
+    Episode ep(sc, SimConfig{}, EpisodeAgents{&slow, {}, {}, {}});
     const EpisodeResult& r = ep.Run();
     ASSERT_EQ(r.status, EpisodeStatus::kSuccess);
     EXPECT_EQ(r.collided_human, -1);
@@ -192,7 +192,7 @@ TEST(Episode, DangerStepsAndDiscomfortReward) {
       MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(0.7, 0.0), Vec2(0.7, 0.0)}});
   ConstantVelocityPolicy robot(Vec2(0, 1.0));
   ConstantVelocityPolicy still(Vec2(0, 0));
-  EpisodeAgents agents{&robot, {&still}, {}};
+  EpisodeAgents agents{&robot, {&still}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   double min_reward = 0.0;
   int danger = 0;
@@ -225,7 +225,7 @@ class CountingThrowPolicy final : public Policy {
 TEST(Episode, PolicyExceptionEndsEpisodeWithPolicyError) {
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
   CountingThrowPolicy robot;
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   const EpisodeResult& r = ep.Run();
   EXPECT_EQ(r.status, EpisodeStatus::kPolicyError);
@@ -242,7 +242,7 @@ TEST(Episode, AFailingHumanPolicyOrSensorIsNamedInTheError) {
   ConstantVelocityPolicy robot(Vec2(0, 0.5));
   ConstantVelocityPolicy walking(Vec2(1.0, 0));
   CountingThrowPolicy failing;
-  EpisodeAgents humans_fail{&robot, {&walking, &failing}, {}};
+  EpisodeAgents humans_fail{&robot, {&walking, &failing}, {}, {}};
   Episode ep(sc, SimConfig{}, humans_fail);
   EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
   EXPECT_EQ(ep.result().steps, 2);
@@ -253,7 +253,7 @@ TEST(Episode, AFailingHumanPolicyOrSensorIsNamedInTheError) {
     void Sense(const SenseInput&, SensorReading*) const override { throw 42; }
   };
   FailingSensor sensor;
-  EpisodeAgents sensor_fails{&robot, {&walking, &walking}, {{"eyes", &sensor}}};
+  EpisodeAgents sensor_fails{&robot, {&walking, &walking}, {{"eyes", &sensor}}, {}};
   Episode blind(sc, SimConfig{}, sensor_fails);
   EXPECT_EQ(blind.Run().status, EpisodeStatus::kPolicyError);
   EXPECT_EQ(blind.result().error.rfind("sensor 'eyes' failed: threw an exception not derived", 0),
@@ -264,7 +264,7 @@ TEST(Episode, AFailingHumanPolicyOrSensorIsNamedInTheError) {
 TEST(Episode, NonFiniteActionIsAPolicyError) {
   const Scenario sc = MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(std::nan(""), 0));
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
   EXPECT_NE(ep.result().error.find("non-finite"), std::string::npos);
@@ -274,14 +274,14 @@ TEST(Episode, AVelocityFarAboveVPrefIsAPolicyError) {
   // 1e300 m/s: a unit bug, not a move (it used to cross the map in one step unjudged).
   const Scenario sc = MakeScenario(MakeRoom(), Vec2(0, -4), Vec2(0, 4));
   ConstantVelocityPolicy robot(Vec2(0, 1e300));
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
   EXPECT_NE(ep.result().error.find("more than 10 x v_pref"), std::string::npos)
       << ep.result().error;
   // Just above the limit, the message shows the digits that tell the two apart.
   ConstantVelocityPolicy barely(Vec2(0, 10.000001));
-  EpisodeAgents barely_agents{&barely, {}, {}};
+  EpisodeAgents barely_agents{&barely, {}, {}, {}};
   Episode over(sc, SimConfig{}, barely_agents);
   EXPECT_EQ(over.Run().status, EpisodeStatus::kPolicyError);
   EXPECT_NE(over.result().error.find("returned 10.000001 m/s, more than 10 x v_pref (10 m/s)"),
@@ -289,7 +289,7 @@ TEST(Episode, AVelocityFarAboveVPrefIsAPolicyError) {
       << over.result().error;
   // 10 x v_pref itself is allowed (the thin-wall test moves at it).
   ConstantVelocityPolicy fast(Vec2(0, 10.0));
-  EpisodeAgents fast_agents{&fast, {}, {}};
+  EpisodeAgents fast_agents{&fast, {}, {}, {}};
   Episode ok(sc, SimConfig{}, fast_agents);
   EXPECT_NE(ok.Run().status, EpisodeStatus::kPolicyError);
 }
@@ -300,7 +300,7 @@ TEST(Episode, AHumanFarAboveVPrefIsAPolicyErrorNamingTheHuman) {
   ConstantVelocityPolicy robot(Vec2(0, 1.0));
   ConstantVelocityPolicy walking(Vec2(1.0, 0));
   ConstantVelocityPolicy runaway(Vec2(-1e3, 0));
-  EpisodeAgents agents{&robot, {&walking, &runaway}, {}};
+  EpisodeAgents agents{&robot, {&walking, &runaway}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
   EXPECT_EQ(ep.result().error.rfind("human 1's policy returned 1000 m/s, more than 10 x v_pref", 0),
@@ -321,7 +321,7 @@ TEST(Episode, InALargeCrowdTheLowestFailingHumanIsReported) {
   ConstantVelocityPolicy robot(Vec2(0, 1.0));
   ConstantVelocityPolicy walking(Vec2(0, 1.0));
   ConstantVelocityPolicy runaway(Vec2(0, 1e3));
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   for (int i = 0; i < 20; ++i) agents.humans.push_back(i == 3 || i == 15 ? &runaway : &walking);
   Episode ep(sc, SimConfig{}, agents);
   EXPECT_EQ(ep.Run().status, EpisodeStatus::kPolicyError);
@@ -336,7 +336,7 @@ TEST(Episode, AHumanPolicyWithoutHeadingFrameGetsTheWorldAlignedFrame) {
                                    {{Vec2(-3, 0), Vec2(-3, 3)}, {Vec2(3, 2), Vec2(3, 5)}});
   ConstantVelocityPolicy robot(Vec2(0, 1.0));
   RecordingPolicy turned(NeedsHeadingFrame(true)), world(NeedsHeadingFrame(false));
-  EpisodeAgents agents{&robot, {&turned, &world}, {}};
+  EpisodeAgents agents{&robot, {&turned, &world}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   ep.Step();
   EXPECT_NEAR(turned.frame.heading, std::acos(0.0), 1e-12);  // goal straight up: +y
@@ -351,7 +351,7 @@ TEST(Episode, AHumanPolicyWithoutHeadingFrameGetsTheWorldAlignedFrame) {
 
 TEST(Episode, MeaninglessScenariosAreRefusedWithTheReason) {
   GoStraightPolicy robot;
-  EpisodeAgents agents{&robot, {}, {}};
+  EpisodeAgents agents{&robot, {}, {}, {}};
   auto refused = [&](const Scenario& sc) -> std::string {
     try {
       Episode ep(sc, SimConfig{}, agents);
@@ -384,7 +384,7 @@ TEST(Episode, MeaninglessScenariosAreRefusedWithTheReason) {
   const Scenario human_inside =
       MakeScenario(room, Vec2(3, -4), Vec2(3, 4), {{Vec2(0.2, 0.2), Vec2(3, 0)}});
   ConstantVelocityPolicy still(Vec2::Zero());
-  EpisodeAgents with_human{&robot, {&still}, {}};
+  EpisodeAgents with_human{&robot, {&still}, {}, {}};
   try {
     Episode ep(human_inside, SimConfig{}, with_human);
     ADD_FAILURE() << "a human starting inside an obstacle was accepted";
@@ -433,7 +433,7 @@ TEST(Episode, LookaheadPredictsTheRealStep) {
       MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(2, 0), Vec2(-2, 0)}});
   LookaheadProbe robot;
   ConstantVelocityPolicy walker(Vec2(-1, 0));
-  EpisodeAgents agents{&robot, {&walker}, {}};
+  EpisodeAgents agents{&robot, {&walker}, {}, {}};
   Episode ep(sc, SimConfig{}, agents);
   const StepInfo info = ep.Step();
   ASSERT_EQ(robot.outcomes.size(), 3u);

@@ -15,6 +15,7 @@ RowInstance::RowInstance(const RowSpec& row, PluginRegistry& registry)
     : row_(row), registry_(registry) {
   robot_ = registry_.MakePolicy(*row_.policy.loaded, row_.policy.params);
   agents_.robot = robot_.get();
+  agents_.kinematics = row_.kinematics;
   for (const auto& s : row_.sensors) {
     sensors_.push_back(registry_.MakeSensor(*s.loaded, s.params));
     agents_.sensors.push_back({s.loaded->descriptor->name, sensors_.back().get()});
@@ -29,6 +30,11 @@ std::string RowInstance::UnmetSensorNeed() const {
     if (!have) return "policy '" + row_.policy.plugin + "' needs the sensor '" + needed + "'";
   }
   return "";
+}
+
+std::string RowInstance::UnmetKinematicsNeed() const {
+  const std::string refusal = KinematicsRefusal(robot_->Needs(), row_.kinematics);
+  return refusal.empty() ? "" : "policy '" + row_.policy.plugin + "' " + refusal;
 }
 
 std::string RowInstance::HumansNeedRobotOnly() const {

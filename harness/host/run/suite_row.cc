@@ -56,6 +56,9 @@ std::unique_ptr<RowInstance> SuiteRow::MakePlugins(PluginRegistry& registry) con
   if (const std::string unmet = instance->UnmetSensorNeed(); !unmet.empty()) {
     throw RunError(Place() + ": " + unmet + "; add it to the row's sensors list");
   }
+  if (const std::string unmet = instance->UnmetKinematicsNeed(); !unmet.empty()) {
+    throw RunError(Place() + ": " + unmet);
+  }
   if (const std::string unmet = instance->HumansNeedRobotOnly(); !unmet.empty()) {
     throw RunError(Place() + ": " + unmet + " (a human sees the others through the neighbour " +
                    "index); " + kPlainHumansPolicy);

@@ -62,7 +62,8 @@ class Episode::StepLookahead final : public Lookahead {
     const double time_after = e_.time_ + e_.sim_.time_step;
     for (size_t k = 0; k < actions.size(); ++k) {
       LookaheadOutcome& o = (*out)[k];
-      const Vec2& v = actions[k].velocity;
+      const ExecutedMove move = e_.Execute(actions[k]);
+      const Vec2& v = move.velocity;
       const StepJudgement j =
           JudgeRobotMove(e_.sim_, e_.world_, e_.robot_, v, e_.humans_, time_after);
       o.reward = j.reward;
@@ -70,7 +71,7 @@ class Episode::StepLookahead final : public Lookahead {
       o.robot = e_.robot_;
       o.robot.position += v * e_.sim_.time_step;
       o.robot.velocity = v;
-      o.robot.heading = HeadingToGoal(o.robot);
+      o.robot.heading = e_.RobotHeading(o.robot, move.heading);
       o.frame = Frame::Make(o.robot.position, o.robot.heading);
       e_.Sense(o.robot, o.frame, next_humans_, e_.step_index_ + 1, &o.readings);
     }
@@ -126,6 +127,16 @@ inline void CheckSpeed(const Vec2& velocity, double v_pref, int human) {
 }
 
 }  // namespace
+
+std::string KinematicsRefusal(const PolicyNeeds& needs, const RobotKinematics& k) {
+  if (k.Holonomic() || k.track_velocity || needs.non_holonomic != NonHolonomicDrive::kNone)
+    return "";
+  return std::string("returns world velocities only and cannot drive a ") +
+         KinematicsModelName(k.model) +
+         " robot: add `track_velocity: true` to the row's kinematics to drive it through the "
+         "harness's turn-then-go tracker (docs/kinematics.md), or use a policy that returns "
+         "(linear, angular) commands";
+}
 
 void CheckScenario(const Scenario& scenario, const SimConfig& sim) {
   // Spelled out only for an error: no string per episode.
@@ -228,6 +239,12 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
   lookahead_ = std::make_unique<StepLookahead>(*this);
 
   robot_needs_ = agents_.robot->Needs();
+  if (const std::string refusal = KinematicsRefusal(robot_needs_, agents_.kinematics);
+      !refusal.empty()) {
+    throw std::invalid_argument("the robot's policy " + refusal);
+  }
+  if (!agents_.kinematics.Holonomic() && scenario_.robot_heading)
+    robot_.heading = *scenario_.robot_heading;
   human_needs_.reserve(humans_.size());
   for (size_t i = 0; i < humans_.size(); ++i) human_needs_.push_back(agents_.humans[i]->Needs());
 
@@ -235,8 +252,9 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
     // The map reaches only the policies that declare they need it.
     const StaticMap* map = scenario_.map.get();
     EpisodeContext ctx{robot_needs_.map ? map : nullptr, sim_, AgentRole::kRobot,
-                       SplitMix64(scenario_.seed), 0};
+                       SplitMix64(scenario_.seed),       0,    agents_.kinematics};
     agents_.robot->Reset(ctx);
+    ctx.kinematics = RobotKinematics{};
     for (size_t i = 0; i < humans_.size(); ++i) {
       ctx.map = human_needs_[i].map ? map : nullptr;
       ctx.role = AgentRole::kHuman;
@@ -310,10 +328,40 @@ void Episode::DecideHuman(int i) {
   CheckSpeed(human_actions_[i].velocity, h.v_pref, i);
 }
 
+double Episode::RobotHeading(const AgentState& robot, double executed_heading) const {
+  return agents_.kinematics.Holonomic() ? HeadingToGoal(robot) : executed_heading;
+}
+
+ExecutedMove Episode::Execute(const Action& action) const {
+  const RobotKinematics& k = agents_.kinematics;
+  if (k.Unconstrained() && !action.command) {
+    ExecutedMove move;
+    move.velocity = action.velocity;
+    return move;
+  }
+  if (k.Holonomic() && action.command) {
+    throw std::runtime_error(PolicyName(-1) +
+                             " returned a (linear, angular) command, but the robot is holonomic: "
+                             "return a world velocity (Action::velocity)");
+  }
+  const RobotMotion motion{robot_.velocity, robot_.heading, robot_linear_, robot_angular_};
+  const double dt = sim_.time_step;
+  if (k.Holonomic() || action.command) return ExecuteAction(k, robot_.v_pref, motion, action, dt);
+  if (robot_needs_.non_holonomic != NonHolonomicDrive::kTrackVelocity && !k.track_velocity) {
+    throw std::runtime_error(PolicyName(-1) + " returned a world velocity, but the robot is " +
+                             KinematicsModelName(k.model) +
+                             ": return Action::Command(linear, angular), or declare "
+                             "NonHolonomicDrive::kTrackVelocity in Needs()");
+  }
+  return ExecuteAction(k, robot_.v_pref, motion, TrackVelocity(k, motion, action.velocity, dt), dt);
+}
+
 void Episode::FillRobotObservation() {
-  robot_.heading = HeadingToGoal(robot_);
+  robot_.heading = RobotHeading(robot_, robot_.heading);
   robot_obs_.time = time_;
   robot_obs_.self = robot_;
+  robot_obs_.linear = robot_linear_;
+  robot_obs_.angular = robot_angular_;
   robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
   Sense(robot_, robot_obs_.frame, humans_, step_index_, &robot_obs_.readings);
   robot_obs_.lookahead = nullptr;
@@ -330,6 +378,7 @@ StepInfo Episode::Step() {
   StepInfo info;
   if (done()) return info;
   const double dt = sim_.time_step;
+  ExecutedMove move;
   try {
     DecideHumans();
     // Deciding changes nothing sensed: an observation since the last move is this step's.
@@ -344,10 +393,19 @@ StepInfo Episode::Step() {
     const std::uint64_t t0 = DecisionClock::Now();
     info.robot_action = DecideNamed(*agents_.robot, robot_obs_, -1);
     decision_ticks_ += DecisionClock::Now() - t0;
-    if (!info.robot_action.velocity.allFinite()) {
-      throw std::runtime_error(PolicyName(-1) + " returned a non-finite velocity");
+    const Action& a = info.robot_action;
+    if (a.command) {
+      if (!std::isfinite(a.linear) || !std::isfinite(a.angular)) {
+        throw std::runtime_error(PolicyName(-1) + " returned a non-finite command");
+      }
+      CheckSpeed(Vec2(a.linear, 0.0), robot_.v_pref, -1);
+    } else {
+      if (!a.velocity.allFinite()) {
+        throw std::runtime_error(PolicyName(-1) + " returned a non-finite velocity");
+      }
+      CheckSpeed(a.velocity, robot_.v_pref, -1);
     }
-    CheckSpeed(info.robot_action.velocity, robot_.v_pref, -1);
+    move = Execute(a);
   } catch (const AbortRun&) {
     throw;  // the whole run stops: no result for this episode
   } catch (const std::exception& e) {
@@ -362,17 +420,19 @@ StepInfo Episode::Step() {
 
   // Check (on the pre-move state, CrowdNav's order), then move everybody at once.
   const double time_after = (step_index_ + 1) * dt;
-  const StepJudgement j =
-      JudgeRobotMove(sim_, world_, robot_, info.robot_action.velocity, humans_, time_after);
+  const Vec2& v = move.velocity;
+  const StepJudgement j = JudgeRobotMove(sim_, world_, robot_, v, humans_, time_after);
   info.event = j.event;
   info.reward = j.reward;
   info.min_human_distance = j.min_human_distance;
   result_.collided_human = j.human;
   result_.collided_rect = j.rect;
 
-  const Vec2& v = info.robot_action.velocity;
   robot_.position += v * dt;
   robot_.velocity = v;
+  if (!agents_.kinematics.Holonomic()) robot_.heading = move.heading;
+  robot_linear_ = move.linear;
+  robot_angular_ = move.angular;
   result_.path_length += v.norm() * dt;
   result_.max_speed = std::max(result_.max_speed, v.norm());
   for (size_t i = 0; i < humans_.size(); ++i) {
@@ -432,6 +492,9 @@ void Episode::Finish(EpisodeStatus status) {
 void Episode::Record() {
   if (!record_) return;
   result_.trajectory.push_back(EpisodeFrame{time_, robot_, humans_});
+  // A holonomic robot's heading is its goal's direction, set when it senses: set it now.
+  AgentState& robot = result_.trajectory.back().robot;
+  robot.heading = RobotHeading(robot, robot.heading);
 }
 
 }  // namespace crowdsim

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "spec/kinematics_reader.h"
+
 namespace crowdsim::suite_internal {
 namespace fs = std::filesystem;
 
@@ -116,6 +118,11 @@ void ReadRowSpec(Reader& r, const YAML::Node& n, const std::string& path, const 
   } else if (rules.sensors_required) {
     r.Error(n, Reader::Child(path, "sensors"),
             "missing key 'sensors' (e.g. [person, {type: lidar2d, beams: 45}])");
+  }
+  if (Present(n["kinematics"])) {
+    ReadKinematics(r, n["kinematics"], Reader::Child(path, "kinematics"), &row->kinematics);
+  } else if (Present(d.kinematics)) {
+    ReadKinematics(r, d.kinematics, "robot.kinematics", &row->kinematics);
   }
   if (n["world"]) {
     ReadWorld(r, n["world"], Reader::Child(path, "world"), base, &row->world);

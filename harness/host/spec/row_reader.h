@@ -15,19 +15,20 @@
 namespace crowdsim::suite_internal {
 
 /// The keys of a row spec.
-inline const std::vector<std::string> kRowSpecKeys = {"policy",  "params", "weights",
-                                                      "sensors", "world",  "humans"};
+inline const std::vector<std::string> kRowSpecKeys = {"policy",     "params", "weights", "sensors",
+                                                      "kinematics", "world",  "humans"};
 
 /// The keys of a `humans:` map.
 inline const std::vector<std::string> kHumansKeys = {"count", "policy", "params", "goal_mode"};
 
-/// Fallbacks for what a row lacks: a suite's top-level `world`, `humans` (per key) and
-/// `robot.sensors`, then schema defaults.
+/// Fallbacks for what a row lacks: a suite's top-level `world`, `humans` (per key),
+/// `robot.sensors` and `robot.kinematics`, then schema defaults.
 struct RowDefaults {
   const SchemaDefaults& schema;
   YAML::Node world{YAML::NodeType::Undefined};
   YAML::Node humans{YAML::NodeType::Undefined};
   YAML::Node sensors{YAML::NodeType::Undefined};
+  YAML::Node kinematics{YAML::NodeType::Undefined};
 };
 
 /// Where the files that hold row specs differ.

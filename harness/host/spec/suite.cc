@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "spec/config_text.h"
+#include "spec/kinematics_reader.h"
 #include "spec/row_reader.h"
 #include "spec/spec_head_reader.h"
 #include "spec/suite_reader.h"
@@ -295,10 +296,11 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
       r.CheckKeys(d.humans, "humans", kHumansKeys);
   }
   if (const auto robot = root["robot"]) {
-    if (r.IsMap(robot, "robot", "sensors")) {
-      r.CheckKeys(robot, "robot", {"sensors"});
+    if (r.IsMap(robot, "robot", "sensors, kinematics")) {
+      r.CheckKeys(robot, "robot", {"sensors", "kinematics"});
       // Assigning yaml-cpp's placeholder for a missing key throws InvalidNode (`robot: {}`).
       if (robot["sensors"]) d.sensors = robot["sensors"];
+      if (robot["kinematics"]) d.kinematics = robot["kinematics"];
     }
   }
   if (const auto cols = root["columns"]) {
@@ -373,6 +375,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     Canonical(row.policy, os);
     os << " sensors:";
     for (const auto& sen : row.sensors) Canonical(sen, os);
+    CanonicalKinematics(row.kinematics, os);
     os << " world:";
     Canonical(row.world, os);
     os << " humans:" << row.humans.count << "," << static_cast<int>(row.humans.goal_mode) << ",";

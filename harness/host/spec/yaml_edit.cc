@@ -415,6 +415,10 @@ void ExpandSweeps(YAML::Node& root, const std::string& file, std::vector<SuiteEr
             root["robot"]["sensors"].IsDefined()) {
           copy.reset(WithKey(copy, "sensors", root["robot"]["sensors"]));
         }
+        if (head == "kinematics" && !copy["kinematics"].IsDefined() && root["robot"].IsDefined() &&
+            root["robot"]["kinematics"].IsDefined()) {
+          copy.reset(WithKey(copy, "kinematics", root["robot"]["kinematics"]));
+        }
         const std::string problem = SetPath(copy, axis.segments, value);
         if (!problem.empty()) {
           error(value, path + "." + axis.key, problem);

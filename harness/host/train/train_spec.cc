@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "spec/config_text.h"
+#include "spec/kinematics_reader.h"
 #include "spec/row_reader.h"
 #include "spec/schema_defaults.h"
 #include "spec/spec_head_reader.h"
@@ -174,6 +175,7 @@ std::string Canonical(const TrainSpec& s) {
   suite_internal::Canonical(row.policy, os);
   os << "\nsensors:";
   for (const auto& sen : row.sensors) suite_internal::Canonical(sen, os);
+  suite_internal::CanonicalKinematics(row.kinematics, os);
   os << "\nworld:";
   suite_internal::Canonical(row.world, os);
   os << "\nhumans:" << row.humans.count << "-" << row.humans.count_max << ",";

@@ -192,6 +192,13 @@ void Trainer::Build() {
   if (const std::string unmet = row_->UnmetSensorNeed(); !unmet.empty()) {
     throw TrainRefused(unmet + "; add it to `sensors`");
   }
+  if (const std::string unmet = row_->UnmetKinematicsNeed(); !unmet.empty())
+    throw TrainRefused(unmet);
+  if (const std::string unmet = KinematicsRefusal(teacher_->Needs(), row.kinematics);
+      !unmet.empty()) {
+    throw TrainRefused("the imitation teacher (training.il_policy '" + spec_.teacher.plugin +
+                       "') " + unmet);
+  }
   if (const std::string unmet = row_->HumansNeedRobotOnly(); !unmet.empty()) {
     throw TrainRefused(unmet + "; " + kPlainHumansPolicy);
   }
@@ -199,6 +206,7 @@ void Trainer::Build() {
   // episode.
   EpisodeContext constants;
   constants.sim = spec_.sim;
+  constants.kinematics = row.kinematics;
   learner_policy_->Reset(constants);
 }
 

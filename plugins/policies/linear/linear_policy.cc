@@ -20,6 +20,12 @@ ParamSchema Schema() {
 LinearPolicy::LinearPolicy(const Params& params)
     : speed_factor_(params.GetDouble("speed_factor")), slow_down_(params.GetBool("slow_down")) {}
 
+PolicyNeeds LinearPolicy::Needs() const {
+  PolicyNeeds needs;
+  needs.non_holonomic = NonHolonomicDrive::kTrackVelocity;  // turn towards the goal, then go
+  return needs;
+}
+
 void LinearPolicy::Reset(const EpisodeContext& ctx) { time_step_ = ctx.sim.time_step; }
 
 Action Decide_(const Observation& obs, double speed_factor, bool slow_down, double time_step) {

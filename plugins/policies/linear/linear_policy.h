@@ -10,6 +10,7 @@ namespace crowdsim::linear {
 class LinearPolicy final : public Policy {
  public:
   explicit LinearPolicy(const Params& params);
+  PolicyNeeds Needs() const override;
   void Reset(const EpisodeContext& ctx) override;
   Action Decide(const Observation& obs) override;
 

@@ -21,6 +21,7 @@ PolicyNeeds OmplPlannerPolicy::Needs() const {
   PolicyNeeds needs;
   needs.map = true;
   needs.sensors = {"person"};
+  needs.non_holonomic = NonHolonomicDrive::kTrackVelocity;  // turn-then-go (docs/kinematics.md)
   return needs;
 }
 

@@ -166,6 +166,7 @@ PolicyNeeds OrcaPolicy::Needs() const {
   PolicyNeeds needs;
   needs.map = true;
   needs.heading_frame = false;  // a human's neighbours come in world coordinates
+  needs.non_holonomic = NonHolonomicDrive::kTrackVelocity;  // turn-then-go (docs/kinematics.md)
   return needs;
 }
 

@@ -122,7 +122,8 @@ SocialForcePolicy::SocialForcePolicy(const Params& params)
 PolicyNeeds SocialForcePolicy::Needs() const {
   PolicyNeeds needs;
   needs.map = true;
-  needs.heading_frame = false;  // neighbours in world coordinates
+  needs.heading_frame = false;                              // neighbours in world coordinates
+  needs.non_holonomic = NonHolonomicDrive::kTrackVelocity;  // turn-then-go (docs/kinematics.md)
   return needs;
 }
 

@@ -44,7 +44,7 @@ Scenario ScriptedScenario() {
 EpisodeResult RunScripted(const Scenario& sc) {
   GoStraightPolicy robot;
   ConstantVelocityPolicy h1(Vec2(0.5, 0.0)), h2(Vec2(-0.5, 0.0));
-  EpisodeAgents agents{&robot, {&h1, &h2}, {}};
+  EpisodeAgents agents{&robot, {&h1, &h2}, {}, {}};
   Episode ep(sc, SimConfig{}, agents, /*record_trajectory=*/true);
   return ep.Run();
 }
@@ -128,7 +128,7 @@ TEST(EpisodeFigure, CompareDrawsTwoRobotsInTwoColours) {
   // A second robot that only gets half way before the time limit.
   ConstantVelocityPolicy slow(Vec2(0.15, 0.0));
   ConstantVelocityPolicy h1(Vec2(0.5, 0.0)), h2(Vec2(-0.5, 0.0));
-  Episode ep(sc, SimConfig{}, EpisodeAgents{&slow, {&h1, &h2}, {}}, true);
+  Episode ep(sc, SimConfig{}, EpisodeAgents{&slow, {&h1, &h2}, {}, {}}, true);
   const EpisodeResult b = ep.Run();
   ASSERT_EQ(b.status, EpisodeStatus::kTimeout);
   EpisodeFigure fig = Figure(sc, a);
@@ -231,7 +231,7 @@ TEST(EpisodeFigure, FloorPlanMaskIsDrawnUnderTheRectangles) {
   map->mask = mask;
   const Scenario sc = MakeScenario(map, Vec2(-3, 0), Vec2(3, 0));
   GoStraightPolicy robot;
-  Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {}, {}}, true);
+  Episode ep(sc, SimConfig{}, EpisodeAgents{&robot, {}, {}, {}}, true);
   const EpisodeResult r = ep.Run();
   const Drawing d = DrawEpisode(Figure(sc, r));
   ASSERT_EQ(d.Count("mask"), 1);
@@ -302,7 +302,7 @@ TEST(EpisodeFigure, ACollisionFigureMarksWhatWasHit) {
   Scenario up = sc;
   up.robot_start = Vec2(0.5, 0.0);
   up.robot_goal = Vec2(0.5, 4.0);
-  Episode ep(up, SimConfig{}, EpisodeAgents{&robot, {&h1, &h2}, {}}, true);
+  Episode ep(up, SimConfig{}, EpisodeAgents{&robot, {&h1, &h2}, {}, {}}, true);
   const EpisodeResult r = ep.Run();
   ASSERT_EQ(r.status, EpisodeStatus::kCollisionObstacle);
   ASSERT_GE(r.collided_rect, 0);

@@ -49,7 +49,7 @@ struct Scripted {
   EpisodeResult result;
   Scripted() {
     GoStraightPolicy robot;
-    Episode ep(scenario, SimConfig{}, EpisodeAgents{&robot, {}, {}}, true);
+    Episode ep(scenario, SimConfig{}, EpisodeAgents{&robot, {}, {}, {}}, true);
     result = ep.Run();
   }
   EpisodeFigure Figure() const {

@@ -13,11 +13,11 @@ struct CROWDSIM_SDK_API AgentState {
   Vec2 goal = Vec2::Zero();      ///< m, current goal
   double radius = 0.3;           ///< m
   double v_pref = 1.0;           ///< preferred speed, m/s
-  double heading = 0.0;          ///< rad; holonomic robot: direction to its goal
+  double heading = 0.0;          ///< rad; holonomic robot: direction to its goal (no state)
 };
 
 /// The agent-centric frame of sensors and learned policies: origin at the agent, x along its
-/// heading (robot: towards its goal, as CrowdNav's rotate()).
+/// heading (holonomic robot: towards its goal, as CrowdNav's rotate()).
 struct CROWDSIM_SDK_API Frame {
   Vec2 origin = Vec2::Zero();
   double heading = 0.0;

@@ -15,7 +15,7 @@ namespace crowdsim {
 class AgentIndex;
 class Lookahead;
 
-/// One person seen by a person sensor, in the sensor frame (x towards the robot's goal).
+/// One person seen by a person sensor, in the sensor frame (Observation::frame).
 struct CROWDSIM_SDK_API PersonObservation {
   Vec2 position = Vec2::Zero();
   Vec2 velocity = Vec2::Zero();
@@ -35,9 +35,12 @@ struct CROWDSIM_SDK_API SensorReading {
 
 /// Everything one policy receives at one decision.
 struct CROWDSIM_SDK_API Observation {
-  double time = 0.0;                    ///< s since the episode start
-  AgentState self;                      ///< own state, world frame
-  Frame frame;                          ///< sensor frame (robot: x towards the goal)
+  double time = 0.0;  ///< s since the episode start
+  AgentState self;    ///< own state, world frame (heading: see frame)
+  /// Sensor frame: x towards the goal, or, for a non-holonomic robot, along its heading.
+  Frame frame;
+  double linear = 0.0;   ///< non-holonomic robot: the last step's executed linear speed, m/s
+  double angular = 0.0;  ///< non-holonomic robot: the last step's executed angular speed, rad/s
   std::vector<SensorReading> readings;  ///< robot only: one per configured sensor, in order
   /// Ground-truth agents this policy may react to, its own index in `self_index` (-1 if absent).
   /// Null for the robot.

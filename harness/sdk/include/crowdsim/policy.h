@@ -8,6 +8,7 @@
 
 #include "crowdsim/action.h"
 #include "crowdsim/export.h"
+#include "crowdsim/kinematics.h"
 #include "crowdsim/observation.h"
 #include "crowdsim/sim_config.h"
 #include "crowdsim/static_map.h"
@@ -15,6 +16,13 @@
 namespace crowdsim {
 
 enum class AgentRole { kRobot, kHuman };
+
+/// How a robot policy drives a non-holonomic robot (RobotKinematics).
+enum class NonHolonomicDrive {
+  kNone,           ///< world velocities only: refused unless the row sets track_velocity
+  kTrackVelocity,  ///< world velocities, which the harness's TrackVelocity turns into commands
+  kCommands,       ///< Action::Command when EpisodeContext::kinematics is not holonomic
+};
 
 /// What a policy needs from the harness (checked before the first episode).
 struct CROWDSIM_SDK_API PolicyNeeds {
@@ -26,6 +34,8 @@ struct CROWDSIM_SDK_API PolicyNeeds {
   /// Humans only: Observation::frame turned towards the goal (costs an atan2 and sincos); false:
   /// world-aligned (ORCA). The robot's frame always turns.
   bool heading_frame = true;
+  /// Robot only: how it drives a non-holonomic robot; a holonomic robot always takes velocities.
+  NonHolonomicDrive non_holonomic = NonHolonomicDrive::kNone;
 };
 
 /// Per-episode context for Reset: the episode's constants (time step, sim settings, map);
@@ -36,8 +46,9 @@ struct CROWDSIM_SDK_API EpisodeContext {
   const StaticMap* map = nullptr;
   SimConfig sim;  ///< sim.time_step: s between decisions
   AgentRole role = AgentRole::kRobot;
-  std::uint64_t seed = 0;  ///< this agent's own stream for the episode
-  int agent_id = 0;        ///< 0 = robot, 1.. = humans
+  std::uint64_t seed = 0;      ///< this agent's own stream for the episode
+  int agent_id = 0;            ///< 0 = robot, 1.. = humans
+  RobotKinematics kinematics;  ///< robot only: its motion model and limits
 };
 
 class CROWDSIM_SDK_API Policy {

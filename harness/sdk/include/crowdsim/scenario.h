@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct CROWDSIM_SDK_API Scenario {
   std::shared_ptr<const StaticMap> map;
   Vec2 robot_start = Vec2::Zero();
   Vec2 robot_goal = Vec2::Zero();
+  /// rad; a non-holonomic robot's start heading. Unset: facing its goal (CrowdNav's pi/2).
+  std::optional<double> robot_heading;
   std::vector<HumanSpec> humans;
   std::uint64_t seed = 0;  ///< the episode seed it is made from
   std::string layout;      ///< layout identity (e.g. "rect3_test_017")

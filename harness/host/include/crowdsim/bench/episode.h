@@ -9,6 +9,7 @@
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/collision_world.h"
+#include "crowdsim/kinematics.h"
 #include "crowdsim/lookahead.h"
 #include "crowdsim/policy.h"
 #include "crowdsim/rng.h"
@@ -66,7 +67,11 @@ struct EpisodeAgents {
   Policy* robot = nullptr;
   std::vector<Policy*> humans;  ///< one per human in the scenario (or more)
   std::vector<MountedSensor> sensors;
+  RobotKinematics kinematics;  ///< the robot's motion model (the row's `kinematics:`)
 };
+
+/// Why a policy with `needs` cannot drive a robot with `k` ("" when it can): the fix included.
+std::string KinematicsRefusal(const PolicyNeeds& needs, const RobotKinematics& k);
 
 /// Positions of everybody at one time (rendering, tests).
 struct EpisodeFrame {
@@ -101,7 +106,7 @@ struct EpisodeResult : EpisodeOutcome {
 struct StepInfo {
   StepEvent event = StepEvent::kNone;
   double reward = 0.0;
-  Action robot_action;
+  Action robot_action;  ///< as decided (a command may be clipped by the kinematics' limits)
   double min_human_distance = kInfinity;  ///< this step's swept surface distance
 };
 
@@ -141,6 +146,11 @@ class Episode {
   /// Human i's decision into human_actions_[i] (throws what its policy or the checks throw).
   void DecideHuman(int i);
   void FillRobotObservation();
+  /// What `action` does from the robot's current motion (throws for a form the robot refuses).
+  ExecutedMove Execute(const Action& action) const;
+  /// The robot's heading and frame after a move: its own for a non-holonomic robot, else its
+  /// goal's.
+  double RobotHeading(const AgentState& robot, double executed_heading) const;
   void Finish(EpisodeStatus status);
   void Record();
 
@@ -155,6 +165,8 @@ class Episode {
   double time_ = 0.0;
   int step_index_ = 0;
   AgentState robot_;
+  double robot_linear_ = 0.0;   ///< non-holonomic: executed last step, m/s
+  double robot_angular_ = 0.0;  ///< non-holonomic: executed last step, rad/s
   std::vector<AgentState> humans_;
   std::vector<std::size_t> human_goal_index_;
   std::vector<bool> human_reached_;

@@ -25,6 +25,9 @@ class RowInstance {
   /// The first sensor the robot policy needs (Policy::Needs) that the row lacks, as "policy 'cadrl'
   /// needs the sensor 'lidar2d'"; "" if none.
   std::string UnmetSensorNeed() const;
+  /// "policy 'X' returns world velocities only ...": the robot policy cannot drive the row's
+  /// kinematics; "" when it can.
+  std::string UnmetKinematicsNeed() const;
 
   /// What the humans' policy needs that only the robot gets (sensors, lookahead; humans see others
   /// via Observation::agents), as "the humans' policy 'x' needs the sensor 'person', which only the

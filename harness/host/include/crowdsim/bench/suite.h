@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/kinematics.h"
 #include "crowdsim/params.h"
 #include "crowdsim/sim_config.h"
 #include "crowdsim/world_source.h"
@@ -55,6 +56,7 @@ struct RowSpec {
   std::string label;
   PluginUse policy;
   std::vector<PluginUse> sensors;
+  RobotKinematics kinematics;  ///< `kinematics:`, else the suite's `robot.kinematics`
   PluginUse world;
   HumansSpec humans;
   std::vector<std::pair<std::string, std::string>> info;  ///< extra table columns (model, ...)
