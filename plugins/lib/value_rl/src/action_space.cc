@@ -28,4 +28,18 @@ std::vector<Action> BuildActionSpace(int speed_samples, int rotation_samples, bo
   return actions;
 }
 
+std::vector<Action> BuildUnicycleActionSpace(int speed_samples, int rotation_samples,
+                                             bool stop_action, double v_pref, double time_step) {
+  std::vector<Action> actions;
+  if (stop_action) actions.push_back(Action::Command(0.0, 0.0));
+  const std::vector<double> speeds = ExponentialSpeeds(speed_samples, v_pref);
+  const double quarter = std::numbers::pi / 4.0;
+  for (int k = 0; k < rotation_samples; ++k) {
+    const double rot =
+        rotation_samples == 1 ? 0.0 : -quarter + 2.0 * quarter * k / (rotation_samples - 1);
+    for (double speed : speeds) actions.push_back(Action::Command(speed, rot / time_step));
+  }
+  return actions;
+}
+
 }  // namespace crowdsim::value_rl

@@ -98,7 +98,18 @@ ParamSchema Schema(Model /*model: both families take the same parameters*/) {
        1,
        360,
        {},
-       "directions k * 360/R degrees in the world frame"},
+       "holonomic: directions k * 360/R degrees in the world frame; unicycle: rotations "
+       "linspace(-45, 45, R) degrees per step"},
+      {"action_space",
+       ParamType::kString,
+       std::string("holonomic"),
+       0,
+       0,
+       {"holonomic", "unicycle"},
+       "holonomic: velocities in R world directions (a unicycle robot tracks them); unicycle: "
+       "CrowdNav's (speed, rotation) commands, R rotations in [-45, 45] degrees per step, for "
+       "rows with kinematics unicycle or diff_drive",
+       /*hashed_at_default=*/false},
       {"stop_action",
        ParamType::kBool,
        false,
@@ -162,6 +173,7 @@ ValueRlConfig ConfigFromParams(Model model, const Params& params) {
   c.speed_samples = static_cast<int>(params.GetInt("speed_samples"));
   c.rotation_samples = static_cast<int>(params.GetInt("rotation_samples"));
   c.stop_action = params.GetBool("stop_action");
+  c.unicycle_actions = params.GetString("action_space") == "unicycle";
   c.init_seed = static_cast<std::uint64_t>(params.GetInt("init_seed"));
   c.torch_threads = static_cast<int>(params.GetInt("torch_threads"));
   const std::string& w = params.GetString("weights");

@@ -4,13 +4,18 @@
 #include <stdexcept>
 #include <string>
 
+#include "crowdsim/kinematics.h"
+
 namespace crowdsim::value_rl {
 
-void AppendSelf(const AgentState& robot, const Frame& frame, std::vector<float>* out) {
+void AppendSelf(const AgentState& robot, const Frame& frame, bool heading,
+                std::vector<float>* out) {
   const Vec2 v = frame.VectorToLocal(robot.velocity);
   out->push_back(static_cast<float>((robot.goal - robot.position).norm()));
   out->push_back(static_cast<float>(robot.v_pref));
-  out->push_back(0.0f);  // theta - rot is 0 for a holonomic robot
+  // CrowdNav's theta - rot: the heading from the goal's direction; 0 for a holonomic robot.
+  out->push_back(heading ? static_cast<float>(WrapAngle(robot.heading - HeadingToGoal(robot)))
+                         : 0.0f);
   out->push_back(static_cast<float>(robot.radius));
   out->push_back(static_cast<float>(v.x()));
   out->push_back(static_cast<float>(v.y()));
@@ -43,7 +48,7 @@ EncodedState EncodeState(const ValueRlConfig& config, const AgentState& robot, c
   EncodedState state;
   std::vector<float>& v = state.values;
   v.reserve(SelfInputs(config) + config.LidarInputs() + 6 * kHumanDim);
-  AppendSelf(robot, frame, &v);
+  AppendSelf(robot, frame, config.unicycle_actions, &v);
   if (config.route) {
     const SensorReading& route = Find(readings, "route");
     if (static_cast<int>(route.values.size()) != kRouteDim) {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <numbers>
 #include <stdexcept>
 
 #include "crowdsim/lookahead.h"
@@ -125,10 +126,30 @@ PolicyNeeds ValuePolicy::Needs() const {
   PolicyNeeds needs;
   needs.lookahead = true;
   needs.sensors = SensorPlugins(impl_->config);
+  // Holonomic actions reach a unicycle robot through turn-then-go tracking (docs/kinematics.md).
+  needs.non_holonomic = impl_->config.unicycle_actions ? NonHolonomicDrive::kCommands
+                                                       : NonHolonomicDrive::kTrackVelocity;
   return needs;
 }
 
 void ValuePolicy::Reset(const EpisodeContext& ctx) {
+  if (impl_->config.unicycle_actions && ctx.role == AgentRole::kRobot &&
+      ctx.kinematics.Holonomic()) {
+    throw std::runtime_error(std::string(ModelName(impl_->config.model)) +
+                             ": action_space unicycle turns a heading a holonomic robot does not "
+                             "have; give the row `kinematics: unicycle` or use holonomic actions");
+  }
+  if (impl_->config.unicycle_actions && ctx.role == AgentRole::kRobot &&
+      impl_->config.rotation_samples > 1 &&
+      std::numbers::pi / 4.0 > ctx.kinematics.angular_speed_max * ctx.sim.time_step * (1 + 1e-12)) {
+    throw std::runtime_error(std::string(ModelName(impl_->config.model)) +
+                             ": action_space unicycle turns up to 45 degrees per step, " +
+                             std::to_string(std::numbers::pi / 4.0 / ctx.sim.time_step) +
+                             " rad/s at this time_step, more than the robot's angular_speed_max " +
+                             std::to_string(ctx.kinematics.angular_speed_max) +
+                             " rad/s: raise angular_speed_max, or lengthen time_step");
+  }
+  if (impl_->time_step != ctx.sim.time_step) impl_->actions_v_pref = -1.0;  // rotations per step
   impl_->gamma = ctx.sim.gamma;
   impl_->time_step = ctx.sim.time_step;
   impl_->model->SetDiscount(ctx.sim.gamma);
@@ -142,8 +163,11 @@ Action ValuePolicy::Decide(const Observation& obs) {
                              ": no lookahead in the observation (robot policies only)");
   }
   if (m.actions_v_pref != obs.self.v_pref) {
-    m.actions = BuildActionSpace(m.config.speed_samples, m.config.rotation_samples,
-                                 m.config.stop_action, obs.self.v_pref);
+    m.actions = m.config.unicycle_actions
+                    ? BuildUnicycleActionSpace(m.config.speed_samples, m.config.rotation_samples,
+                                               m.config.stop_action, obs.self.v_pref, m.time_step)
+                    : BuildActionSpace(m.config.speed_samples, m.config.rotation_samples,
+                                       m.config.stop_action, obs.self.v_pref);
     m.actions_v_pref = obs.self.v_pref;
   }
   if (m.exploration.epsilon > 0.0 && m.rng.Uniform() < m.exploration.epsilon) {

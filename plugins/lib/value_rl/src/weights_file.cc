@@ -39,8 +39,13 @@ std::string PriorText(double w, RoutePriorShape shape) {
 }  // namespace
 
 WeightsMeta MetaOf(const ValueRlConfig& config) {
-  return WeightsMeta{ModelName(config.model), SensorsLabel(config), config.ActionCount(),
-                     config.LidarInputs(),    config.route_prior,   config.route_prior_shape};
+  return WeightsMeta{ModelName(config.model),
+                     SensorsLabel(config),
+                     config.ActionCount(),
+                     config.LidarInputs(),
+                     config.route_prior,
+                     config.route_prior_shape,
+                     config.unicycle_actions ? "unicycle" : "holonomic"};
 }
 
 void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs::path& file) {
@@ -53,6 +58,8 @@ void SaveWeightsFile(const ValueNetwork& net, const WeightsMeta& meta, const fs:
   if (meta.route_prior != 0.0)
     archive.write("crowdsim_route_prior",
                   c10::IValue(PriorText(meta.route_prior, meta.route_prior_shape)));
+  if (meta.action_space != "holonomic")
+    archive.write("crowdsim_action_space", c10::IValue(meta.action_space));
   net.save(archive);
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
   SaveArchive(archive, file);
@@ -89,11 +96,13 @@ void LoadWeightsFile(const WeightsMeta& expected, const fs::path& file, ValueNet
       {"actions", std::to_string(expected.actions)},
       {"lidar_beams", std::to_string(expected.lidar_beams)},
       {"route_prior", PriorText(expected.route_prior, expected.route_prior_shape)},
+      {"action_space", expected.action_space},
   };
   std::string mismatch;
   for (const auto& [key, want] : checks) {
     std::string got = Found(archive, "crowdsim_" + key);
     if (key == "route_prior" && got == "(missing)") got = "0";  // older files
+    if (key == "action_space" && got == "(missing)") got = "holonomic";
     if (got != want) {
       mismatch += (mismatch.empty() ? "" : "; ") + key + ": expected " + want + ", found " + got;
     }

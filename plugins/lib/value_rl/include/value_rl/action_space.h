@@ -1,5 +1,5 @@
-// CrowdNav's holonomic action space (build_action_space), sized as in the paper: speeds
-// exponentially spaced up to v_pref times directions evenly spaced in the world frame.
+// CrowdNav's action spaces (build_action_space): speeds exponentially spaced up to v_pref times
+// directions evenly spaced in the world frame (holonomic, the paper's) or rotations (unicycle).
 #pragma once
 
 #include <vector>
@@ -15,5 +15,10 @@ std::vector<double> ExponentialSpeeds(int speed_samples, double v_pref);
 /// direction k is at k * 2 pi / rotation_samples in the world frame.
 std::vector<Action> BuildActionSpace(int speed_samples, int rotation_samples, bool stop_action,
                                      double v_pref);
+
+/// CrowdNav's unicycle actions: [stop,] then every (rotation, speed) pair, rotation the outer loop;
+/// rotations linspace(-pi/4, pi/4, R) per step (R = 1: none), as commands held over `time_step`.
+std::vector<Action> BuildUnicycleActionSpace(int speed_samples, int rotation_samples,
+                                             bool stop_action, double v_pref, double time_step);
 
 }  // namespace crowdsim::value_rl

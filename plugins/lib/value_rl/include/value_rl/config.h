@@ -43,8 +43,10 @@ struct ValueRlConfig {
   bool route = false;        ///< the route sensor's distance and waypoint join the self state
   double route_prior = 0.0;  ///< weight of the route prior (+route only); 0 = none
   RoutePriorShape route_prior_shape = RoutePriorShape::kLinear;
-  int speed_samples = 2;        ///< speeds per direction, exponentially spaced up to v_pref
-  int rotation_samples = 8;     ///< directions, evenly spaced in [0, 2 pi), world frame
+  int speed_samples = 2;     ///< speeds per direction, exponentially spaced up to v_pref
+  int rotation_samples = 8;  ///< directions in [0, 2 pi), or rotations (unicycle_actions)
+  /// CrowdNav's unicycle actions: (speed, rotation) commands, rotations linspace(-pi/4, pi/4).
+  bool unicycle_actions = false;
   bool stop_action = false;     ///< prepend CrowdNav's stop action
   std::string weights;          ///< resolved path of a weights file; empty = untrained
   std::uint64_t init_seed = 0;  ///< seed of the untrained weights

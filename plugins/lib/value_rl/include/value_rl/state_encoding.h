@@ -23,8 +23,9 @@ inline constexpr double kAbsentHumanDistance = 10.0;
 /// Width of the self state the network sees: the 6 values, plus the route's 3 with +route.
 inline int SelfInputs(const ValueRlConfig& c) { return kSelfDim + (c.route ? kRouteDim : 0); }
 
-/// Self part: dg, v_pref, theta (0: holonomic), radius, velocity in `frame`.
-void AppendSelf(const AgentState& robot, const Frame& frame, std::vector<float>* out);
+/// Self part: dg, v_pref, theta (`heading`: robot heading less goal direction; else 0), radius,
+/// velocity in `frame`.
+void AppendSelf(const AgentState& robot, const Frame& frame, bool heading, std::vector<float>* out);
 
 /// One human row; `person` is in the robot frame (the person sensor's output).
 void AppendHuman(const PersonObservation& person, double robot_radius, std::vector<float>* out);

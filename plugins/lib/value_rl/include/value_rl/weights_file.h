@@ -23,6 +23,7 @@ struct WeightsMeta {
   int64_t lidar_beams = 0;   ///< 0 without lidar
   double route_prior = 0.0;  ///< written only when not 0 (files before it have none)
   RoutePriorShape route_prior_shape = RoutePriorShape::kLinear;  ///< written beside it
+  std::string action_space = "holonomic";  ///< written only when not holonomic
 };
 
 /// The metadata a policy with `config` expects.
