@@ -609,7 +609,8 @@ TEST_F(SuiteValidation, RobotMapWithoutSensorsIsAnErrorNotACrash) {
       "robot: {sensor: [person]}\nrows:\n  - {label: a, policy: linear}\n");
   ASSERT_FALSE(r.suite);
   EXPECT_NE(Find(r,
-                 "suite.yaml:4:9: robot.sensor: unknown key 'sensor' (valid keys: sensors); did "
+                 "suite.yaml:4:9: robot.sensor: unknown key 'sensor' (valid keys: sensors, "
+                 "kinematics); did "
                  "you mean 'sensors'?"),
             "")
       << All(r);
@@ -628,7 +629,7 @@ TEST_F(SuiteValidation, AMisspelledRowKeyListsEveryRowKeySweepToo) {
   ASSERT_FALSE(r.suite);
   EXPECT_NE(Find(r,
                  "suite.yaml:5:32: rows[0].swep: unknown key 'swep' (valid keys: label, policy, "
-                 "params, weights, sensors, world, humans, sweep, info, reference)"),
+                 "params, weights, sensors, kinematics, world, humans, sweep, info, reference)"),
             "")
       << All(r);
   // The other keys of that list are a row's (weights: WrongKindAndWeightsWithoutParameter): a

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <set>
 
 #include "crowdsim/lookahead.h"
@@ -248,6 +249,23 @@ TEST(ActionSpaceTest, SixteenActionsRotationOuterSpeedInner) {
   ASSERT_EQ(with_stop.size(), 17u);
   EXPECT_EQ(with_stop[0].velocity, Vec2::Zero());
   EXPECT_EQ(with_stop[1].velocity, a[0].velocity);
+}
+
+TEST(ActionSpaceTest, UnicycleActionsAreCrowdNavsRotationsAsCommands) {
+  // Stop, then rotations linspace(-pi/4, pi/4, 7) outer, speeds inner; dt 0.25 s.
+  const auto a = BuildUnicycleActionSpace(2, 7, true, 1.0, 0.25);
+  ASSERT_EQ(a.size(), 15u);
+  for (const Action& action : a) EXPECT_TRUE(action.command);
+  EXPECT_EQ(a[0].linear, 0.0);
+  EXPECT_EQ(a[0].angular, 0.0);
+  EXPECT_NEAR(a[1].linear, 0.377541, 1e-6);
+  EXPECT_NEAR(a[1].angular * 0.25, -std::numbers::pi / 4, 1e-12);
+  EXPECT_NEAR(a[2].linear, 1.0, 1e-12);
+  EXPECT_NEAR(a[7].angular, 0.0, 1e-12);  // the middle rotation: straight on
+  EXPECT_NEAR(a[14].angular * 0.25, std::numbers::pi / 4, 1e-12);
+  const auto straight = BuildUnicycleActionSpace(2, 1, false, 1.0, 0.25);
+  ASSERT_EQ(straight.size(), 2u);
+  EXPECT_EQ(straight[1].angular, 0.0);
 }
 
 TEST(ValueNetworkTest, ParameterCountsAsCrowdNav) {

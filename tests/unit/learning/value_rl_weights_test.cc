@@ -135,6 +135,18 @@ TEST(WeightsFileTest, MismatchesAreClearErrors) {
   ExpectRejected(with_prior, discounted_file, "route_prior: expected 0.05, found 0.05 discounted");
   EXPECT_NO_THROW(ValuePolicy(discounted).LoadWeights(discounted_file));
 
+  // The action space: unicycle weights are refused as holonomic ones, and the other way round.
+  ValueRlConfig unicycle = with_stop;
+  unicycle.unicycle_actions = true;
+  unicycle.rotation_samples = 8;
+  const auto stop_file = dir.path() / "cadrl_stop.pt";
+  ValuePolicy(with_stop).SaveWeights(stop_file);
+  ExpectRejected(unicycle, stop_file, "action_space: expected unicycle, found holonomic");
+  const auto unicycle_file = dir.path() / "cadrl_unicycle.pt";
+  ValuePolicy(unicycle).SaveWeights(unicycle_file);
+  ExpectRejected(with_stop, unicycle_file, "action_space: expected holonomic, found unicycle");
+  EXPECT_NO_THROW(ValuePolicy(unicycle).LoadWeights(unicycle_file));
+
   ExpectRejected(Config(Model::kCadrl, SensorSet::kPerson), dir.path() / "missing.pt",
                  "does not exist");
   const auto junk = dir.Write("junk.pt", "not a torch archive");
