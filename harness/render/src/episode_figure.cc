@@ -112,6 +112,18 @@ void DrawDisc(Drawing* d, const View& v, const AgentState& s, const std::string&
   }
 }
 
+// The robot's heading: a wedge from its disc's edge outwards (the goal's direction for a
+// holonomic robot, its body's for a unicycle).
+void DrawHeading(Drawing* d, const View& v, const AgentState& s, const Color& color) {
+  const Vec2 dir(std::cos(s.heading), std::sin(s.heading));
+  const Vec2 side(-dir.y(), dir.x());
+  const double r = s.radius;
+  const std::vector<Vec2> wedge = {v.ToCanvas(s.position + dir * (r * 1.6)),
+                                   v.ToCanvas(s.position + dir * (r * 0.8) + side * (r * 0.45)),
+                                   v.ToCanvas(s.position + dir * (r * 0.8) - side * (r * 0.45))};
+  d->AddPolygon("heading robot", wedge, Filled(color, color, 1.0));
+}
+
 // A red ring around what the robot hit: the human's disc or the obstacle's outline.
 void DrawCollisionPartner(Drawing* d, const View& v, const Scenario& sc, const EpisodeResult& r,
                           const EpisodeFrame& humans_at_end) {
@@ -266,6 +278,7 @@ void DrawDiscs(Drawing* d, const View& v, const EpisodeFigure& fig, std::optiona
     const auto& tr = t.result->trajectory;
     const EpisodeFrame& f = tr[LastFrame(tr, frame)];
     DrawDisc(d, v, f.robot, disc + " robot", t.color, "R");
+    DrawHeading(d, v, f.robot, t.color);
     if (Collided(*t.result) && (!frame || *frame + 1 >= tr.size())) {
       d->AddCircle("collision-mark", v.ToCanvas(f.robot.position), v.Length(f.robot.radius) + 5.0,
                    Stroke(palette::kCollision, 2.2, true));

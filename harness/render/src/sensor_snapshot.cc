@@ -20,10 +20,8 @@ SensorSnapshot TakeSensorSnapshot(const Scenario& scenario, const EpisodeResult&
   SensorSnapshot snap;
   snap.step = step;
   snap.time = f.time;
+  // The recorded heading is the one it senses with: its goal's (holonomic) or its body's.
   snap.robot = f.robot;
-  // Episode::Step points the holonomic robot at its goal just before it senses; the recorded
-  // heading is the one of the previous decision.
-  snap.robot.heading = HeadingToGoal(snap.robot);
   snap.frame = Frame::Make(snap.robot.position, snap.robot.heading);
   snap.humans = f.humans;
   const CollisionWorld world(scenario.map);

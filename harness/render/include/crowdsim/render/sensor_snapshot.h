@@ -13,7 +13,7 @@ namespace crowdsim::render {
 struct SensorSnapshot {
   int step = 0;       ///< trajectory frame index
   double time = 0.0;  ///< s
-  AgentState robot;   ///< with the heading the episode senses with (towards the goal)
+  AgentState robot;   ///< with the heading the episode senses with (goal's or body's)
   Frame frame;        ///< the sensor frame the readings are relative to
   std::vector<AgentState> humans;
   std::vector<SensorReading> readings;  ///< one per mounted sensor, in order
