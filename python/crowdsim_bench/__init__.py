@@ -209,6 +209,33 @@ def holonomic_actions(v_pref: float = 1.0, speeds: int = 5, rotations: int = 16,
     return np.asarray(acts, dtype=np.float64)
 
 
+def unicycle_actions(v_pref: float = 1.0, time_step: float = 0.25, speeds: int = 5,
+                     rotations: int = 16, stop: bool = True) -> np.ndarray:
+    """CrowdNav's unicycle action set as commands (n, 2) = (linear m/s, angular rad/s): standing
+    still, then `rotations` turns linspace(-pi/4, pi/4) per step (outer) times `speeds`
+    exponentially spaced speeds up to v_pref (inner); a turn r is the angular speed r / time_step
+    (CrowdNav: 5 x 16 + 1)."""
+    mags = [(math.exp((i + 1) / speeds) - 1) / (math.e - 1) * v_pref for i in range(speeds)]
+    turns = np.linspace(-math.pi / 4, math.pi / 4, rotations) if rotations > 1 else [0.0]
+    acts = [(0.0, 0.0)] if stop else []
+    acts += [(m, r / time_step) for r in turns for m in mags]
+    return np.asarray(acts, dtype=np.float64)
+
+
+def _action_set(core, discrete: bool):
+    """The robot's actions and action space: velocities (vx, vy) for a holonomic robot, (linear,
+    angular) commands for a unicycle or diff_drive one; with `discrete`, CrowdNav's 81 of them."""
+    v = core.v_pref
+    if core.kinematics == "holonomic":
+        actions = holonomic_actions(v)
+        space = _box(-v, v, (2,))
+    else:
+        actions = unicycle_actions(v, core.time_step)
+        w = core.angular_speed_max
+        space = _box(np.array([-v, -w]), np.array([v, w]), (2,))
+    return actions, (_discrete_space(len(actions)) if discrete else space)
+
+
 def _settings(set) -> list[str]:
     """`set=` as the core takes it: one "key.path=value" string or a sequence of them."""
     if isinstance(set, str):
@@ -309,8 +336,10 @@ class Env(_ClosedByWith, _Base):
     in s. The observation space bounds what the row fixes: `time` by the timeout step, `lidar`
     by the sensor's max_range, `route`'s waypoint by its lookahead, `humans_mask` 0/1; positions
     and velocities are unbounded. Action: a velocity (vx, vy) in m/s, world frame, or with
-    `discrete=True` an index into `actions` (CrowdNav's 81 holonomic actions). Reward: the
-    harness's (success 1, collision -0.25, discomfort penalty). `terminated` on success or
+    `discrete=True` an index into `actions` (CrowdNav's 81 holonomic actions). On a row whose
+    robot is a unicycle or diff_drive (docs/kinematics.md), an action is a command (linear m/s,
+    angular rad/s), `actions` CrowdNav's 81 unicycle commands, and `robot`'s heading the body's
+    (the frame of `humans` and `lidar` turns with it). Reward: the harness's (success 1, collision -0.25, discomfort penalty). `terminated` on success or
     collision, `truncated` on timeout; `info["status"]` names the outcome and
     `info["episode_index"]` the suite's episode (never `episode`, which Gymnasium's
     RecordEpisodeStatistics writes: RESERVED_INFO_KEYS).
@@ -329,12 +358,7 @@ class Env(_ClosedByWith, _Base):
         self._episode = -1
         self._done = True
         self.discrete = discrete
-        v = self._env.v_pref
-        self.actions = holonomic_actions(v)
-        if discrete:
-            self.action_space = _discrete_space(len(self.actions))
-        else:
-            self.action_space = _box(-v, v, (2,))
+        self.actions, self.action_space = _action_set(self._env, discrete)
         self.observation_space = _dict(_observation_spaces(self._env, self._env.reset(0, False)))
 
     # -- Gymnasium API -----------------------------------------------------------------------
@@ -376,7 +400,7 @@ class Env(_ClosedByWith, _Base):
         else:
             velocity = np.asarray(action, dtype=np.float64).reshape(-1)
             if velocity.shape != (2,) or not np.all(np.isfinite(velocity)):
-                raise ValueError(f"action must be a finite velocity (vx, vy), got {action!r}")
+                raise ValueError(f"action must be {self._action_form()}, got {action!r}")
         obs, reward, status, error = self._env.step(float(velocity[0]), float(velocity[1]))
         terminated = status in ("success", "collision_human", "collision_obstacle", "policy_error")
         truncated = status == "timeout"
@@ -388,6 +412,16 @@ class Env(_ClosedByWith, _Base):
             result["episode_index"] = result.pop("episode")  # `episode` is Gymnasium's
             info.update(result)
         return self._obs(obs), float(reward), terminated, truncated, info
+
+    def _action_form(self) -> str:
+        return ("a finite velocity (vx, vy)" if self._env.kinematics == "holonomic" else
+                "a finite command (linear m/s, angular rad/s) for this " + self._env.kinematics +
+                " robot")
+
+    @property
+    def kinematics(self) -> str:
+        """The robot's motion model: holonomic, unicycle or diff_drive (docs/kinematics.md)."""
+        return self._env.kinematics
 
     def render(self):
         """With render_mode="rgb_array": the episode so far as an (height, width, 3) uint8
@@ -563,4 +597,4 @@ from .registration import ENV_IDS, register_envs  # noqa: E402
 register_envs()  # gymnasium.make("crowdsim_bench/Table1-v0"), ...; nothing without gymnasium
 
 __all__ = ["Env", "VectorEnv", "STATUS_NAMES", "ENV_IDS", "RESERVED_INFO_KEYS", "evaluate",
-           "run_suite", "holonomic_actions", "data_root", "Box", "Dict", "__version__"]
+           "run_suite", "holonomic_actions", "unicycle_actions", "data_root", "Box", "Dict", "__version__"]

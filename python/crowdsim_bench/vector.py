@@ -47,8 +47,8 @@ class VectorEnv(_ClosedByWith, _VectorBase):
 
     def __init__(self, suite: str, row: str | int = 1, num_envs: int = 16, *,
                  set: Sequence[str] | str = (), discrete: bool = False, threads: int = 1):
-        from . import (_batch_space, _box, _dict, _discrete_space, _is_whole,
-                       _observation_spaces, _settings, holonomic_actions)
+        from . import (_action_set, _batch_space, _dict, _is_whole, _observation_spaces,
+                       _settings)
         for name, count in (("num_envs", num_envs), ("threads", threads)):
             if not _is_whole(count) or count < 1:  # 2.5 ran 2, threads=0 or -3 ran one
                 raise ValueError(f"{name} must be a whole number >= 1, got {count!r}")
@@ -62,11 +62,7 @@ class VectorEnv(_ClosedByWith, _VectorBase):
         self.num_envs = self._env.num_envs
         self.discrete = discrete
         probe = _core.Env(str(suite), row, settings)
-        self.actions = holonomic_actions(probe.v_pref)
-        if discrete:
-            self.single_action_space = _discrete_space(len(self.actions))
-        else:
-            self.single_action_space = _box(-probe.v_pref, probe.v_pref, (2,))
+        self.actions, self.single_action_space = _action_set(probe, discrete)
         self.action_space = _batch_space(self.single_action_space, self.num_envs)
         self.single_observation_space = _dict(_observation_spaces(probe, probe.reset(0, False)))
         self.observation_space = _batch_space(self.single_observation_space, self.num_envs)
@@ -101,8 +97,9 @@ class VectorEnv(_ClosedByWith, _VectorBase):
         return obs, {"episode_index": episode, "_episode_index": self._everyone}
 
     def step(self, actions):
-        """Steps every sub-environment: `actions` (n, 2) velocities (m/s, world frame) or, with
-        `discrete=True`, (n,) indices into `actions`. Returns obs, reward (n,), terminated (n,),
+        """Steps every sub-environment: `actions` (n, 2) velocities (m/s, world frame), or for a
+        unicycle or diff_drive robot commands (linear m/s, angular rad/s), or with
+        `discrete=True` (n,) indices into `actions`. Returns obs, reward (n,), terminated (n,),
         truncated (n,), info with `status` (n,) codes into STATUS_NAMES and `episode_index`
         (n,). A sub-environment that ended is reset on the next step, its action ignored."""
         if self.discrete:

@@ -154,6 +154,8 @@ class Env {
   double time_step() const { return row_->suite.sim.time_step; }
   double time_limit() const { return row_->suite.sim.time_limit; }
   double v_pref() const { return row_->suite.sim.robot_v_pref; }
+  std::string kinematics() const { return KinematicsModelName(row_->row.kinematics.model); }
+  double angular_speed_max() const { return row_->row.kinematics.angular_speed_max; }
   int humans() const { return row_->row.humans.count; }
   std::string label() const { return row_->row.label; }
   std::vector<std::string> sensors() const { return SensorNames(row_->row); }
@@ -336,6 +338,8 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("time_step", &Env::time_step)
       .def_property_readonly("time_limit", &Env::time_limit)
       .def_property_readonly("v_pref", &Env::v_pref)
+      .def_property_readonly("kinematics", &Env::kinematics)
+      .def_property_readonly("angular_speed_max", &Env::angular_speed_max)
       .def_property_readonly("humans", &Env::humans)
       .def_property_readonly("label", &Env::label)
       .def_property_readonly("sensors", &Env::sensors)

@@ -73,12 +73,16 @@ const std::array<LoadedPlugin, kSlots>& SlotPlugins() {
   return plugins;
 }
 
-Vec2 VelocityOf(const py::handle& v, const char* what) {
+/// Two numbers from a policy: a velocity, or (`velocity` false) a non-holonomic robot's command.
+Vec2 VelocityOf(const py::handle& v, const char* what, bool velocity = true) {
+  const std::string form = velocity ? " must be a velocity (vx, vy) in m/s, world frame"
+                                    : " must be a command (linear m/s, angular rad/s) for this "
+                                      "non-holonomic robot";
   // None (a policy without `return`) reads as one NaN: "got 1 numbers" hid the missing return.
   if (v.is_none()) {
-    throw std::invalid_argument(std::string(what) +
-                                " must be a velocity (vx, vy) in m/s, world frame: 2 numbers "
-                                "(got None: does the policy `return` its velocity?)");
+    throw std::invalid_argument(std::string(what) + form + ": 2 numbers (got None: does the " +
+                                "policy `return` its " + (velocity ? "velocity" : "command") +
+                                "?)");
   }
   // Any array-like of two numbers: (2,), (1, 2) as Env.step takes it, a list, a tensor.
   using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -93,8 +97,7 @@ Vec2 VelocityOf(const py::handle& v, const char* what) {
   }
   if (!a || a.size() != 2) {
     if (a) why = " (got " + std::to_string(a.size()) + (a.size() == 1 ? " number)" : " numbers)");
-    throw std::invalid_argument(
-        std::string(what) + " must be a velocity (vx, vy) in m/s, world frame: 2 numbers" + why);
+    throw std::invalid_argument(std::string(what) + form + ": 2 numbers" + why);
   }
   return Vec2(a.data()[0], a.data()[1]);
 }
@@ -130,11 +133,15 @@ Action PythonPolicy::Decide(const Observation& obs) {
     if (!next_) throw std::logic_error("python policy: no action was given for this step");
     const Vec2 v = *next_;
     next_.reset();
-    return Action{v};
+    return holonomic_ ? Action(v) : Action::Command(v.x(), v.y());
   }
   py::gil_scoped_acquire gil;
   try {
     const py::object out = py::handle(callable_)(ObservationDict(obs, max_humans_));
+    if (!holonomic_) {
+      const Vec2 c = VelocityOf(out, "the policy's return value", false);
+      return Action::Command(c.x(), c.y());
+    }
     return Action{VelocityOf(out, "the policy's return value")};
   } catch (py::error_already_set& e) {
     // Ctrl-C or exit() inside the policy stops the run (and is raised again to the caller);

@@ -48,11 +48,17 @@ class PythonPolicy final : public Policy {
                PythonStop* stop)
       : sensors_(std::move(sensors)), max_humans_(max_humans), callable_(callable), stop_(stop) {}
 
-  PolicyNeeds Needs() const override { return PolicyNeeds{false, false, sensors_}; }
-  void Reset(const EpisodeContext& ctx) override {}
+  /// A non-holonomic robot gets its two numbers as a (linear, angular) command.
+  PolicyNeeds Needs() const override {
+    PolicyNeeds needs{false, false, sensors_};
+    needs.non_holonomic = NonHolonomicDrive::kCommands;
+    return needs;
+  }
+  void Reset(const EpisodeContext& ctx) override { holonomic_ = ctx.kinematics.Holonomic(); }
   Action Decide(const Observation& obs) override;
 
-  /// Env.step: the velocity of the next Decide (world frame, m/s).
+  /// Env.step: the next Decide's velocity (world frame, m/s) or, for a non-holonomic robot,
+  /// its (linear m/s, angular rad/s) command.
   void SetNextVelocity(const Vec2& v) { next_ = v; }
 
  private:
@@ -61,6 +67,7 @@ class PythonPolicy final : public Policy {
   PyObject* callable_ = nullptr;
   PythonStop* stop_ = nullptr;
   std::optional<Vec2> next_;
+  bool holonomic_ = true;
 };
 
 /// The Python policy of one Env, VectorEnv or evaluate() call: a plugin of its own (made in

@@ -165,6 +165,48 @@ class EnvContract(unittest.TestCase):
                          "Discrete(81)")
 
 
+class UnicycleRobot(unittest.TestCase):
+    """A row with `kinematics: unicycle` (docs/kinematics.md): commands, not velocities."""
+    UNICYCLE = ["robot.kinematics=unicycle"]
+
+    def test_spaces_hold_every_command_the_env_accepts(self):
+        env = cb.Env(QUICK, row="orca", set=self.UNICYCLE)
+        self.assertEqual(env.kinematics, "unicycle")
+        np.testing.assert_allclose(env.action_space.low, [-1.0, -math.pi])
+        np.testing.assert_allclose(env.action_space.high, [1.0, math.pi])
+        discrete = cb.Env(QUICK, row="orca", set=self.UNICYCLE, discrete=True)
+        self.assertEqual(len(discrete.actions), 81)
+        # CrowdNav's set: stop, then 16 turns in [-45, 45] degrees a step x 5 speeds.
+        np.testing.assert_allclose(discrete.actions[0], [0.0, 0.0])
+        np.testing.assert_allclose(discrete.actions[1:, 1].min() * 0.25, -math.pi / 4)
+        np.testing.assert_allclose(discrete.actions[1:, 1].max() * 0.25, math.pi / 4)
+        for action in discrete.actions:
+            self.assertTrue(env.action_space.contains(action), action)
+        env.action_space.seed(3)
+        env.reset(seed=0)
+        for _ in range(20):
+            env.step(env.action_space.sample())
+            if env.result()["status"] != "running":
+                break
+
+    def test_a_command_turns_the_robot_and_its_frame(self):
+        env = cb.Env(QUICK, row="orca", set=self.UNICYCLE)
+        obs, _ = env.reset(seed=0)
+        heading = obs["robot"][8]
+        obs, *_ = env.step([0.0, 1.0])  # turn on the spot at 1 rad/s for 0.25 s
+        self.assertAlmostEqual(obs["robot"][8], math.remainder(heading + 0.25, 2 * math.pi))
+        np.testing.assert_allclose(obs["robot"][2:4], [0.0, 0.0])  # it did not move
+        with self.assertRaisesRegex(ValueError, "command \\(linear m/s, angular rad/s\\)"):
+            env.step([float("nan"), 0.0])
+
+    def test_vector_env_takes_commands_too(self):
+        venv = cb.VectorEnv(QUICK, row="orca", num_envs=2, set=self.UNICYCLE)
+        self.assertEqual(venv.single_action_space.shape, (2,))
+        np.testing.assert_allclose(venv.single_action_space.high, [1.0, math.pi])
+        venv.reset(seed=0)
+        venv.step(np.array([[0.5, 0.0], [0.0, 1.0]]))
+
+
 class SameEpisodesAsTheCli(unittest.TestCase):
     def test_python_stepped_linear_equals_the_cli_linear_row(self):
         committed = committed_episodes("linear")
