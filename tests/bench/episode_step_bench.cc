@@ -1,5 +1,6 @@
 // One full episode step: the robot with both sensors (lidar2d 45 beams, person) and the linear
-// policy, 5 ORCA humans, a 10 x 10 m room with 3 obstacles. Target: >= 50,000 steps/s.
+// policy, 5 ORCA humans, a 10 x 10 m room with 3 obstacles. Target: >= 50,000 steps/s. The
+// unicycle robot (tracked, optionally acceleration-limited) should cost within 10% of it.
 #include <benchmark/benchmark.h>
 
 #include "crowdsim/bench/episode.h"
@@ -49,8 +50,10 @@ struct Setup {
   }
 };
 
-void BM_EpisodeStep(benchmark::State& state, const std::string& human_policy) {
+void BM_EpisodeStep(benchmark::State& state, const std::string& human_policy,
+                    RobotKinematics kinematics = {}) {
   Setup s(human_policy);
+  s.agents.kinematics = kinematics;
   SimConfig sim;
   sim.time_limit = 1e9;  // never time out inside the measurement
   auto episode = std::make_unique<Episode>(s.scenario, sim, s.agents);
@@ -70,6 +73,20 @@ void BM_EpisodeStep(benchmark::State& state, const std::string& human_policy) {
 
 BENCHMARK_CAPTURE(BM_EpisodeStep, orca_humans, std::string("orca"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_EpisodeStep, linear_humans, std::string("linear"))
+    ->Unit(benchmark::kMicrosecond);
+
+RobotKinematics Unicycle(double accel_max, double angular_accel_max) {
+  RobotKinematics k;
+  k.model = KinematicsModel::kUnicycle;
+  k.accel_max = accel_max;
+  k.angular_accel_max = angular_accel_max;
+  return k;
+}
+BENCHMARK_CAPTURE(BM_EpisodeStep, orca_humans_unicycle, std::string("orca"),
+                  Unicycle(kInfinity, kInfinity))
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_EpisodeStep, orca_humans_unicycle_limited, std::string("orca"),
+                  Unicycle(1.0, 2.0))
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -139,15 +139,19 @@ BENCHMARK(BM_GreedyEpisode)->Apply(Args)->Unit(benchmark::kMillisecond);
 
 /// One RL training episode as the trainer runs it: epsilon-greedy episode with lookahead,
 /// state encoding, TD targets from the target network, 100 SGD steps on batches of 100.
-void BM_TrainingEpisode(benchmark::State& state) {
+/// The policy is made from `config`; the robot has `kinematics`.
+void TimeTrainingEpisodes(benchmark::State& state, const ValueRlConfig& config,
+                          const RobotKinematics& kinematics) {
   World w;
-  ValuePolicy policy(FromArgs(state));
+  w.agents.kinematics = kinematics;
+  ValuePolicy policy(config);
   policy.SetLearningRate(0.001, 0.9);
   const auto memory = RandomStates(policy.config(), 2000, 3);
   std::vector<float> memory_values(memory.size(), 0.1f);
   w.agents.robot = &policy;
   Rng rng(4);
   int k = 0;
+  std::int64_t steps = 0;
   for (auto _ : state) {
     policy.SetExploration(Exploration{0.7, static_cast<std::uint64_t>(k)});
     const Scenario scenario = w.Make(k++);
@@ -157,6 +161,7 @@ void BM_TrainingEpisode(benchmark::State& state) {
       episode.Step();
       states.push_back(policy.Encode(episode.last_robot_observation()));
     }
+    steps += static_cast<std::int64_t>(states.size());
     benchmark::DoNotOptimize(policy.TargetValues(Pointers(states)));
     for (int b = 0; b < 100; ++b) {
       std::vector<const EncodedState*> batch;
@@ -169,8 +174,36 @@ void BM_TrainingEpisode(benchmark::State& state) {
       benchmark::DoNotOptimize(policy.TrainBatch(batch, targets));
     }
   }
+  state.counters["steps/episode"] =
+      static_cast<double>(steps) / static_cast<double>(state.iterations());
+}
+
+void BM_TrainingEpisode(benchmark::State& state) {
+  TimeTrainingEpisodes(state, FromArgs(state), RobotKinematics{});
 }
 BENCHMARK(BM_TrainingEpisode)->Apply(Args)->Unit(benchmark::kMillisecond);
+
+/// The same for lidar+person models as holonomic and as unicycle robots (CrowdNav's unicycle
+/// actions, 1 + 2 x 7): within 20% of each other per step (issue 45).
+void BM_TrainingEpisodeBody(benchmark::State& state) {
+  ValueRlConfig config =
+      Config(state.range(0) ? Model::kSarl : Model::kCadrl, SensorSet::kLidarPerson);
+  RobotKinematics kinematics;
+  if (state.range(1)) {
+    config.unicycle_actions = true;
+    config.rotation_samples = 7;
+    config.stop_action = true;
+    kinematics.model = KinematicsModel::kUnicycle;
+  }
+  TimeTrainingEpisodes(state, config, kinematics);
+}
+BENCHMARK(BM_TrainingEpisodeBody)
+    ->ArgNames({"sarl", "unicycle"})
+    ->Args({0, 0})
+    ->Args({0, 1})
+    ->Args({1, 0})
+    ->Args({1, 1})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace crowdsim::value_rl
