@@ -102,6 +102,19 @@ class Cautious(torch.nn.Module):
         return d / dist * torch.minimum(r[7] * factor, dist / 0.25) + 0.01 * obs["time"]
 
 
+class TurnThenGo(torch.nn.Module):
+    """`command` mode on a unicycle robot: turn towards the goal (at most pi rad/s), and go at
+    v_pref once within 45 degrees of it."""
+    def forward(self, obs: Dict[str, torch.Tensor]) -> torch.Tensor:
+        r = obs["robot"]
+        d = r[4:6] - r[0:2]
+        error = torch.atan2(d[1], d[0]) - r[8]
+        error = torch.atan2(torch.sin(error), torch.cos(error))
+        angular = torch.clamp(error / 0.25, -torch.pi, torch.pi)
+        linear = r[7] if float(torch.abs(error)) < torch.pi / 4 else torch.zeros((), dtype=torch.float64)
+        return torch.stack([linear, angular])
+
+
 class WrongSignature(torch.nn.Module):
     def forward(self, x: torch.Tensor) -> torch.Tensor:
         return x
@@ -209,6 +222,35 @@ class TorchScriptPlugin(unittest.TestCase):
         self.assertNotIn("policy_error", statuses)
         self.assertIn("success", statuses)
         self.assertTrue(all(float(e[7]) > 0 for e in got["values"].values()))
+
+    def test_the_output_names_the_form_a_unicycle_robot_takes(self):
+        command = save(TurnThenGo(), self.path("turn.pt"))
+        velocity = save(StraightToGoal(), self.path("straight.pt"))
+        got = run(quick_with_rows(self.dir, [
+            f"{{label: command, policy: torchscript, weights: {command}, "
+            "params: {output: command}, kinematics: unicycle}",
+            f"{{label: tracked, policy: torchscript, weights: {velocity}, "
+            "kinematics: {model: unicycle, track_velocity: true}}",
+            "{label: linear, policy: linear, kinematics: unicycle}",
+        ]), self.path("out"))
+        statuses = [e[3] for e in got["command"].values()]
+        self.assertNotIn("policy_error", statuses)
+        self.assertIn("success", statuses)
+        # A tracked velocity module is the linear plugin on the same body, episode for episode.
+        self.assertEqual(got["tracked"], got["linear"])
+        # Velocities without tracking, and commands for a holonomic robot, are refused before
+        # any episode.
+        refused = subprocess.run([CLI, "run", quick_with_rows(self.dir, [
+            f"{{label: v, policy: torchscript, weights: {velocity}, kinematics: unicycle}}"]),
+            "--out", self.path("refused")], capture_output=True, text=True)
+        self.assertEqual(refused.returncode, 2, refused.stdout + refused.stderr)
+        self.assertIn("cannot drive a unicycle robot: add `track_velocity: true`", refused.stderr)
+        holonomic = subprocess.run([CLI, "run", quick_with_rows(self.dir, [
+            f"{{label: h, policy: torchscript, weights: {command}, params: {{output: command}}}}"]),
+            "--out", self.path("holonomic")], capture_output=True, text=True)
+        self.assertEqual(holonomic.returncode, 2, holonomic.stdout + holonomic.stderr)
+        self.assertIn("output: command returns (linear, angular) commands, which a holonomic "
+                      "robot does not take", holonomic.stderr)
 
     def test_values_mode_refuses_a_module_without_one_value_per_action(self):
         pt = save(ConstantIndex(), self.path("i.pt"))

@@ -16,6 +16,10 @@ std::string Expected(Output output, int actions) {
     return "output: velocity expects 2 floating-point numbers (vx, vy in m/s, world frame), "
            "e.g. a float tensor of shape (2,)";
   }
+  if (output == Output::kCommand) {
+    return "output: command expects 2 floating-point numbers (linear m/s along the heading, "
+           "angular rad/s), e.g. a float tensor of shape (2,)";
+  }
   if (output == Output::kValues) {
     return "output: values expects " + std::to_string(actions) +
            " floating-point values, one per row of the stacked lookahead observation (one per "
@@ -49,6 +53,7 @@ const at::Tensor& TensorOf(const c10::IValue& out, Output output, int actions,
   bool fits = false;
   switch (output) {
     case Output::kVelocity:
+    case Output::kCommand:
       fits = floating && t.numel() == 2;
       break;
     case Output::kAction:
@@ -94,9 +99,10 @@ Action ActionFromOutput(const c10::IValue& out, Output output, std::span<const A
                         const std::string& file) {
   const int count = static_cast<int>(actions.size());
   const at::Tensor& t = TensorOf(out, output, count, file);
-  if (output == Output::kVelocity) {
+  if (output == Output::kVelocity || output == Output::kCommand) {
     const at::Tensor v = t.to(at::kDouble).contiguous().view({-1});
-    return Action{Vec2(v.data_ptr<double>()[0], v.data_ptr<double>()[1])};
+    const double a = v.data_ptr<double>()[0], b = v.data_ptr<double>()[1];
+    return output == Output::kVelocity ? Action(Vec2(a, b)) : Action::Command(a, b);
   }
   if (t.is_floating_point()) return actions[BestScore(t, file)];
   const int64_t index = t.item<int64_t>();

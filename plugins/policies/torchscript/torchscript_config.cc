@@ -9,6 +9,8 @@ const char* OutputName(Output output) {
   switch (output) {
     case Output::kVelocity:
       return "velocity";
+    case Output::kCommand:
+      return "command";
     case Output::kAction:
       return "action";
     case Output::kValues:
@@ -52,8 +54,9 @@ ParamSchema Schema() {
        std::string("velocity"),
        0,
        0,
-       {"velocity", "action", "values"},
-       "velocity: (vx, vy) m/s world frame; action: an index or one score per action; values: "
+       {"velocity", "command", "action", "values"},
+       "velocity: (vx, vy) m/s world frame; command: (linear m/s, angular rad/s) for a unicycle "
+       "or diff_drive robot; action: an index or one score per action; values: "
        "V(s') of every action's lookahead observation (stacked), the best r + gamma^(dt v_pref) "
        "V(s') acts (as cadrl and sarl)"},
       {"speed_samples",
@@ -79,6 +82,16 @@ ParamSchema Schema() {
        1,
        {},
        "action set: the stop action first (CrowdNav's; cadrl and sarl have none)"},
+      {"action_space",
+       ParamType::kString,
+       std::string("holonomic"),
+       0,
+       0,
+       {"holonomic", "unicycle"},
+       "action set of `action` / `values`: holonomic velocities, or CrowdNav's unicycle "
+       "commands (R rotations linspace(-45, 45) degrees per step x speeds) for a unicycle or "
+       "diff_drive robot",
+       /*hashed_at_default=*/false},
       {"torch_threads",
        ParamType::kInt,
        std::int64_t{1},
@@ -107,12 +120,14 @@ TorchScriptConfig ConfigFromParams(const Params& params) {
   c.humans = static_cast<int>(params.GetInt("humans"));
   c.lidar_beams = static_cast<int>(params.GetInt("lidar_beams"));
   const std::string& output = params.GetString("output");
-  c.output = output == "action"   ? Output::kAction
-             : output == "values" ? Output::kValues
-                                  : Output::kVelocity;
+  c.output = output == "action"    ? Output::kAction
+             : output == "values"  ? Output::kValues
+             : output == "command" ? Output::kCommand
+                                   : Output::kVelocity;
   c.speed_samples = static_cast<int>(params.GetInt("speed_samples"));
   c.rotation_samples = static_cast<int>(params.GetInt("rotation_samples"));
   c.stop_action = params.GetBool("stop_action");
+  c.unicycle_actions = params.GetString("action_space") == "unicycle";
   c.torch_threads = static_cast<int>(params.GetInt("torch_threads"));
   return c;
 }

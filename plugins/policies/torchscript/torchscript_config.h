@@ -11,6 +11,7 @@ namespace crowdsim::torchscript {
 /// What the module returns.
 enum class Output {
   kVelocity,  ///< 2 numbers: vx, vy in m/s, world frame
+  kCommand,   ///< 2 numbers: linear m/s, angular rad/s (a unicycle or diff_drive robot)
   kAction,    ///< an index into, or one score per action of, the action set
   /// V(s') of each action's lookahead state, batched (a value network such as CADRL's or
   /// SARL's): the plugin acts on the best r + gamma^(dt v_pref) V(s')
@@ -33,11 +34,17 @@ struct TorchScriptConfig {
   int speed_samples = kCrowdNavSpeeds;
   int rotation_samples = kCrowdNavDirections;
   bool stop_action = true;
+  /// CrowdNav's unicycle commands (value_rl's BuildUnicycleActionSpace) instead of velocities.
+  bool unicycle_actions = false;
   int torch_threads = 1;  ///< libtorch intra-op threads
 
   bool UsesPerson() const { return sensors != "lidar"; }
   bool UsesLidar() const { return sensors != "person"; }
   bool UsesLookahead() const { return output == Output::kValues; }
+  /// It returns (linear, angular) commands: for unicycle and diff_drive robots only.
+  bool Commands() const {
+    return output == Output::kCommand || (output != Output::kVelocity && unicycle_actions);
+  }
   int ActionCount() const { return speed_samples * rotation_samples + (stop_action ? 1 : 0); }
 };
 
@@ -51,7 +58,7 @@ TorchScriptConfig ConfigFromParams(const Params& params);
 /// Plugin names of the sensors the configuration reads (checked against the row's sensors).
 std::vector<std::string> SensorPlugins(const TorchScriptConfig& config);
 
-/// "velocity" | "action" | "values".
+/// "velocity" | "command" | "action" | "values".
 const char* OutputName(Output output);
 
 }  // namespace crowdsim::torchscript

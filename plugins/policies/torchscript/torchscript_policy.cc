@@ -71,7 +71,11 @@ struct TorchScriptPolicy::Impl {
 
   const std::vector<Action>& ActionsAt(double v_pref) {
     if (v_pref != actions_v_pref) {
-      actions = value_rl::BuildActionSpace(config.speed_samples, config.rotation_samples,
+      actions =
+          config.unicycle_actions
+              ? value_rl::BuildUnicycleActionSpace(config.speed_samples, config.rotation_samples,
+                                                   config.stop_action, v_pref, time_step)
+              : value_rl::BuildActionSpace(config.speed_samples, config.rotation_samples,
                                            config.stop_action, v_pref);
       actions_v_pref = v_pref;
     }
@@ -122,10 +126,20 @@ PolicyNeeds TorchScriptPolicy::Needs() const {
   PolicyNeeds needs;
   needs.sensors = SensorPlugins(impl_->config);
   needs.lookahead = impl_->config.UsesLookahead();
+  // The output names the form: commands drive a unicycle robot; velocities only when tracked.
+  if (impl_->config.Commands()) needs.non_holonomic = NonHolonomicDrive::kCommands;
   return needs;
 }
 
 void TorchScriptPolicy::Reset(const EpisodeContext& ctx) {
+  if (impl_->config.Commands() && ctx.role == AgentRole::kRobot && ctx.kinematics.Holonomic()) {
+    throw std::runtime_error(
+        std::string("torchscript: output: ") + OutputName(impl_->config.output) +
+        (impl_->config.output == Output::kCommand ? "" : " with action_space: unicycle") +
+        " returns (linear, angular) commands, which a holonomic robot does not take; give the "
+        "row `kinematics: unicycle`, or return velocities");
+  }
+  if (impl_->time_step != ctx.sim.time_step) impl_->actions_v_pref = -1.0;  // turns per step
   impl_->gamma = ctx.sim.gamma;
   impl_->time_step = ctx.sim.time_step;
 }
