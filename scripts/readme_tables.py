@@ -19,12 +19,13 @@ BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact)?) begin 
                    r"(<!-- table:(?P=name)(?P=form) end -->)", re.S)
 # The pages that hold blocks, and the suites whose full table one of them must hold.
 PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
-REQUIRED = ["table1", "table1_3obs", "table2", "table1_route", "table2_route", "human_models"]
-INFO = ["line", "model", "humans.policy", "sensor(s)", "# of obstacles", "humans", "floor plan", "seed",
+REQUIRED = ["table1", "table1_3obs", "table2", "table1_route", "table2_route", "human_models",
+            "kinematics"]
+INFO = ["line", "model", "humans.policy", "kinematics", "sensor(s)", "# of obstacles", "humans", "floor plan", "seed",
         "weights", "procedure"]
 # The paper's column names where they need a word more out of the paper's context.
 HEADER = {"# of obstacles": "trained with # obstacles", "humans": "trained with humans",
-          "humans.policy": "people"}
+          "humans.policy": "people", "kinematics": "robot body"}
 
 
 def rate(row, key):
