@@ -278,6 +278,53 @@ TEST_F(Lidar2dPlugin, RangesMatchTheCollisionWorldScan) {
   EXPECT_EQ(r.max_range, 4.0);
 }
 
+// Noise and dropouts: the configured statistics over many steps, none by default, and the same
+// draws for the same (episode, step).
+TEST_F(Lidar2dPlugin, RangeNoiseAndDropoutsHaveTheirConfiguredStatistics) {
+  const LoadedPlugin& p = registry_.Load("lidar2d", PluginKind::kSensor);
+  Params params = Params::Defaults(p.schema);
+  params.Set("beams", std::int64_t{3});
+  params.Set("fov_deg", 2.0);  // three beams within a degree of the heading: the wall 1.9 m ahead
+  const auto exact = registry_.MakeSensor(p, params);
+  params.Set("range_noise", 0.1);
+  params.Set("dropout_prob", 0.2);
+  const auto noisy = registry_.MakeSensor(p, params);
+  CollisionWorld world(Room());
+  AgentState robot;
+  robot.position = Vec2(0, 3);
+  const Frame frame = Frame::Make(robot.position, kPi / 2);  // up: the top wall at y = 4.9
+  const auto read = [&](const Sensor& sensor, std::uint64_t seed, int step) {
+    SensorReading r;
+    sensor.Sense(SenseInput{robot, frame, {}, world, seed, step}, &r);
+    return r;
+  };
+  const double truth = read(*exact, 1, 0).ranges[1];
+  EXPECT_NEAR(truth, 1.9, 1e-12);
+  EXPECT_EQ(read(*exact, 7, 3).ranges, read(*exact, 8, 4).ranges);  // exact: no draws
+  int dropped = 0;
+  int returns = 0;
+  double sum = 0.0, sum_sq = 0.0;
+  constexpr int kSteps = 20000;
+  for (int step = 0; step < kSteps; ++step) {
+    const SensorReading r = read(*noisy, 42, step);
+    EXPECT_EQ(r.ranges, read(*noisy, 42, step).ranges);  // same episode and step: same draws
+    if (r.ranges[1] == 5.0) {
+      ++dropped;
+      continue;
+    }
+    ++returns;
+    sum += r.ranges[1] - truth;
+    sum_sq += (r.ranges[1] - truth) * (r.ranges[1] - truth);
+  }
+  // Binomial: 0.2 +- 4 standard errors (0.0028); the noise's standard deviation within 3%.
+  EXPECT_NEAR(dropped / double(kSteps), 0.2, 4 * std::sqrt(0.2 * 0.8 / kSteps));
+  const double mean = sum / returns;
+  EXPECT_NEAR(mean, 0.0, 4 * 0.1 / std::sqrt(returns));
+  EXPECT_NEAR(std::sqrt(sum_sq / returns - mean * mean), 0.1, 0.003);
+  // Another episode draws other noise.
+  EXPECT_NE(read(*noisy, 42, 5).ranges, read(*noisy, 43, 5).ranges);
+}
+
 TEST_F(Lidar2dPlugin, RejectsZeroFieldOfViewAndRange) {
   EXPECT_THROW(Make(45, 0.0), PluginError);
   EXPECT_THROW(Make(45, 180.0, 0.0), PluginError);

@@ -1,5 +1,6 @@
 #include "lidar2d_sensor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -33,6 +34,23 @@ ParamSchema Schema() {
        1,
        {},
        "beams stop at human discs (false: only static obstacles are seen)"},
+      {"range_noise",
+       ParamType::kDouble,
+       0.0,
+       0.0,
+       10.0,
+       {},
+       "m; standard deviation of the Gaussian noise added to each return (none on a beam that "
+       "hits nothing), clipped to [0, max_range]",
+       /*hashed_at_default=*/false},
+      {"dropout_prob",
+       ParamType::kDouble,
+       0.0,
+       0.0,
+       1.0,
+       {},
+       "probability that a beam returns nothing (max_range) at a step",
+       /*hashed_at_default=*/false},
   };
 }
 
@@ -71,7 +89,9 @@ double Positive(const Params& params, const char* name) {
 Lidar2dSensor::Lidar2dSensor(const Params& params)
     : angles_(BeamAngles(static_cast<int>(params.GetInt("beams")), Positive(params, "fov_deg"))),
       max_range_(Positive(params, "max_range")),
-      see_humans_(params.GetBool("see_humans")) {
+      see_humans_(params.GetBool("see_humans")),
+      range_noise_(params.GetDouble("range_noise")),
+      dropout_prob_(params.GetDouble("dropout_prob")) {
   for (double a : angles_) directions_.emplace_back(std::cos(a), std::sin(a));
 }
 
@@ -97,6 +117,20 @@ void Lidar2dSensor::Sense(const SenseInput& in, SensorReading* out) const {
   out->ranges.resize(angles_.size());
   out->max_range = max_range_;
   in.world.CastRays(in.frame.origin, world_directions, max_range_, discs, out->ranges.data());
+  if (range_noise_ > 0.0 || dropout_prob_ > 0.0) AddNoise(in, &out->ranges);
+}
+
+void Lidar2dSensor::AddNoise(const SenseInput& in, std::vector<double>* ranges) const {
+  constexpr std::uint64_t kLidarStream = 1;  // apart from the person sensor's draws (stream 0)
+  for (size_t k = 0; k < ranges->size(); ++k) {
+    Rng rng = NoiseRng(in, k, kLidarStream);
+    double& r = (*ranges)[k];
+    if (dropout_prob_ > 0.0 && rng.Uniform() < dropout_prob_) {
+      r = max_range_;
+    } else if (range_noise_ > 0.0 && r < max_range_) {
+      r = std::clamp(r + range_noise_ * rng.Normal(), 0.0, max_range_);
+    }
+  }
 }
 
 }  // namespace crowdsim::lidar2d

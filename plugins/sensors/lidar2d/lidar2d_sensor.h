@@ -25,11 +25,17 @@ class Lidar2dSensor final : public Sensor {
  private:
   std::vector<double> angles_;
   std::vector<Vec2> directions_;  // (cos, sin) of each beam angle, rotated by the heading
+  /// Range noise and dropouts, drawn from the episode's noise seed, the step and the beam.
+  void AddNoise(const SenseInput& in, std::vector<double>* ranges) const;
+
   double max_range_;
   bool see_humans_;
+  double range_noise_;   // m, standard deviation; 0: exact
+  double dropout_prob_;  // per beam and step
 };
 
-/// The parameters lidar2d declares (beams, fov_deg, max_range, see_humans).
+/// The parameters lidar2d declares (beams, fov_deg, max_range, see_humans, range_noise,
+/// dropout_prob).
 ParamSchema Schema();
 
 }  // namespace crowdsim::lidar2d

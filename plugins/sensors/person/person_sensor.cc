@@ -172,8 +172,7 @@ void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
     PersonObservation seen = observe(in.humans[i]);
     if (noisy) {
       // One stream per (episode, step, human): the same draws on any thread and in a lookahead.
-      Rng rng(SplitMix64(in.noise_seed ^ SplitMix64((static_cast<std::uint64_t>(in.step) << 24) ^
-                                                    static_cast<std::uint64_t>(i))));
+      Rng rng = NoiseRng(in, i);
       if (rng.Uniform() >= detection_prob_) continue;  // missed this step
       if (position_noise_ > 0.0) {
         const Vec2 noise(rng.Normal(), rng.Normal());

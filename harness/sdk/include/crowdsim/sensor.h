@@ -7,6 +7,7 @@
 #include "crowdsim/agent_state.h"
 #include "crowdsim/export.h"
 #include "crowdsim/observation.h"
+#include "crowdsim/rng.h"
 
 namespace crowdsim {
 
@@ -23,6 +24,13 @@ struct CROWDSIM_SDK_API SenseInput {
   std::uint64_t noise_seed = 0;
   int step = 0;  ///< the step sensed (a lookahead senses the next one)
 };
+
+/// The noise of `item` (a person, a beam) at this reading's step: stateless, so the same draws on
+/// any thread and in a lookahead of that step. `stream` keeps sensors' draws apart (person: 0).
+inline Rng NoiseRng(const SenseInput& in, std::uint64_t item, std::uint64_t stream = 0) {
+  return Rng(SplitMix64(in.noise_seed ^ SplitMix64((static_cast<std::uint64_t>(in.step) << 24) ^
+                                                   item ^ (stream << 56))));
+}
 
 class CROWDSIM_SDK_API Sensor {
  public:
