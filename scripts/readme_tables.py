@@ -20,8 +20,8 @@ BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact)?) begin 
 # The pages that hold blocks, and the suites whose full table one of them must hold.
 PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
 REQUIRED = ["table1", "table1_3obs", "table2", "table1_route", "table2_route", "human_models",
-            "kinematics"]
-INFO = ["line", "model", "humans.policy", "kinematics", "sensor(s)", "# of obstacles", "humans", "floor plan", "seed",
+            "kinematics", "perception"]
+INFO = ["line", "model", "humans.policy", "kinematics", "perception", "sensor(s)", "# of obstacles", "humans", "floor plan", "seed",
         "weights", "procedure"]
 # The paper's column names where they need a word more out of the paper's context.
 HEADER = {"# of obstacles": "trained with # obstacles", "humans": "trained with humans",
