@@ -70,6 +70,12 @@ ReplayedEpisode ReplayForFigure(const Suite& suite, size_t row, int episode,
     RowInstance instance(suite.rows[row], registry);
     const EpisodeAgents& agents = instance.Agents(out.scenario.humans.size());
     out.sensors = TakeSensorSnapshot(out.scenario, out.result, *sensors_at, agents.sensors);
+    // The person sensors' field of view and range, drawn as a sector.
+    for (const PluginUse& use : suite.rows[row].sensors) {
+      const bool person = use.loaded && std::string(use.loaded->descriptor->name) == "person";
+      out.sensors->fov_deg.push_back(person ? use.params.GetDouble("fov_deg") : 360.0);
+      out.sensors->range.push_back(person ? use.params.GetDouble("max_range") : 0.0);
+    }
   }
   return out;
 }

@@ -2,19 +2,35 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "crowdsim/render/palette.h"
 
 namespace crowdsim::render {
 namespace {
 
-// The humans' and the robot's discs at the snapshot's step.
+// Whether a person reading lies near human `h` (within its radius and half a metre, which
+// position noise of up to ~0.15 m keeps): people without one are unseen at this step.
+bool Detected(const SensorSnapshot& s, const AgentState& h) {
+  bool any_person_sensor = false;
+  for (const SensorReading& r : s.readings) {
+    if (r.ranges.empty() && r.values.empty()) any_person_sensor = true;
+    for (const PersonObservation& p : r.people) {
+      const Vec2 world = s.robot.position + s.frame.VectorToWorld(p.position);
+      if ((world - h.position).norm() <= h.radius + 0.5) return true;
+    }
+  }
+  return !any_person_sensor;  // without a person sensor nobody is greyed
+}
+
+// The humans' and the robot's discs at the snapshot's step; the unseen ones grey.
 void DrawSensedAgents(Drawing* d, const View& v, const SensorSnapshot& s,
                       const Color& robot_color) {
   for (size_t i = 0; i < s.humans.size(); ++i) {
+    const Color c =
+        Detected(s, s.humans[i]) ? palette::Human(static_cast<int>(i)) : palette::kUnseen;
     d->AddCircle("sensed human", v.ToCanvas(s.humans[i].position), v.Length(s.humans[i].radius),
-                 Filled(palette::Human(static_cast<int>(i)).WithAlpha(0.15),
-                        palette::Human(static_cast<int>(i)), 1.0));
+                 Filled(c.WithAlpha(0.15), c, 1.0));
   }
   d->AddCircle("sensed robot", v.ToCanvas(s.robot.position), v.Length(s.robot.radius),
                Filled(robot_color.WithAlpha(0.25), robot_color, 1.4));
@@ -51,10 +67,30 @@ void DrawPeople(Drawing* d, const View& v, const SensorSnapshot& s) {
   }
 }
 
+// A person sensor's field of view narrower than all around: a sector on the heading, as far as
+// its range (unlimited: 6 m).
+void DrawFieldOfView(Drawing* d, const View& v, const SensorSnapshot& s) {
+  for (size_t k = 0; k < s.fov_deg.size(); ++k) {
+    if (s.fov_deg[k] >= 360.0) continue;
+    const double half = s.fov_deg[k] * std::numbers::pi / 360.0;
+    const double reach = k < s.range.size() && s.range[k] > 0.0 ? s.range[k] : 6.0;
+    std::vector<Vec2> sector = {v.ToCanvas(s.robot.position)};
+    constexpr int kArc = 24;
+    for (int i = 0; i <= kArc; ++i) {
+      const double a = s.frame.heading - half + 2.0 * half * i / kArc;
+      sector.push_back(v.ToCanvas(s.robot.position + reach * Vec2(std::cos(a), std::sin(a))));
+    }
+    d->AddPolygon("field-of-view", sector,
+                  Filled(palette::kPersonReading.WithAlpha(0.07),
+                         palette::kPersonReading.WithAlpha(0.5), 0.8));
+  }
+}
+
 }  // namespace
 
 void DrawSensorSnapshot(Drawing* d, const View& v, const SensorSnapshot& s,
                         const Color& robot_color) {
+  DrawFieldOfView(d, v, s);
   DrawSensedAgents(d, v, s, robot_color);
   DrawBeams(d, v, s);
   DrawPeople(d, v, s);

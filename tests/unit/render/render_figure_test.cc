@@ -189,6 +189,43 @@ TEST(EpisodeFigure, SensorSnapshotDrawsBeamsHitsAndPeople) {
   EXPECT_EQ(DrawEpisodeFrame(fig, 3).Count("beam"), 0);
 }
 
+// A person sensor that sees everybody (true positions) or nobody.
+class AllOrNobody final : public Sensor {
+ public:
+  explicit AllOrNobody(bool all) : all_(all) {}
+  void Sense(const SenseInput& in, SensorReading* out) const override {
+    out->people.clear();
+    if (!all_) return;
+    for (const AgentState& h : in.humans)
+      out->people.push_back({in.frame.PointToLocal(h.position), Vec2::Zero(), h.radius});
+  }
+
+ private:
+  bool all_;
+};
+
+TEST(EpisodeFigure, APersonSensorsFieldOfViewIsDrawnAndUnseenPeopleAreGrey) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  const auto grey_humans = [&](bool all, double fov) {
+    AllOrNobody sensor(all);
+    const std::vector<MountedSensor> sensors = {{"person", &sensor}};
+    EpisodeFigure fig = Figure(sc, r);
+    fig.sensors = TakeSensorSnapshot(sc, r, 8, sensors);
+    fig.sensors->fov_deg = {fov};
+    fig.sensors->range = {0.0};
+    const Drawing d = DrawEpisode(fig);
+    EXPECT_EQ(d.Count("field-of-view"), fov < 360.0 ? 1 : 0);
+    int grey = 0;
+    for (const DrawItem& it : d.items) {
+      if (it.cls == "sensed human" && *it.style.stroke == palette::kUnseen) ++grey;
+    }
+    return grey;
+  };
+  EXPECT_EQ(grey_humans(false, 90.0), 2);  // nobody detected: both grey
+  EXPECT_EQ(grey_humans(true, 360.0), 0);  // everybody detected
+}
+
 // A sensor reporting other features (as the route sensor does: distance, waypoint x, y).
 struct ValuesSensor : Sensor {
   void Sense(const SenseInput&, SensorReading* out) const override {

@@ -17,6 +17,10 @@ struct SensorSnapshot {
   Frame frame;        ///< the sensor frame the readings are relative to
   std::vector<AgentState> humans;
   std::vector<SensorReading> readings;  ///< one per mounted sensor, in order
+  /// Per reading: the person sensor's field of view in degrees (360: all around; filled from the
+  /// row's parameters by the caller), and its range (m, 0: unlimited).
+  std::vector<double> fov_deg;
+  std::vector<double> range;
 };
 
 /// Re-senses frame `step` of a recorded episode with `sensors` (a fresh CollisionWorld of the
