@@ -31,8 +31,18 @@ out="runs/${name}_check"
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 "$bin" run "$suite" --out "$out" --fresh --jobs "$jobs" --quiet > /dev/null 2> "$log" || { cat "$log" >&2; exit 1; }
-# decision_time_us is column 12 of episodes.csv: a wall-time measurement, never reproduced.
-strip() { cut -d, -f1-11,13- "$1"; }
+# decision_time_us, a wall-time measurement, is never reproduced. Parsed as CSV: a swept row's
+# label may hold commas inside its quotes ("orca/kinematics={model: unicycle, accel_max: 1}").
+strip() {
+  python3 -c 'import csv, sys
+rows = csv.reader(open(sys.argv[1], newline=""))
+out = csv.writer(sys.stdout, lineterminator="\n")
+head = next(rows)
+skip = head.index("decision_time_us")
+out.writerow(head[:skip] + head[skip + 1:])
+for row in rows:
+    out.writerow(row[:skip] + row[skip + 1:])' "$1"
+}
 if diff <(strip "$reference") <(strip "$out/episodes.csv") > "$out/differences.txt"; then
   echo "$suite: all $(($(wc -l < "$reference") - 1)) episodes identical to $reference"
 else
