@@ -70,6 +70,8 @@ py::list Rows(const RunSummary& s) {
 /// columns of a line's identity (row, episode, seed, layout) are not the outcome's.
 template <typename T>
 void AddOutcomeValue(py::dict&, const char*, const EpisodeOutcome&, T EpisodeLine::*) {}
+/// Social metrics are a suite run's (`columns:`), not computed for a stepped Env.
+void AddOutcomeValue(py::dict&, const char*, const EpisodeOutcome&, double SocialMetrics::*) {}
 template <typename T>
 void AddOutcomeValue(py::dict& d, const char* name, const EpisodeOutcome& r,
                      T EpisodeOutcome::*member) {

@@ -14,7 +14,7 @@
 // neighbour index, the robot's observation, the collision test, rewards and records (and the
 // recorders' replay). BM_CrowdNavEpisode plays the row's own policies, no recorder between. (Timing
 // a part by doing it twice per step underestimates it: the second call repeats the first's branches
-// and finds its data in cache.)
+// and finds its data in cache.) BM_CrowdNavEpisodeSocialMetrics adds the social navigation metrics.
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -22,6 +22,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "crowdsim/bench/play_episode.h"
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/bench/suite.h"
@@ -95,12 +96,12 @@ class CrowdNavTask {
   const EpisodeResult& Recorded(int k) const { return recorded_[static_cast<size_t>(k)]; }
 
   /// Episode k as a suite run plays it: the row's own policies, nothing between them and the
-  /// episode.
-  EpisodeResult PlayPlain(int k) {
+  /// episode; with the social metrics when `social`.
+  EpisodeOutcome PlayPlain(int k, bool social) {
     const RowSpec& row = suite().rows.at(0);
     const Scenario scenario = world_->Make(MakeEpisodeRequest(suite(), row, *world_, k));
     Episode episode(scenario, suite().sim, plain_agents_);
-    return episode.Run();
+    return PlayEpisode(episode, social);
   }
 
   /// Episode k with every policy behind its recorder, the decisions of `replayed` played back.
@@ -127,8 +128,9 @@ class CrowdNavTask {
   std::vector<EpisodeResult> recorded_;
 };
 
-// `replayed` empty: the plain episodes, as `crowdsim-bench run` plays them.
-void TimeEpisodes(benchmark::State& state, std::optional<Replayed> replayed) {
+// `replayed` empty: the plain episodes, as `crowdsim-bench run` plays them (with the social
+// metrics when `social`).
+void TimeEpisodes(benchmark::State& state, std::optional<Replayed> replayed, bool social = false) {
   static CrowdNavTask* task = nullptr;  // recorded once for every variant
   try {
     if (task == nullptr) task = new CrowdNavTask();
@@ -139,7 +141,7 @@ void TimeEpisodes(benchmark::State& state, std::optional<Replayed> replayed) {
   int k = 0;
   std::int64_t steps = 0, successes = 0;
   for (auto _ : state) {
-    const EpisodeResult result = replayed ? task->Play(k, *replayed) : task->PlayPlain(k);
+    const EpisodeOutcome result = replayed ? task->Play(k, *replayed) : task->PlayPlain(k, social);
     // A replay must be the recorded episode; anything else would time another workload.
     if (result.steps != task->Recorded(k).steps || result.status != task->Recorded(k).status) {
       state.SkipWithError("a replayed episode differs from the recorded one");
@@ -157,6 +159,12 @@ void TimeEpisodes(benchmark::State& state, std::optional<Replayed> replayed) {
 }
 void BM_CrowdNavEpisode(benchmark::State& state) { TimeEpisodes(state, std::nullopt); }
 BENCHMARK(BM_CrowdNavEpisode)->Unit(benchmark::kMicrosecond);
+
+// The same episodes with every social navigation metric computed (issue 47: within 10%).
+void BM_CrowdNavEpisodeSocialMetrics(benchmark::State& state) {
+  TimeEpisodes(state, std::nullopt, true);
+}
+BENCHMARK(BM_CrowdNavEpisodeSocialMetrics)->Unit(benchmark::kMicrosecond);
 
 void BM_CrowdNavEpisodeReplaying(benchmark::State& state, Replayed replayed) {
   TimeEpisodes(state, replayed);

@@ -1,9 +1,10 @@
 // The route sensor on the hard floor plan (worlds/gibson/hard.yaml): a reading with its field
 // cached (what a value policy pays per lookahead candidate) and a reading that builds the field
-// (once per episode: a new goal).
+// (once per episode: a new goal); the path-efficiency metric's shortest path (a field each).
 #include <benchmark/benchmark.h>
 
 #include "crowdsim/bench/plugin_registry.h"
+#include "crowdsim/bench/social_metrics.h"
 #include "crowdsim/collision_world.h"
 #include "crowdsim/world_file.h"
 #include "test_paths.h"
@@ -70,6 +71,21 @@ void BM_RouteFieldBuild_Hard(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_RouteFieldBuild_Hard)->Unit(benchmark::kMillisecond);
+
+// The path-efficiency metric's shortest free path of a test trip: a field per episode.
+void BM_ShortestFreePath_Hard(benchmark::State& state) {
+  const HardPlan& plan = Plan();
+  const auto& trips = plan.file.test_pairs;
+  size_t k = 0;
+  for (auto _ : state) {
+    AgentState robot;
+    robot.position = trips[k].start;
+    robot.goal = trips[k].goal;
+    benchmark::DoNotOptimize(ShortestFreePath(plan.world.map(), robot));
+    k = (k + 1) % trips.size();
+  }
+}
+BENCHMARK(BM_ShortestFreePath_Hard)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace crowdsim

@@ -307,7 +307,7 @@ TEST_F(RunSuiteTest, StoredEpisodesARerunCannotUseAreSetAsideNotLost) {
   for (std::string line; std::getline(lines, line);) {
     if (line.starts_with("linear,")) linear_lines += line + "\n";
   }
-  EXPECT_EQ(ReadText(dropped), EpisodeCsvHeader() + "\n" + linear_lines);
+  EXPECT_EQ(ReadText(dropped), EpisodeCsvHeader(false) + "\n" + linear_lines);
   EXPECT_EQ(ReadText(csv).find("\nlinear,"), std::string::npos);
 
   // A line whose seed is not the one the suite gives its episode (edited, or from another run):

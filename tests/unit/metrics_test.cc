@@ -136,8 +136,8 @@ TEST(EpisodesCsv, RoundTripAndDamagedLastLine) {
   b.row = "plain";
   b.outcome = Rec(EpisodeStatus::kPolicyError, 1.0, 4, 0);
   b.outcome.error = "message with \"quotes\", commas";
-  const std::string text = EpisodeCsvHeader() + "\n" + FormatEpisodeLine(a) + "\n" +
-                           FormatEpisodeLine(b) + "\nplain,4,1,x,succ";
+  const std::string text = EpisodeCsvHeader(false) + "\n" + FormatEpisodeLine(a, false) + "\n" +
+                           FormatEpisodeLine(b, false) + "\nplain,4,1,x,succ";
   const auto file = dir.Write("episodes.csv", text);
   const auto lines = ReadEpisodesCsv(file);
   ASSERT_EQ(lines.size(), 2u);
@@ -164,9 +164,9 @@ EpisodeLine SomeLine(int episode) {
 // line that stays right as columns are added.
 std::string Damaged(int episode, size_t index, const std::string& value) {
   std::vector<std::string> fields;
-  std::stringstream ss(FormatEpisodeLine(SomeLine(episode)));
+  std::stringstream ss(FormatEpisodeLine(SomeLine(episode), false));
   for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
-  if (FormatEpisodeLine(SomeLine(episode)).back() == ',') fields.push_back("");
+  if (FormatEpisodeLine(SomeLine(episode), false).back() == ',') fields.push_back("");
   fields.at(index) = value;
   std::string line;
   for (size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + fields[i];
@@ -185,8 +185,9 @@ std::string ReadError(const std::filesystem::path& file) {
 
 TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
   testing::TempDir dir;
-  const std::string text = EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) + "\n" +
-                           Damaged(2, 1, "two") + "\n" + FormatEpisodeLine(SomeLine(1)) + "\n" +
+  const std::string text = EpisodeCsvHeader(false) + "\n" + FormatEpisodeLine(SomeLine(0), false) +
+                           "\n" + Damaged(2, 1, "two") + "\n" +
+                           FormatEpisodeLine(SomeLine(1), false) + "\n" +
                            Damaged(3, 4, "teleported") + "\n" + "plain,4,42,x,succ";
   const auto file = dir.Write("episodes.csv", text);
   const EpisodesCsvRead read = ReadEpisodesCsvChecked(file);
@@ -198,9 +199,9 @@ TEST(EpisodesCsv, DamagedLinesAreCountedAndTheFirstIsNamedWithItsLine) {
   EXPECT_EQ(ReadEpisodesCsv(file).size(), 2u);
 
   // Whole-field numbers only (std::stoi read "4x" as 4), and the field count.
-  const auto partial =
-      dir.Write("partial.csv", EpisodeCsvHeader() + "\n" + FormatEpisodeLine(SomeLine(0)) + "\n" +
-                                   Damaged(4, 1, "4x") + "\nplain,5\n");
+  const auto partial = dir.Write("partial.csv", EpisodeCsvHeader(false) + "\n" +
+                                                    FormatEpisodeLine(SomeLine(0), false) + "\n" +
+                                                    Damaged(4, 1, "4x") + "\nplain,5\n");
   const EpisodesCsvRead p = ReadEpisodesCsvChecked(partial);
   EXPECT_EQ(p.lines.size(), 1u);
   EXPECT_EQ(p.damaged, 2);
@@ -220,20 +221,21 @@ TEST(EpisodesCsv, AFileWithoutItsHeaderOrAReadableLineIsAnErrorNamingFileLineAnd
   msg = ReadError(dir.Write("empty.csv", ""));
   EXPECT_NE(msg.find("empty.csv:1: the first line is empty"), std::string::npos) << msg;
 
-  const auto unreadable = dir.Write(
-      "unreadable.csv", EpisodeCsvHeader() + "\nnot,an,episode\n\n" + Damaged(1, 6, "2.5") + "\n");
+  const auto unreadable =
+      dir.Write("unreadable.csv",
+                EpisodeCsvHeader(false) + "\nnot,an,episode\n\n" + Damaged(1, 6, "2.5") + "\n");
   msg = ReadError(unreadable);
   EXPECT_NE(
       msg.find(unreadable.string() + ": none of its 2 episode line(s) can be read (the first: " +
                unreadable.string() + ":2: it has 3 field(s), expected " +
-               std::to_string(std::size(kEpisodeColumns)) + ")"),
+               std::to_string(EpisodeColumnsOf(false).size()) + ")"),
       std::string::npos)
       << msg;
   EXPECT_NE(msg.find("--fresh"), std::string::npos) << msg;
 
   // No episode yet, or only the line a crash cut short: nothing to read, nothing wrong.
-  EXPECT_EQ(ReadError(dir.Write("header.csv", EpisodeCsvHeader() + "\n")), "");
-  const auto cut = dir.Write("cut.csv", EpisodeCsvHeader() + "\nplain,0,42,rect,succ");
+  EXPECT_EQ(ReadError(dir.Write("header.csv", EpisodeCsvHeader(false) + "\n")), "");
+  const auto cut = dir.Write("cut.csv", EpisodeCsvHeader(false) + "\nplain,0,42,rect,succ");
   EXPECT_EQ(ReadError(cut), "");
   EXPECT_TRUE(ReadEpisodesCsvChecked(cut).cut_last_line);
 }

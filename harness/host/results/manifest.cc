@@ -69,7 +69,7 @@ Json PluginJson(const PluginUse& u) {
 Json IntervalJson(const Interval& i) { return Json::array({Number(i.low), Number(i.high)}); }
 
 /// Adds a table line's info, metrics (with 95% intervals) and reference to its manifest object.
-void AddLineTail(const TableRow& line, Json* j) {
+void AddLineTail(const TableRow& line, bool social, Json* j) {
   Json info = Json::object();
   for (const auto& [key, value] : line.Info()) info[key] = value;
   (*j)["info"] = std::move(info);
@@ -90,7 +90,8 @@ void AddLineTail(const TableRow& line, Json* j) {
     metrics[key] = Number(m.*field);
   }
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (c.mean != RowMean::kNone) metrics[c.name] = Number(m.*c.row_mean);
+    if (c.mean != RowMean::kNone && (social || !Social(c)))
+      metrics[c.name] = Number(RowMeanField(m, c));
   }
   metrics["success_rate_95"] = IntervalJson(WilsonInterval95(m.successes, m.episodes));
   metrics["collision_rate_95"] = IntervalJson(WilsonInterval95(m.collisions, m.episodes));
@@ -119,7 +120,7 @@ Json SimJson(const SimConfig& sim) {
   return j;
 }
 
-Json RowJson(const TableRow& line, const RunFacts& facts) {
+Json RowJson(const TableRow& line, bool social, const RunFacts& facts) {
   const RowSpec& r = *line.spec;
   Json j;
   j["label"] = r.label;
@@ -133,7 +134,7 @@ Json RowJson(const TableRow& line, const RunFacts& facts) {
   j["humans"] = {{"count", r.humans.count},
                  {"goal_mode", r.humans.goal_mode == HumanGoalMode::kStay ? "stay" : "new_goal"},
                  {"policy", PluginJson(r.humans.policy)}};
-  AddLineTail(line, &j);
+  AddLineTail(line, social, &j);
   return j;
 }
 
@@ -175,12 +176,12 @@ std::string FormatManifestJson(const Suite& suite, const std::vector<TableRow>& 
   Json row_lines = Json::array(), summary_lines = Json::array();
   for (const TableRow& line : rows) {
     if (line.spec) {
-      row_lines.push_back(RowJson(line, facts));
+      row_lines.push_back(RowJson(line, suite.social_metrics, facts));
     } else {
       Json s;
       s["label"] = line.summary->label;
       s["rows"] = line.summary->rows;
-      AddLineTail(line, &s);
+      AddLineTail(line, suite.social_metrics, &s);
       summary_lines.push_back(std::move(s));
     }
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "crowdsim/bench/episode_columns.h"
 
@@ -11,11 +12,13 @@ namespace {
 
 /// A column's row mean (kEpisodeColumns) over the episodes, in episode order.
 double RowMeanOf(const EpisodeColumn& c, std::span<const EpisodeOutcome> episodes) {
-  const auto member = std::get<double EpisodeOutcome::*>(c.field);
+  const bool social = Social(c);
+  const auto social_member = social ? std::get<double SocialMetrics::*>(c.field) : nullptr;
+  const auto member = social ? nullptr : std::get<double EpisodeOutcome::*>(c.field);
   double sum = 0.0;
   int count = 0;
   for (const EpisodeOutcome& e : episodes) {
-    const double x = e.*member;
+    const double x = social ? e.social.*social_member : e.*member;
     const bool counted = c.mean == RowMean::kAll ||
                          (c.mean == RowMean::kSuccesses && e.status == EpisodeStatus::kSuccess) ||
                          (c.mean == RowMean::kFinite && std::isfinite(x));
@@ -23,10 +26,19 @@ double RowMeanOf(const EpisodeColumn& c, std::span<const EpisodeOutcome> episode
     sum += x;
     ++count;
   }
-  return count > 0 ? sum / count : 0.0;
+  if (count == 0) return c.empty_is_nan ? std::numeric_limits<double>::quiet_NaN() : 0.0;
+  return sum / count;
 }
 
 }  // namespace
+
+double& RowMeanField(RowMetrics& m, const EpisodeColumn& c) {
+  return Social(c) ? m.social.*std::get<double SocialMetrics::*>(c.field) : m.*c.row_mean;
+}
+
+double RowMeanField(const RowMetrics& m, const EpisodeColumn& c) {
+  return Social(c) ? m.social.*std::get<double SocialMetrics::*>(c.field) : m.*c.row_mean;
+}
 
 RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit) {
   RowMetrics m;
@@ -76,7 +88,7 @@ RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit
   m.nav_time = success > 0 ? nav_time / success : time_limit;
   m.danger_frequency = steps > 0 ? static_cast<double>(danger) / static_cast<double>(steps) : 0.0;
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (c.mean != RowMean::kNone) m.*c.row_mean = RowMeanOf(c, episodes);
+    if (c.mean != RowMean::kNone) RowMeanField(m, c) = RowMeanOf(c, episodes);
   }
   m.successes = success;
   m.collisions = coll_h + coll_o;
@@ -104,6 +116,9 @@ RowMetrics SummarizeRows(std::span<const RowMetrics> rows) {
   RowMetrics m;
   if (rows.empty()) return m;
   const double k = static_cast<double>(rows.size());
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (c.mean != RowMean::kNone) RowMeanField(m, c) = 0.0;
+  }
   double se_sq = 0.0;
   bool se_known = true;
   for (const RowMetrics& r : rows) {
@@ -119,7 +134,7 @@ RowMetrics SummarizeRows(std::span<const RowMetrics> rows) {
       m.*field += r.*field / k;
     }
     for (const EpisodeColumn& c : kEpisodeColumns) {
-      if (c.mean != RowMean::kNone) m.*c.row_mean += r.*c.row_mean / k;
+      if (c.mean != RowMean::kNone) RowMeanField(m, c) += RowMeanField(r, c) / k;
     }
     se_known = se_known && std::isfinite(r.nav_time_se);
     se_sq += r.nav_time_se * r.nav_time_se;

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <string_view>
 #include <type_traits>
@@ -161,8 +162,17 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
   cols.push_back(metric("coll. human", &RowMetrics::collision_human_rate, 4));
   cols.push_back(metric("coll. obstacle", &RowMetrics::collision_obstacle_rate, 4));
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (c.mean != RowMean::kNone)
+    if (c.mean != RowMean::kNone && !Social(c))
       cols.push_back(metric(c.table_header, c.row_mean, c.table_decimals));
+  }
+  // Social metrics: those the suite names in table.md, all of them in table.csv.
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (!Social(c) || !suite.social_metrics) continue;
+    const auto& named = suite.metric_columns;
+    if (!with_uncertainty && std::find(named.begin(), named.end(), c.name) == named.end()) continue;
+    cols.push_back({c.table_header, [&c](const TableRow& r) {
+                      return Fixed(RowMeanField(r.metrics, c), c.table_decimals);
+                    }});
   }
   cols.push_back(
       {"errors", [](const TableRow& r) { return Fixed(r.metrics.policy_error_rate, 4); }});
@@ -210,11 +220,24 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
 
 }  // namespace
 
-std::string EpisodeCsvHeader() {
-  std::string header;
+bool IsSocialMetric(std::string_view name) {
+  return std::any_of(std::begin(kEpisodeColumns), std::end(kEpisodeColumns),
+                     [&](const EpisodeColumn& c) { return Social(c) && c.name == name; });
+}
+
+std::vector<const EpisodeColumn*> EpisodeColumnsOf(bool social) {
+  std::vector<const EpisodeColumn*> columns;
   for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (social || !Social(c)) columns.push_back(&c);
+  }
+  return columns;
+}
+
+std::string EpisodeCsvHeader(bool social) {
+  std::string header;
+  for (const EpisodeColumn* c : EpisodeColumnsOf(social)) {
     if (!header.empty()) header += ',';
-    header += c.name;
+    header += c->name;
   }
   return header;
 }
@@ -240,11 +263,11 @@ std::string FormatCell(const EpisodeColumn& c, const EpisodeLine& e) {
 
 }  // namespace
 
-std::string FormatEpisodeLine(const EpisodeLine& e) {
+std::string FormatEpisodeLine(const EpisodeLine& e, bool social) {
   std::string line;
-  for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (&c != kEpisodeColumns) line += ',';
-    line += FormatCell(c, e);
+  for (const EpisodeColumn* c : EpisodeColumnsOf(social)) {
+    if (c != kEpisodeColumns) line += ',';
+    line += FormatCell(*c, e);
   }
   return line;
 }
@@ -255,9 +278,13 @@ std::string WithoutTimingColumns(const std::string& episodes_csv) {
   while (std::getline(in, line)) {
     const std::vector<std::string> fields = SplitCsvLine(line);
     bool first = true;
+    // A line of neither width keeps every field (it differs anyway).
+    const auto base = EpisodeColumnsOf(false), all = EpisodeColumnsOf(true);
+    const auto* columns = fields.size() == base.size()  ? &base
+                          : fields.size() == all.size() ? &all
+                                                        : nullptr;
     for (size_t k = 0; k < fields.size(); ++k) {
-      // A line of another width keeps every field (it differs anyway).
-      if (fields.size() == std::size(kEpisodeColumns) && kEpisodeColumns[k].timing) continue;
+      if (columns && (*columns)[k]->timing) continue;
       if (!first) out += ',';
       out += CsvField(fields[k]);
       first = false;
@@ -309,8 +336,8 @@ std::string ParseCell(const EpisodeColumn& c, const std::string& text, EpisodeLi
           v = ParseStatus(text);
           return v == EpisodeStatus::kRunning ? EndStatusNames() : "";
         } else if constexpr (std::is_same_v<T, double>) {
-          if (text.empty() && c.empty_is_infinity) {
-            v = kInfinity;
+          if (text.empty() && (c.empty_is_infinity || c.empty_is_nan)) {
+            v = c.empty_is_nan ? std::numeric_limits<double>::quiet_NaN() : kInfinity;
             return "";
           }
           // The writer leaves a non-finite value empty: "nan" or "inf" is no line of ours.
@@ -326,16 +353,16 @@ std::string ParseCell(const EpisodeColumn& c, const std::string& text, EpisodeLi
 
 }  // namespace
 
-std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e) {
-  const size_t n = std::size(kEpisodeColumns);
+std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e, bool social) {
+  const auto columns = EpisodeColumnsOf(social);
+  const size_t n = columns.size();
   if (v.size() != n) {
     return "it has " + std::to_string(v.size()) + " field(s), expected " + std::to_string(n);
   }
   for (size_t k = 0; k < n; ++k) {
-    const std::string expected = ParseCell(kEpisodeColumns[k], v[k], e);
+    const std::string expected = ParseCell(*columns[k], v[k], e);
     if (!expected.empty())
-      return "its " + std::string(kEpisodeColumns[k].name) + " " + Quote(v[k]) + " is not " +
-             expected;
+      return "its " + std::string(columns[k]->name) + " " + Quote(v[k]) + " is not " + expected;
   }
   return "";
 }
@@ -347,12 +374,14 @@ EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
   std::string line;
   if (!std::getline(f, line)) line.clear();
   if (!line.empty() && line.back() == '\r') line.pop_back();
-  if (line != EpisodeCsvHeader()) {
+  // A suite with social metrics writes their columns too.
+  read.social = line == EpisodeCsvHeader(true);
+  if (line != EpisodeCsvHeader(false) && !read.social) {
     throw std::runtime_error(
         path.string() +
         ":1: " + (line.empty() ? "the first line is empty" : "the header is " + Quote(line)) +
-        ", expected '" + EpisodeCsvHeader() +
-        "': this is not an episodes.csv written by "
+        ", expected '" + EpisodeCsvHeader(false) +
+        "' (or with the social metrics' columns): this is not an episodes.csv written by "
         "`crowdsim-bench run`; " +
         kEpisodesCsvFix);
   }
@@ -367,7 +396,7 @@ EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
     if (line.empty() || line == "\r") continue;
     ++episode_lines;
     EpisodeLine e;
-    const std::string why = ParseEpisodeFields(SplitCsvLine(line), &e);
+    const std::string why = ParseEpisodeFields(SplitCsvLine(line), &e, read.social);
     if (why.empty()) {
       read.lines.push_back(std::move(e));
     } else {

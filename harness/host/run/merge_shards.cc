@@ -318,8 +318,9 @@ RunSummary MergeShards(const std::vector<fs::path>& shard_dirs, const fs::path& 
   std::string refused;
   const auto lock = ClaimOutputFolder(out_dir, "a suite run", &refused);
   if (!lock) throw RunRefused(refused);
-  std::string text = EpisodeCsvHeader() + "\n";
-  for (const auto& [key, value] : lines) text += FormatEpisodeLine(value.first) + "\n";
+  std::string text = EpisodeCsvHeader(suite.social_metrics) + "\n";
+  for (const auto& [key, value] : lines)
+    text += FormatEpisodeLine(value.first, suite.social_metrics) + "\n";
   // The manifest first: a merge cut short between the two writes is still seen as a merge.
   WriteFileAtomically(out_dir / "manifest.json",
                       FormatJson(nlohmann::ordered_json{{"config_hash", hash}, {"merged", true}}));

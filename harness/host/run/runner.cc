@@ -143,9 +143,9 @@ std::vector<SuiteRow> PreflightRows(const Suite& suite, PluginRegistry& registry
   return rows;
 }
 
-std::string EpisodesCsvText(const std::vector<const EpisodeLine*>& lines) {
-  std::string text = EpisodeCsvHeader() + "\n";
-  for (const EpisodeLine* line : lines) text += FormatEpisodeLine(*line) + "\n";
+std::string EpisodesCsvText(const std::vector<const EpisodeLine*>& lines, bool social) {
+  std::string text = EpisodeCsvHeader(social) + "\n";
+  for (const EpisodeLine* line : lines) text += FormatEpisodeLine(*line, social) + "\n";
   return text;
 }
 
@@ -198,14 +198,18 @@ std::vector<PolicyErrorNote> PolicyErrorNotes(const Suite& suite, const EpisodeL
 /// thread-safe.
 class EpisodeSink {
  public:
-  EpisodeSink(const fs::path& episodes_csv, std::chrono::milliseconds max_delay, Progress& progress,
-              EpisodeLines* done)
-      : path_(episodes_csv), out_(episodes_csv, max_delay), progress_(progress), done_(done) {}
+  EpisodeSink(const fs::path& episodes_csv, bool social, std::chrono::milliseconds max_delay,
+              Progress& progress, EpisodeLines* done)
+      : path_(episodes_csv),
+        social_(social),
+        out_(episodes_csv, max_delay),
+        progress_(progress),
+        done_(done) {}
 
   /// False when the append fails (full disk, lost mount), the cause in *why; written lines stay,
   /// and resume skips a cut last line.
   bool Add(EpisodeLine line, std::string* why) {
-    if (!out_.Append(FormatEpisodeLine(line), why)) return false;
+    if (!out_.Append(FormatEpisodeLine(line, social_), why)) return false;
     progress_.Episode(line.outcome.status == EpisodeStatus::kSuccess);
     (*done_)[{line.row, line.episode}] = std::move(line);
     return true;
@@ -225,6 +229,7 @@ class EpisodeSink {
 
  private:
   fs::path path_;
+  bool social_;
   EpisodeAppender out_;
   Progress& progress_;
   EpisodeLines* done_;
@@ -403,7 +408,8 @@ void WriteShardFiles(const Suite& suite, const RunScope& scope, const EpisodeLin
       if (scope.Covers(r, k)) lines.push_back(&done.at({suite.rows[r].label, k}));
     }
   }
-  WriteFileAtomically(summary->out_dir / "episodes.csv", EpisodesCsvText(lines));
+  WriteFileAtomically(summary->out_dir / "episodes.csv",
+                      EpisodesCsvText(lines, suite.social_metrics));
   WriteFileAtomically(summary->out_dir / "manifest.json", FormatManifestJson(suite, {}, facts));
   summary->table_markdown = "shard " + facts.shard + " of suite " + suite.name + ": " +
                             std::to_string(summary->episodes_resumed + summary->episodes_run) +
@@ -429,7 +435,8 @@ void WriteRunFiles(const Suite& suite, const RunScope& scope, const EpisodeLines
   for (const auto& [key, line] : done) {
     if (labels.count(key.first) && key.second >= scope.episodes) lines.push_back(&line);
   }
-  WriteFileAtomically(summary->out_dir / "episodes.csv", EpisodesCsvText(lines));
+  WriteFileAtomically(summary->out_dir / "episodes.csv",
+                      EpisodesCsvText(lines, suite.social_metrics));
   AddSummaryLines(suite, &summary->rows);
   summary->table_markdown = FormatTableMarkdown(suite, summary->rows);
   WriteFileAtomically(summary->out_dir / "table.md", summary->table_markdown);
@@ -484,7 +491,8 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   // Rewrite the stored lines cleanly (drops a line cut short by a crash), then append.
   std::vector<const EpisodeLine*> stored;
   for (const auto& [key, line] : done) stored.push_back(&line);
-  WriteFileAtomically(summary.out_dir / "episodes.csv", EpisodesCsvText(stored));
+  WriteFileAtomically(summary.out_dir / "episodes.csv",
+                      EpisodesCsvText(stored, suite.social_metrics));
   WriteFileAtomically(summary.out_dir / "manifest.json", FormatManifestJson(suite, {}, facts));
   // No table until the run finishes: an older one would pass for this run's result if it is cut
   // short. Shards write none.
@@ -500,7 +508,7 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
   // Threads write lines within 200 ms (a crash loses at most that). Workers already pay a pipe
   // round trip per episode, and no thread of ours may live across fork: write at once.
   EpisodeSink sink(
-      summary.out_dir / "episodes.csv",
+      summary.out_dir / "episodes.csv", suite.social_metrics,
       facts.isolated ? std::chrono::milliseconds(0) : EpisodeAppender::kThreadedRunDelay, progress,
       &done);
   if (facts.isolated) {

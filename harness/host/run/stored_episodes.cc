@@ -126,12 +126,12 @@ void CheckShard(const ResumeTarget& target) {
 
 /// Appends `lines` and `damaged` (as read) to episodes.dropped.csv, with a header when new.
 fs::path SetAside(const fs::path& out_dir, const std::vector<const EpisodeLine*>& lines,
-                  const std::vector<std::string>& damaged) {
+                  const std::vector<std::string>& damaged, bool social) {
   const fs::path path = out_dir / "episodes.dropped.csv";
   const bool fresh = !fs::exists(path);
   std::ofstream out(path, std::ios::app);
-  if (fresh) out << EpisodeCsvHeader() << "\n";
-  for (const EpisodeLine* line : lines) out << FormatEpisodeLine(*line) << "\n";
+  if (fresh) out << EpisodeCsvHeader(social) << "\n";
+  for (const EpisodeLine* line : lines) out << FormatEpisodeLine(*line, social) << "\n";
   for (const std::string& line : damaged) out << line << "\n";
   out.flush();
   if (!out) {
@@ -202,8 +202,8 @@ EpisodeLines StoredEpisodes(const Suite& suite,
     } else if (const auto other = kept_line.find(key); other == kept_line.end()) {
       kept_line[key] = &line;
       done[key] = line;
-    } else if (WithoutTimingColumns(FormatEpisodeLine(*other->second)) ==
-               WithoutTimingColumns(FormatEpisodeLine(line))) {
+    } else if (WithoutTimingColumns(FormatEpisodeLine(*other->second, true)) ==
+               WithoutTimingColumns(FormatEpisodeLine(line, true))) {
       aside.push_back(&line);  // a second copy of the same result
       ++copies;
     } else {
@@ -226,7 +226,7 @@ EpisodeLines StoredEpisodes(const Suite& suite,
   }
   if (!aside.empty() || !stored_lines.damaged_lines.empty()) {
     // Said even by a quiet run: stored results leave episodes.csv.
-    const fs::path path = SetAside(out_dir, aside, stored_lines.damaged_lines);
+    const fs::path path = SetAside(out_dir, aside, stored_lines.damaged_lines, stored_lines.social);
     if (!stored_lines.damaged_lines.empty()) {
       std::fprintf(stderr,
                    "note: %d damaged line(s) of %s moved to %s, their episodes run again (the "

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "crowdsim/bench/play_episode.h"
 #include "crowdsim/bench/runner.h"
 #include "run/slow_episode_watch.h"
 #include "spec/config_text.h"
@@ -137,10 +138,9 @@ EpisodeLine SuiteRow::Run(RowInstance& instance, int episode) const {
   ScenarioRequest req;
   const Scenario scenario = MakeEpisodeScenario(suite_, spec(), *world_, episode, &req);
   Episode played(scenario, suite_.sim, instance.Agents(scenario.humans.size()));
-  const EpisodeResult& result = played.Run();
   line.seed = req.seed;
   line.layout = scenario.layout;
-  line.outcome = result;
+  line.outcome = PlayEpisode(played, suite_.social_metrics);
   return line;
 }
 

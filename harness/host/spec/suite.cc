@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "crowdsim/bench/episode_columns.h"
 #include "spec/config_text.h"
 #include "spec/kinematics_reader.h"
 #include "spec/row_reader.h"
@@ -305,18 +306,18 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   }
   if (const auto cols = root["columns"]) {
     if (!cols.IsSequence()) {
-      r.Error(cols, "columns", "must be a list of info column names");
+      r.Error(cols, "columns", "must be a list of info column and social metric names");
     } else {
       for (size_t i = 0; i < cols.size(); ++i) {
         const auto name = r.String(cols[i], Reader::Index("columns", i));
         if (!name) continue;
-        if (std::find(s.info_columns.begin(), s.info_columns.end(), *name) !=
-            s.info_columns.end()) {
+        auto& list = IsSocialMetric(*name) ? s.metric_columns : s.info_columns;
+        if (std::find(list.begin(), list.end(), *name) != list.end()) {
           r.Error(cols[i], Reader::Index("columns", i),
                   "'" + *name + "' is named twice; the table would show the column twice");
           continue;
         }
-        s.info_columns.push_back(*name);
+        list.push_back(*name);
       }
     }
   }
@@ -368,6 +369,8 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   std::ostringstream head;
   head << "seed=" << s.seed << "\n";
   CanonicalSim(s.sim, head);
+  s.social_metrics = !s.metric_columns.empty();
+  if (s.social_metrics) head << "social_metrics\n";  // other files; absent, old hashes hold
   s.canonical = head.str();
   for (auto& row : s.rows) {
     std::ostringstream os;

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "crowdsim/params.h"
+#include "crowdsim/route_field.h"
 #include "crowdsim/sensor.h"
-#include "route_field.h"
 
 namespace crowdsim::route {
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crowdsim/agent_index.h"
+#include "crowdsim/bench/social_metrics.h"
 #include "crowdsim/collision_world.h"
 #include "crowdsim/kinematics.h"
 #include "crowdsim/lookahead.h"
@@ -93,6 +94,7 @@ struct EpisodeOutcome {
   int humans_at_goal = 0;                 ///< humans that reached their (first) goal
   double max_speed = 0.0;                 ///< m/s; the robot's highest speed over the episode
   std::string error;                      ///< policy_error message
+  SocialMetrics social;                   ///< when the suite asks for them (docs/metrics.md)
 };
 
 /// An outcome plus what only a live episode knows: whom it hit and, when recording, the trajectory.
@@ -131,6 +133,7 @@ class Episode {
   const CollisionWorld& world() const { return world_; }
   const Scenario& scenario() const { return scenario_; }
   const SimConfig& sim() const { return sim_; }
+  const RobotKinematics& kinematics() const { return agents_.kinematics; }
   /// The robot observation the last Step() gave to the robot policy.
   const Observation& last_robot_observation() const { return robot_obs_; }
   /// The robot's observation now, without decision or lookahead (e.g. to bootstrap from). It

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -25,7 +26,7 @@ struct EpisodeLine {
 using EpisodeField =
     std::variant<std::string EpisodeLine::*, int EpisodeLine::*, std::uint64_t EpisodeLine::*,
                  EpisodeStatus EpisodeOutcome::*, int EpisodeOutcome::*, double EpisodeOutcome::*,
-                 std::string EpisodeOutcome::*>;
+                 std::string EpisodeOutcome::*, double SocialMetrics::*>;
 
 /// The member a column names: in a line's identity or its outcome.
 template <typename T>
@@ -35,6 +36,12 @@ const T& ColumnValue(const EpisodeLine& e, T EpisodeLine::*member) {
 template <typename T>
 const T& ColumnValue(const EpisodeLine& e, T EpisodeOutcome::*member) {
   return e.outcome.*member;
+}
+inline const double& ColumnValue(const EpisodeLine& e, double SocialMetrics::*member) {
+  return e.outcome.social.*member;
+}
+inline double& ColumnValue(EpisodeLine& e, double SocialMetrics::*member) {
+  return e.outcome.social.*member;
 }
 template <typename T>
 T& ColumnValue(EpisodeLine& e, T EpisodeLine::*member) {
@@ -59,10 +66,12 @@ struct EpisodeColumn {
   EpisodeField field;
   int decimals = 0;  ///< real numbers: digits after the point (a non-finite value is written empty)
   bool empty_is_infinity = false;  ///< an empty cell reads back as infinity (else it is damage)
+  bool empty_is_nan = false;       ///< an empty cell reads back as NaN: not applicable
   bool timing = false;  ///< wall-clock: differs between runs and machines, left out of comparisons
   RowMean mean = RowMean::kNone;
-  double RowMetrics::*row_mean = nullptr;  ///< where the row mean goes (mean != kNone)
-  const char* table_header = nullptr;      ///< the row mean's column in table.md / table.csv
+  /// Where the row mean goes (mean != kNone); a social column's goes to RowMetrics::social.
+  double RowMetrics::*row_mean = nullptr;
+  const char* table_header = nullptr;  ///< the row mean's column in table.md / table.csv
   int table_decimals = 0;
 };
 
@@ -108,16 +117,130 @@ inline constexpr EpisodeColumn kEpisodeColumns[] = {
      .table_decimals = 1},
     {.name = "humans_at_goal", .field = &EpisodeOutcome::humans_at_goal},
     {.name = "max_speed", .field = &EpisodeOutcome::max_speed, .decimals = 6},
+    // The social navigation metrics: only in the files of a suite that asks for them (Social()).
+    {.name = "shortest_path",
+     .field = &SocialMetrics::shortest_path,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "shortest_path",
+     .table_decimals = 3},
+    {.name = "spl",
+     .field = &SocialMetrics::spl,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "SPL",
+     .table_decimals = 3},
+    {.name = "accel_mean",
+     .field = &SocialMetrics::accel_mean,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "accel. mean",
+     .table_decimals = 3},
+    {.name = "accel_max",
+     .field = &SocialMetrics::accel_max,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "accel. max",
+     .table_decimals = 3},
+    {.name = "jerk_mean",
+     .field = &SocialMetrics::jerk_mean,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "jerk mean",
+     .table_decimals = 3},
+    {.name = "jerk_max",
+     .field = &SocialMetrics::jerk_max,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "jerk max",
+     .table_decimals = 3},
+    {.name = "angular_accel_mean",
+     .field = &SocialMetrics::angular_accel_mean,
+     .decimals = 6,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .table_header = "ang. accel. mean",
+     .table_decimals = 3},
+    {.name = "angular_accel_max",
+     .field = &SocialMetrics::angular_accel_max,
+     .decimals = 6,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .table_header = "ang. accel. max",
+     .table_decimals = 3},
+    {.name = "angular_jerk_mean",
+     .field = &SocialMetrics::angular_jerk_mean,
+     .decimals = 6,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .table_header = "ang. jerk mean",
+     .table_decimals = 3},
+    {.name = "angular_jerk_max",
+     .field = &SocialMetrics::angular_jerk_max,
+     .decimals = 6,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .table_header = "ang. jerk max",
+     .table_decimals = 3},
+    {.name = "path_irregularity",
+     .field = &SocialMetrics::path_irregularity,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "path irregularity",
+     .table_decimals = 3},
+    {.name = "freezing_time",
+     .field = &SocialMetrics::freezing_time,
+     .decimals = 2,
+     .mean = RowMean::kAll,
+     .table_header = "freezing time",
+     .table_decimals = 3},
+    {.name = "intimate_share",
+     .field = &SocialMetrics::intimate_share,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "intimate share",
+     .table_decimals = 3},
+    {.name = "personal_share",
+     .field = &SocialMetrics::personal_share,
+     .decimals = 6,
+     .mean = RowMean::kAll,
+     .table_header = "personal share",
+     .table_decimals = 3},
+    {.name = "personal_intrusions",
+     .field = &SocialMetrics::personal_intrusions,
+     .decimals = 0,
+     .mean = RowMean::kAll,
+     .table_header = "personal intrusions",
+     .table_decimals = 3},
+    {.name = "min_ttc",
+     .field = &SocialMetrics::min_ttc,
+     .decimals = 6,
+     .empty_is_infinity = true,
+     .mean = RowMean::kFinite,
+     .table_header = "min. TTC",
+     .table_decimals = 3},
     {.name = "error", .field = &EpisodeOutcome::error},
 };
 
+/// A social navigation metric's column: in the files of a suite with social metrics only.
+inline bool Social(const EpisodeColumn& c) {
+  return std::holds_alternative<double SocialMetrics::*>(c.field);
+}
+/// True for the name of a social metric's column (suites name them in `columns:`).
+bool IsSocialMetric(std::string_view name);
+/// The columns of episodes.csv, with or without the social metrics, in file order.
+std::vector<const EpisodeColumn*> EpisodeColumnsOf(bool social);
+/// A column's row mean in `m`.
+double& RowMeanField(RowMetrics& m, const EpisodeColumn& c);
+double RowMeanField(const RowMetrics& m, const EpisodeColumn& c);
+
 /// Header line of episodes.csv (the column names, comma-separated).
-std::string EpisodeCsvHeader();
+std::string EpisodeCsvHeader(bool social);
 /// One CSV line (no newline).
-std::string FormatEpisodeLine(const EpisodeLine& e);
+std::string FormatEpisodeLine(const EpisodeLine& e, bool social);
 /// Reads one line's fields (from SplitCsvLine) into `e`; returns why they are no episode line, or
 /// "".
-std::string ParseEpisodeFields(const std::vector<std::string>& fields, EpisodeLine* e);
+std::string ParseEpisodeFields(const std::vector<std::string>& fields, EpisodeLine* e, bool social);
 /// episodes.csv without timing columns: what two runs of one configuration must agree on, anywhere.
 std::string WithoutTimingColumns(const std::string& episodes_csv);
 

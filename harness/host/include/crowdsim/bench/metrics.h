@@ -29,6 +29,7 @@ struct RowMetrics {
   double min_human_distance = 0.0;  ///< mean over episodes with humans of the episode minimum
   double discounted_return = 0.0;   ///< mean
   double decision_time_us = 0.0;    ///< mean of per-episode means
+  SocialMetrics social;             ///< means of the social columns (kEpisodeColumns says which)
   int successes = 0;                ///< counts behind the rates (for their intervals)
   int collisions = 0;
   int timeouts = 0;

@@ -22,10 +22,11 @@ struct EpisodesCsvRead {
   std::vector<std::string> damaged_lines;  ///< their text, as read
   std::string first_damage;    ///< "FILE:LINE: why" of the first of them; empty when none
   bool cut_last_line = false;  ///< the last line lacks its newline (a crash mid-write): skipped
+  bool social = false;         ///< it has the social metrics' columns
 };
 /// Reads an episodes.csv. Throws std::runtime_error (file, line, fix) when unreadable, when the
-/// header is not EpisodeCsvHeader(), or when no episode line reads. Damaged lines are skipped and
-/// counted; a crash-cut last line is skipped.
+/// header is neither EpisodeCsvHeader(false) nor (true), or when no episode line reads. Damaged
+/// lines are skipped and counted; a crash-cut last line is skipped.
 EpisodesCsvRead ReadEpisodesCsvChecked(const std::filesystem::path& path);
 /// ReadEpisodesCsvChecked's lines.
 std::vector<EpisodeLine> ReadEpisodesCsv(const std::filesystem::path& path);

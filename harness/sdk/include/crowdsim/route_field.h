@@ -1,16 +1,17 @@
 // Shortest-path distances to one goal over a world's static rectangles: a grid (Dijkstra over
 // 16 move directions between free cells) whose free cells are those a disc of the given clearance
 // fits at (route_field.cc: how much of it a move keeps). Built once per (map, goal, clearance);
-// queried per sensor reading.
+// queried per reading of the route sensor and once per episode by the path-efficiency metric.
 #pragma once
 
 #include <vector>
 
+#include "crowdsim/export.h"
 #include "crowdsim/static_map.h"
 
 namespace crowdsim::route {
 
-class RouteField {
+class CROWDSIM_SDK_API RouteField {
  public:
   /// Cells of `resolution` metres over `map.bounds`; `clearance` is the robot's radius plus
   /// a margin (m). The goal's neighbourhood seeds the search, so a goal close to a wall is

@@ -1,4 +1,4 @@
-#include "route_field.h"
+#include "crowdsim/route_field.h"
 
 #include <algorithm>
 #include <cmath>

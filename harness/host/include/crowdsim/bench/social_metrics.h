@@ -1,0 +1,98 @@
+// The social navigation metrics of an episode (Francis et al. 2023): path efficiency, motion
+// quality, proxemics and time to collision, from the states of its steps. One accumulator serves
+// the runner and every other reader of steps, so both give the same numbers (docs/metrics.md).
+#pragma once
+
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "crowdsim/agent_state.h"
+#include "crowdsim/static_map.h"
+
+namespace crowdsim {
+
+/// One episode's social navigation metrics; NaN where a metric does not apply.
+struct SocialMetrics {
+  double shortest_path = 0.0;  ///< m; shortest free path start -> goal for the robot's disc
+  double spl = 0.0;            ///< success * shortest_path / max(path length, shortest_path)
+  double accel_mean = 0.0;     ///< m/s^2; mean over steps of |v_k - v_k-1| / dt
+  double accel_max = 0.0;
+  double jerk_mean = 0.0;  ///< m/s^3; mean over steps of |a_k - a_k-1| / dt
+  double jerk_max = 0.0;
+  /// rad/s^2 and rad/s^3, from the heading; NaN for a holonomic robot (it has none).
+  double angular_accel_mean = std::numeric_limits<double>::quiet_NaN();
+  double angular_accel_max = std::numeric_limits<double>::quiet_NaN();
+  double angular_jerk_mean = std::numeric_limits<double>::quiet_NaN();
+  double angular_jerk_max = std::numeric_limits<double>::quiet_NaN();
+  double path_irregularity = 0.0;  ///< rad/m; summed angle heading-to-goal / path length
+  double freezing_time = 0.0;      ///< s; still while not at the goal
+  double intimate_share = 0.0;     ///< share of the steps with a person within intimate_radius
+  double personal_share = 0.0;     ///< share of the steps with a person within personal_radius
+  double personal_intrusions = 0;  ///< entries of a person into the personal zone after time 0
+  double min_ttc = std::numeric_limits<double>::infinity();  ///< s; constant-velocity TTC
+};
+
+/// Radii and thresholds (docs/metrics.md cites each).
+struct SocialMetricsConfig {
+  double intimate_radius = 0.45;  ///< m between centres (Hall 1966)
+  double personal_radius = 1.2;   ///< m between centres (Hall 1966)
+  double still_speed = 0.01;      ///< m/s: below it the robot stands (HuNavSim)
+  double still_angular = 0.02;    ///< rad/s: and turns no faster (HuNavSim)
+};
+
+/// Accumulates SocialMetrics over an episode's states: the first Observe is time 0, each next one
+/// the state after a step of `dt` (positions, the velocities moved with, the robot's heading).
+class SocialMetricsAccumulator {
+ public:
+  /// `holonomic`: the robot has no body heading (its path irregularity uses its direction of
+  /// motion; angular metrics are NaN).
+  SocialMetricsAccumulator(double dt, bool holonomic, double goal_radius,
+                           SocialMetricsConfig config = {});
+
+  void Observe(const AgentState& robot, std::span<const AgentState> humans);
+
+  /// The metrics; `shortest_path` as ShortestFreePath gives it.
+  SocialMetrics Finish(bool success, double shortest_path) const;
+
+ private:
+  struct Series {
+    double sum = 0.0;
+    double max = 0.0;
+    int count = 0;
+    void Add(double x);
+    double Mean() const { return count > 0 ? sum / count : 0.0; }
+  };
+
+  double dt_;
+  bool holonomic_;
+  double goal_radius_;
+  SocialMetricsConfig config_;
+
+  int states_ = 0;
+  Vec2 last_position_ = Vec2::Zero();
+  Vec2 last_velocity_ = Vec2::Zero();
+  Vec2 last_accel_ = Vec2::Zero();
+  double last_heading_ = 0.0;
+  double last_angular_ = 0.0;
+  double last_angular_accel_ = 0.0;
+  double path_length_ = 0.0;
+  double turning_ = 0.0;  // sum of the angles between heading and goal direction
+  Series accel_, jerk_, angular_accel_, angular_jerk_;
+  int still_steps_ = 0;
+  int intimate_steps_ = 0;
+  int personal_steps_ = 0;
+  int intrusions_ = 0;
+  std::vector<unsigned char> inside_personal_;  // per person, within personal_radius
+  double min_ttc_ = std::numeric_limits<double>::infinity();
+};
+
+/// Time until two discs touch, each keeping its velocity: 0 when they overlap, infinity when they
+/// never meet.
+double TimeToCollision(const AgentState& a, const AgentState& b);
+
+/// The shortest free path (m) from the robot's start to its goal for its disc, around the map's
+/// rectangles on a 0.1 m route grid; the straight line when the grid finds none.
+double ShortestFreePath(const StaticMap& map, const AgentState& robot);
+
+}  // namespace crowdsim

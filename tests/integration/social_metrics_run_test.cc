@@ -1,0 +1,136 @@
+// A suite that names social metrics in `columns:`: they join episodes.csv, table.csv and the
+// manifest, leave the episodes as they were, resume, and travel from isolated workers.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "crowdsim/bench/csv.h"
+#include "crowdsim/bench/results.h"
+#include "crowdsim/bench/runner.h"
+#include "temp_dir.h"
+#include "test_paths.h"
+
+namespace crowdsim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::ReadText;
+using testing::TempDir;
+
+constexpr const char* kPlain = R"(name: social
+episodes: 8
+seed: 5
+world: {source: random_rect, obstacles: 1, split: test}
+humans: {count: 5, policy: orca}
+robot:
+  sensors: [person]
+rows:
+  - {label: linear, policy: linear}
+  - {label: orca, policy: orca}
+)";
+
+// The column of `name` in every line of an episodes.csv.
+std::vector<std::string> Column(const std::string& csv, const std::string& name) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  const auto header = SplitCsvLine(line);
+  const size_t k = std::find(header.begin(), header.end(), name) - header.begin();
+  std::vector<std::string> values;
+  while (std::getline(in, line)) values.push_back(SplitCsvLine(line).at(k));
+  return values;
+}
+
+class SocialMetricsRunTest : public ::testing::Test {
+ protected:
+  Suite Load(const std::string& yaml) {
+    SuiteLoadResult r = LoadSuite(dir_.Write("suite.yaml", yaml), registry_);
+    std::string errors;
+    for (const auto& e : r.errors) errors += e.Format() + "\n";
+    EXPECT_TRUE(r.suite) << errors;
+    return r.suite ? *r.suite : Suite{};
+  }
+  RunSummary Run(const Suite& s, const std::string& out) {
+    RunOptions o;
+    o.out_dir = dir_.path() / out;
+    o.jobs = 2;
+    o.progress = false;
+    return RunSuite(s, registry_, o);
+  }
+  std::string Text(const std::string& out, const std::string& file) {
+    return ReadText(dir_.path() / out / file);
+  }
+
+  TempDir dir_;
+  PluginRegistry registry_{{testing::PluginDir(), testing::FixturePluginDir()}};
+};
+
+TEST_F(SocialMetricsRunTest, NamedMetricsJoinEveryFileAndChangeNoEpisode) {
+  const Suite plain = Load(kPlain);
+  const Suite social = Load(std::string(kPlain) + "columns: [spl, personal_intrusions]\n");
+  EXPECT_FALSE(plain.social_metrics);
+  ASSERT_TRUE(social.social_metrics);
+  EXPECT_NE(plain.ConfigHash(), social.ConfigHash());  // stored plain results are not resumed
+  Run(plain, "plain");
+  Run(social, "social");
+
+  const std::string csv = Text("social", "episodes.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), EpisodeCsvHeader(true));
+  EXPECT_EQ(Text("plain", "episodes.csv").substr(0, csv.find('\n')).find("spl"), std::string::npos);
+  // The episodes are the plain suite's: every column both have agrees.
+  const auto read = ReadEpisodesCsvChecked(dir_.path() / "social" / "episodes.csv");
+  ASSERT_TRUE(read.social);
+  std::string without;
+  without = EpisodeCsvHeader(false) + "\n";
+  for (const EpisodeLine& e : read.lines) without += FormatEpisodeLine(e, false) + "\n";
+  EXPECT_EQ(WithoutTimingColumns(without), WithoutTimingColumns(Text("plain", "episodes.csv")));
+
+  // SPL: 0 without success, in (0, 1] with it.
+  const auto status = Column(csv, "status"), spl = Column(csv, "spl");
+  int successes = 0;
+  for (size_t i = 0; i < status.size(); ++i) {
+    const double x = std::stod(spl[i]);
+    if (status[i] == "success") {
+      ++successes;
+      EXPECT_GT(x, 0.0);
+      EXPECT_LE(x, 1.0);
+    } else {
+      EXPECT_EQ(x, 0.0);
+    }
+  }
+  EXPECT_GT(successes, 0);
+
+  // table.md shows what the suite named; table.csv and the manifest carry every metric.
+  const std::string md = Text("social", "table.md");
+  EXPECT_NE(md.find("| SPL |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| personal intrusions |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("jerk max"), std::string::npos) << md;
+  EXPECT_NE(Text("social", "table.csv").find("jerk max"), std::string::npos);
+  EXPECT_EQ(Text("plain", "table.csv").find("jerk max"), std::string::npos);
+  const auto manifest = nlohmann::json::parse(Text("social", "manifest.json"));
+  EXPECT_TRUE(manifest["rows"][0]["metrics"].contains("min_ttc"));
+  EXPECT_FALSE(
+      nlohmann::json::parse(Text("plain", "manifest.json"))["rows"][0]["metrics"].contains("spl"));
+}
+
+TEST_F(SocialMetricsRunTest, AStoredRunResumesWithItsMetrics) {
+  const Suite social = Load(std::string(kPlain) + "columns: [jerk_mean]\n");
+  Run(social, "out");
+  const std::string first = Text("out", "episodes.csv");
+  const RunSummary again = Run(social, "out");
+  EXPECT_EQ(again.episodes_run, 0);
+  EXPECT_EQ(again.episodes_resumed, 16);
+  EXPECT_EQ(WithoutTimingColumns(Text("out", "episodes.csv")), WithoutTimingColumns(first));
+}
+
+TEST_F(SocialMetricsRunTest, IsolatedWorkersSendTheMetricsUnrounded) {
+  const std::string yaml = std::string(kPlain) + "columns: [min_ttc]\n";
+  Run(Load(yaml), "threads");
+  Run(Load(yaml + "isolation: on\n"), "processes");
+  EXPECT_EQ(WithoutTimingColumns(Text("threads", "episodes.csv")),
+            WithoutTimingColumns(Text("processes", "episodes.csv")));
+}
+
+}  // namespace
+}  // namespace crowdsim
