@@ -3,7 +3,8 @@
 pages cannot drift from results/<suite>/table.csv: each block between `<!-- table:NAME begin -->`
 and `<!-- table:NAME end -->` is the suite NAME's rows, ours (success with its 95% interval)
 beside the paper's values where the row has them. A block `table:NAME:compact` has only the
-rows' description, the success and the paper's success. Every suite of REQUIRED has a full
+rows' description, the success and the paper's success; `table:NAME:social` the description,
+the success and the social navigation metrics of SOCIAL. Every suite of REQUIRED has a full
 block on some page.
 
     scripts/readme_tables.py            # rewrite the pages' blocks
@@ -15,12 +16,15 @@ import re
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact)?) begin -->\n)(?P<body>.*?)"
+BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact|:social)?) begin -->\n)(?P<body>.*?)"
                    r"(<!-- table:(?P=name)(?P=form) end -->)", re.S)
 # The pages that hold blocks, and the suites whose full table one of them must hold.
 PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
 REQUIRED = ["table1", "table1_3obs", "table2", "table1_route", "table2_route", "human_models",
             "kinematics", "perception"]
+# The social navigation metrics a `:social` block shows (table.csv headers, docs/metrics.md).
+SOCIAL = ["SPL", "accel. mean", "jerk mean", "path irregularity", "freezing time", "personal share",
+          "personal intrusions", "min. TTC"]
 INFO = ["line", "model", "humans.policy", "kinematics", "perception", "sensor(s)", "# of obstacles", "humans", "floor plan", "seed",
         "weights", "procedure"]
 # The paper's column names where they need a word more out of the paper's context.
@@ -37,7 +41,7 @@ def paper(row, key):
     return f"{float(value):.3f}" if value else "-"
 
 
-def table(name: str, compact: bool = False) -> str:
+def table(name: str, compact: bool = False, social: bool = False) -> str:
     path = ROOT / "results" / name / "table.csv"
     if not path.is_file():
         raise SystemExit(f"readme_tables: {path} does not exist (run the suite {name} first)")
@@ -47,6 +51,8 @@ def table(name: str, compact: bool = False) -> str:
     with_paper = any(r.get("paper success") for r in rows)
     if compact:
         return compact_table(rows, [c for c in info if c not in ("weights", "procedure")], with_paper)
+    if social:
+        return social_table(rows, info)
     head = info + ["success [95% CI]"] + (["paper"] if with_paper else []) + \
         ["collision"] + (["paper"] if with_paper else []) + ["timeout"] + \
         (["paper"] if with_paper else []) + ["nav. time"] + (["paper"] if with_paper else [])
@@ -87,6 +93,19 @@ def compact_table(rows, info, with_paper: bool) -> str:
     return "\n".join(lines) + "\n"
 
 
+def social_table(rows, info) -> str:
+    missing = [c for c in SOCIAL if rows and c not in rows[0]]
+    if missing:
+        raise SystemExit("readme_tables: a :social block's suite has no column " + ", ".join(missing) +
+                         " (name a social metric in its columns:)")
+    head = info + ["success [95% CI]"] + SOCIAL
+    lines = header_lines(head, info)
+    for r in rows:
+        lines.append("| " + " | ".join([r[c] for c in info] + [success_cell(r)] +
+                                       [r[c] for c in SOCIAL]) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def main() -> int:
     check = "--check" in sys.argv[1:]
     stale = []
@@ -97,9 +116,10 @@ def main() -> int:
 
         def fill(m):
             compact = m.group("form") == ":compact"
-            if not compact:
+            social = m.group("form") == ":social"
+            if not compact and not social:
                 full.add(m.group("name"))
-            body = table(m.group("name"), compact)
+            body = table(m.group("name"), compact, social)
             if body != m.group("body"):
                 stale.append(f"{name}: {m.group('name')}{m.group('form')}")
             return m.group(1) + body + m.group(5)

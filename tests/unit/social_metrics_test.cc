@@ -85,7 +85,7 @@ TEST(SocialMetrics, ARobotParkedOneMetreFromAStandingPersonForTenSeconds) {
   EXPECT_DOUBLE_EQ(s.intimate_share, 0.0);
   EXPECT_DOUBLE_EQ(s.personal_intrusions, 0.0);  // inside from time 0: nobody entered
   EXPECT_DOUBLE_EQ(s.freezing_time, 10.0);       // still, 10 m from its goal
-  EXPECT_EQ(s.min_ttc, std::numeric_limits<double>::infinity());  // nobody moves
+  EXPECT_DOUBLE_EQ(s.min_ttc, 5.0);  // nobody moves: no collision within the 5 s horizon
 }
 
 TEST(SocialMetrics, APersonWalkingUpCountsOneIntrusionAndItsTimeToCollision) {
@@ -110,6 +110,11 @@ TEST(SocialMetrics, TimeToCollisionBeforeTheyMeet) {
   const std::vector<AgentState> person = {Agent(3.0, 0.0, -1.0, 0.0)};
   m.Observe(Robot(0.0, 0.0, 0.0, 0.0), person);
   EXPECT_NEAR(m.Finish(false, 10.0).min_ttc, 2.4, 1e-12);
+  // A 5.4 m gap closing at 1 m/s is 5.4 s away: beyond the 5 s horizon.
+  SocialMetricsAccumulator far(kDt, false, 0.2);
+  const std::vector<AgentState> distant = {Agent(6.0, 0.0, -1.0, 0.0)};
+  far.Observe(Robot(0.0, 0.0, 0.0, 0.0), distant);
+  EXPECT_DOUBLE_EQ(far.Finish(false, 10.0).min_ttc, 5.0);
 }
 
 TEST(SocialMetrics, TimeToCollisionOfTwoDiscs) {

@@ -29,7 +29,11 @@ void SocialMetricsAccumulator::Series::Add(double x) {
 
 SocialMetricsAccumulator::SocialMetricsAccumulator(double dt, bool holonomic, double goal_radius,
                                                    SocialMetricsConfig config)
-    : dt_(dt), holonomic_(holonomic), goal_radius_(goal_radius), config_(config) {}
+    : dt_(dt),
+      holonomic_(holonomic),
+      goal_radius_(goal_radius),
+      config_(config),
+      min_ttc_(config.ttc_horizon) {}
 
 void SocialMetricsAccumulator::Observe(const AgentState& robot,
                                        std::span<const AgentState> humans) {

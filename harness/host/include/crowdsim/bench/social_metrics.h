@@ -30,7 +30,7 @@ struct SocialMetrics {
   double intimate_share = 0.0;     ///< share of the steps with a person within intimate_radius
   double personal_share = 0.0;     ///< share of the steps with a person within personal_radius
   double personal_intrusions = 0;  ///< entries of a person into the personal zone after time 0
-  double min_ttc = std::numeric_limits<double>::infinity();  ///< s; constant-velocity TTC
+  double min_ttc = 5.0;  ///< s; constant-velocity TTC, at most SocialMetricsConfig::ttc_horizon
 };
 
 /// Radii and thresholds (docs/metrics.md cites each).
@@ -39,6 +39,7 @@ struct SocialMetricsConfig {
   double personal_radius = 1.2;   ///< m between centres (Hall 1966)
   double still_speed = 0.01;      ///< m/s: below it the robot stands (HuNavSim)
   double still_angular = 0.02;    ///< rad/s: and turns no faster (HuNavSim)
+  double ttc_horizon = 5.0;       ///< s: longer TTCs count as this (CrowdNav's ORCA time_horizon)
 };
 
 /// Accumulates SocialMetrics over an episode's states: the first Observe is time 0, each next one
@@ -84,7 +85,7 @@ class SocialMetricsAccumulator {
   int personal_steps_ = 0;
   int intrusions_ = 0;
   std::vector<unsigned char> inside_personal_;  // per person, within personal_radius
-  double min_ttc_ = std::numeric_limits<double>::infinity();
+  double min_ttc_;
 };
 
 /// Time until two discs touch, each keeping its velocity: 0 when they overlap, infinity when they
