@@ -25,5 +25,6 @@ int TrainCommand(const std::vector<std::string>& args);
 int TrainAllCommand(const std::vector<std::string>& args);
 int RenderCommand(const std::vector<std::string>& args);
 int ReportCommand(const std::vector<std::string>& args);
+int ScoreCommand(const std::vector<std::string>& args);
 
 }  // namespace crowdsim::cli

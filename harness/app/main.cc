@@ -24,7 +24,7 @@ struct Command {
 const std::vector<Command>& Commands() {
   static const std::vector<Command> commands = {
       {"run", crowdsim::cli::RunCommand,
-       R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet] [--shard K/N]
+       R"(  crowdsim-bench run SUITE.yaml [--out DIR] [--jobs N] [--episodes N] [--fresh] [--quiet] [--record] [--shard K/N]
                  [--set KEY.PATH=VALUE]...
       runs a suite; writes DIR/table.md, table.csv, episodes.csv, manifest.json
       (DIR defaults to runs/<suite name>/; the committed reference outputs under results/ are
@@ -36,7 +36,8 @@ const std::vector<Command>& Commands() {
       robot.sensors[lidar2d].beams=90; recorded in manifest.json), as validate, render, train;
       --set isolation=on|off|auto runs episodes in worker processes (auto: when a plugin is
       not the harness's own or episode_timeout_s is set), so a crash or a hang past
-      episode_timeout_s costs one episode (policy_crash / policy_timeout), not the run
+      episode_timeout_s costs one episode (policy_crash / policy_timeout), not the run;
+      --record writes every episode run as an episode log under DIR/logs/ (docs/episode_log.md)
 )"},
       {"merge", crowdsim::cli::MergeCommand,
        R"(  crowdsim-bench merge SHARD_DIR... --out DIR [--suite SUITE.yaml] [--allow-mixed-commits]
@@ -85,6 +86,13 @@ const std::vector<Command>& Commands() {
       one self-contained HTML page of a run: table, charts, first success/collision/timeout;
       of a training folder (train --out): learning curve, validations, memory composition
       (--out FILE.svg/.png/.pdf: the learning curve alone)
+)"},
+      {"score", crowdsim::cli::ScoreCommand,
+       R"(  crowdsim-bench score LOG_OR_FOLDER... [--out FILE.csv]
+      the social navigation metrics (docs/metrics.md) of episode logs (docs/episode_log.md:
+      `run --record` writes them under DIR/logs/, or convert another simulator's episodes):
+      one CSV line per log, the columns as episodes.csv names them; a folder is searched for
+      *.jsonl.gz and *.jsonl; a damaged or cut-short log is named and not scored (exit 1)
 )"},
       {"list-plugins", crowdsim::cli::ListPluginsCommand,
        R"(  crowdsim-bench list-plugins [PLUGIN.so...]

@@ -190,7 +190,7 @@ int RunOverRanks(const Suite& suite, PluginRegistry& registry, RunOptions opt,
 
 int RunCommand(const std::vector<std::string>& args) {
   const Args a = Args::Parse(args, {"--out", "--jobs", "--episodes", "--shard", "--set"},
-                             {"--fresh", "--quiet"});
+                             {"--fresh", "--quiet", "--record"});
   if (a.positional.size() != 1) throw UsageError("run needs exactly one suite file");
   int shard_index = 1, shard_count = 1;
   if (auto shard = a.Get("--shard")) {
@@ -213,6 +213,7 @@ int RunCommand(const std::vector<std::string>& args) {
   opt.jobs = a.GetInt("--jobs", hw, 1, kMaxJobs);
   opt.episodes = a.GetInt("--episodes", -1, 1, kMaxEpisodes);
   opt.fresh = a.Has("--fresh");
+  opt.record = a.Has("--record");
   opt.progress = !a.Has("--quiet");
   opt.shard_index = shard_index;
   opt.shard_count = shard_count;

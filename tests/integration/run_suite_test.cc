@@ -1445,7 +1445,7 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   const auto [c, completion] = Shell(exe + " completion bash");
   EXPECT_EQ(c, 0);
   EXPECT_NE(
-      completion.find("run merge validate train train-all floorplan render report list-plugins"),
+      completion.find("run merge validate train train-all floorplan render report score list-plugins"),
       std::string::npos)
       << completion;
   EXPECT_NE(completion.find("train) case $prev in --out|--seed|--set) COMPREPLY=($(compgen -f "

@@ -242,9 +242,7 @@ std::string EpisodeCsvHeader(bool social) {
   return header;
 }
 
-namespace {
-
-std::string FormatCell(const EpisodeColumn& c, const EpisodeLine& e) {
+std::string FormatEpisodeCell(const EpisodeColumn& c, const EpisodeLine& e) {
   return std::visit(
       [&](auto member) -> std::string {
         const auto& v = ColumnValue(e, member);
@@ -261,13 +259,11 @@ std::string FormatCell(const EpisodeColumn& c, const EpisodeLine& e) {
       c.field);
 }
 
-}  // namespace
-
 std::string FormatEpisodeLine(const EpisodeLine& e, bool social) {
   std::string line;
   for (const EpisodeColumn* c : EpisodeColumnsOf(social)) {
     if (c != kEpisodeColumns) line += ',';
-    line += FormatCell(*c, e);
+    line += FormatEpisodeCell(*c, e);
   }
   return line;
 }

@@ -461,12 +461,15 @@ RunSummary RunSuite(const Suite& suite, PluginRegistry& registry, const RunOptio
 
   RunSummary summary;
   // Before the folder is made.
-  const std::vector<SuiteRow> rows =
+  std::vector<SuiteRow> rows =
       PreflightRows(suite, registry, &facts, options.isolation.value_or(suite.isolation),
                     options.slow_episode_note_s);
   std::vector<std::shared_ptr<WorldSource>> worlds;
   for (const SuiteRow& row : rows) worlds.push_back(row.world());
   summary.out_dir = PrepareOutDir(suite, options);
+  if (options.record) {
+    for (SuiteRow& row : rows) row.RecordTo(summary.out_dir / "logs");
+  }
   std::vector<fs::path> outputs;
   for (const char* name :
        {"episodes.csv", "manifest.json", "table.md", "table.csv", "episodes.dropped.csv"})

@@ -1,10 +1,14 @@
 #include "run/suite_row.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
 #include <sstream>
 
+#include "crowdsim/bench/episode_log.h"
 #include "crowdsim/bench/play_episode.h"
 #include "crowdsim/bench/runner.h"
+#include "crowdsim/version.h"
 #include "run/slow_episode_watch.h"
 #include "spec/config_text.h"
 
@@ -137,11 +141,36 @@ EpisodeLine SuiteRow::Run(RowInstance& instance, int episode) const {
   line.episode = episode;
   ScenarioRequest req;
   const Scenario scenario = MakeEpisodeScenario(suite_, spec(), *world_, episode, &req);
-  Episode played(scenario, suite_.sim, instance.Agents(scenario.humans.size()));
+  Episode played(scenario, suite_.sim, instance.Agents(scenario.humans.size()),
+                 !record_dir_.empty());
   line.seed = req.seed;
   line.layout = scenario.layout;
   line.outcome = PlayEpisode(played, suite_.social_metrics);
+  if (!record_dir_.empty()) WriteLog(played, episode);
   return line;
+}
+
+void SuiteRow::WriteLog(const Episode& played, int episode) const {
+  // A label as a folder name: a swept label's braces, spaces and slashes become '_'.
+  std::string folder = std::to_string(index_ + 1) + "_";
+  for (char c : spec().label)
+    folder +=
+        std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '_' ? c : '_';
+  char name[32];
+  std::snprintf(name, sizeof(name), "%06d.jsonl.gz", episode);
+  EpisodeLog log;
+  log.source = "crowdsim-bench " + std::string(Version()) + ", suite " + suite_.name + ", row " +
+               spec().label + ", episode " + std::to_string(episode);
+  log.dt = suite_.sim.time_step;
+  log.holonomic = spec().kinematics.Holonomic();
+  log.goal_radius = suite_.sim.goal_radius;
+  log.map = played.world().map();
+  log.frames = played.result().trajectory;
+  log.status = played.result().status;
+  const std::filesystem::path dir = record_dir_ / folder;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  WriteEpisodeLog(dir / name, log);
 }
 
 // The plugins a crash is laid to: those not of the harness, or the robot's policy when all are.

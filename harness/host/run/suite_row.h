@@ -2,6 +2,7 @@
 // asks it, not the suite.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <set>
 #include <string>
@@ -31,6 +32,9 @@ class SuiteRow {
   /// A threaded row's plugins taking `slow_note_s` to make are named on stderr.
   void Preflight(PluginRegistry& registry, int episodes, IsolationMode mode,
                  std::set<std::string>* checked, double slow_note_s = kSlowEpisodeNoteS);
+  /// Run writes each episode's log into `dir`/<row number>_<label>/ (empty: none).
+  void RecordTo(const std::filesystem::path& dir) { record_dir_ = dir; }
+
   /// The world Preflight built; null before.
   const std::shared_ptr<WorldSource>& world() const { return world_; }
 
@@ -45,10 +49,12 @@ class SuiteRow {
   void MakePluginsInWorker(PluginRegistry& registry) const;
   void CheckFirstStep(RowInstance& instance, const Scenario& episode0) const;
   std::string Suspects() const;
+  void WriteLog(const Episode& played, int episode) const;
 
   const Suite& suite_;
   size_t index_;
   std::shared_ptr<WorldSource> world_;
+  std::filesystem::path record_dir_;
 };
 
 }  // namespace crowdsim

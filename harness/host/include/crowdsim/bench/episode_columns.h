@@ -235,6 +235,8 @@ double RowMeanField(const RowMetrics& m, const EpisodeColumn& c);
 
 /// Header line of episodes.csv (the column names, comma-separated).
 std::string EpisodeCsvHeader(bool social);
+/// One cell as episodes.csv writes it.
+std::string FormatEpisodeCell(const EpisodeColumn& c, const EpisodeLine& e);
 /// One CSV line (no newline).
 std::string FormatEpisodeLine(const EpisodeLine& e, bool social);
 /// Reads one line's fields (from SplitCsvLine) into `e`; returns why they are no episode line, or

@@ -53,8 +53,10 @@ struct RunOptions {
   /// Overrides the suite's `isolation` when set (off for a policy in this process's Python, which a
   /// forked worker must not run).
   std::optional<IsolationMode> isolation;
-  int episodes = -1;     ///< overrides the suite's count when > 0
-  bool fresh = false;    ///< discard stored episodes instead of resuming
+  int episodes = -1;   ///< overrides the suite's count when > 0
+  bool fresh = false;  ///< discard stored episodes instead of resuming
+  /// Writes each episode run's log (docs/episode_log.md) under out_dir/logs/.
+  bool record = false;
   bool progress = true;  ///< progress line on stderr
   /// Shard `shard_index` (1-based) of `shard_count`: the pairs whose row-major position is
   /// shard_index - 1 modulo shard_count; writes no table (`merge` joins shards). 1 of 1 is the
