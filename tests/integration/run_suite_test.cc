@@ -1444,9 +1444,9 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   // The completion script knows every command and each command's options, and is valid bash.
   const auto [c, completion] = Shell(exe + " completion bash");
   EXPECT_EQ(c, 0);
-  EXPECT_NE(
-      completion.find("run merge validate train train-all floorplan render report score list-plugins"),
-      std::string::npos)
+  EXPECT_NE(completion.find(
+                "run merge validate train train-all floorplan render report score list-plugins"),
+            std::string::npos)
       << completion;
   EXPECT_NE(completion.find("train) case $prev in --out|--seed|--set) COMPREPLY=($(compgen -f "
                             "-- \"$cur\")); return;; esac; COMPREPLY=($(compgen -W \"--resume "

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/render/bar_chart.h"
 #include "crowdsim/render/palette.h"
 #include "crowdsim/render/report_episodes.h"
@@ -129,6 +130,35 @@ ChartBars TableBars(const CsvTable& table, const TableColumns& col) {
   return bars;
 }
 
+// A chart per social navigation metric the suite names in `columns:`, a bar per table row.
+void WriteSocialCharts(std::ostream& html, const ReportInputs& in) {
+  const auto& header = in.table.header;
+  std::vector<std::pair<const EpisodeColumn*, size_t>> charts;
+  for (const std::string& name : in.suite.metric_columns) {
+    for (const EpisodeColumn& c : kEpisodeColumns) {
+      if (!Social(c) || c.name != name) continue;
+      const auto at = std::find(header.begin(), header.end(), c.table_header);
+      if (at != header.end()) charts.emplace_back(&c, static_cast<size_t>(at - header.begin()));
+    }
+  }
+  if (charts.empty()) return;
+  html << "<h2>Social navigation metrics</h2>\n<p class=\"meta\">Row means of the metrics "
+          "the suite names (docs/metrics.md); table.csv has every one.</p>\n<div "
+          "class=\"charts\">\n";
+  for (const auto& [column, index] : charts) {
+    std::vector<Bar> bars;
+    for (const auto& row : in.table.rows) {
+      const std::string value = index < row.size() ? row[index] : std::string();
+      bars.push_back(Bar{row[in.columns.label], {{column->name, Number(value), palette::kRobot}}});
+    }
+    BarChartOptions options;
+    options.title = column->table_header;
+    options.decimals = 3;
+    html << "<div class=\"chart\">" << BarChartSvg(bars, options) << "</div>\n";
+  }
+  html << "</div>\n";
+}
+
 // The bar charts of outcomes, navigation time and danger frequency.
 void WriteCharts(std::ostream& html, const ReportInputs& in) {
   const ChartBars bars = TableBars(in.table, in.columns);
@@ -148,6 +178,7 @@ void WriteCharts(std::ostream& html, const ReportInputs& in) {
   html << "<div class=\"chart\">" << BarChartSvg(bars.nav, nav) << "</div>\n";
   html << "<div class=\"chart\">" << BarChartSvg(bars.danger, danger) << "</div>\n";
   html << "</div>\n";
+  WriteSocialCharts(html, in);
 }
 
 // Thumbnails per row, each linking to its full figure in the Figures section.

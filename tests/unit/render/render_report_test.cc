@@ -87,6 +87,24 @@ TEST_F(ReportTest, IsOneSelfContainedPageWithTableChartsAndFigures) {
   EXPECT_EQ(html.find("url("), std::string::npos);
 }
 
+TEST(SocialReport, ChartsTheSocialMetricsTheSuiteNames) {
+  TempDir dir;
+  PluginRegistry registry;
+  SuiteLoadResult loaded = LoadSuite(crowdsim::testing::SourceDir() / "suites/quick.yaml", registry,
+                                     {"columns=[spl, min_ttc]"});
+  ASSERT_TRUE(loaded.suite);
+  RunOptions opt;
+  opt.out_dir = dir.path() / "social";
+  opt.episodes = 4;
+  opt.progress = false;
+  RunSuite(*loaded.suite, registry, opt);
+  const std::string html = BuildReport(opt.out_dir, registry);
+  EXPECT_NE(html.find("<h2>Social navigation metrics</h2>"), std::string::npos);
+  EXPECT_EQ(CountOf(html, "class=\"chart-title\""), 3 + 2);  // outcomes, time, danger; SPL, TTC
+  EXPECT_NE(html.find(">SPL<"), std::string::npos);
+  EXPECT_NE(html.find(">min. TTC<"), std::string::npos);
+}
+
 // A shorter run into the folder of a longer one: the table counts its own episodes, and the
 // page says what episodes.csv holds besides and which --set the run was given.
 TEST_F(ReportTest, CountsTheTablesEpisodesAndNamesTheRunsOverrides) {
