@@ -63,6 +63,15 @@ render compare "$t1" --row line16_sarl_pp_lidar_person_rect1 --compare line11_ca
 e=$(first_episode gibson_baselines ompl_planner_hard success)
 render floorplan suites/gibson_baselines.yaml --row ompl_planner_hard --episode "$e"
 
+# The named interaction scenarios (suites/social.yaml): episode 0 of the OMPL planner's row of
+# each, rows 25-32 in the scenarios' order.
+row=25
+for scenario in frontal_approach overtaking crossing doorway narrow_hallway blind_corner \
+    intersection standing_person; do
+  render "scenario_$scenario" suites/social.yaml --row "$row" --episode 0
+  row=$((row + 1))
+done
+
 # The README's picture: ORCA and the straight-line robot in one quick.yaml episode.
 e=$(first_pair quick orca linear success collision_obstacle 3)
 [[ "$e" -ge 0 ]] || { echo "make_gallery: no quick.yaml episode for the README picture" >&2; exit 1; }
