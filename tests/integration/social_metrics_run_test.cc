@@ -114,6 +114,22 @@ TEST_F(SocialMetricsRunTest, NamedMetricsJoinEveryFileAndChangeNoEpisode) {
       nlohmann::json::parse(Text("plain", "manifest.json"))["rows"][0]["metrics"].contains("spl"));
 }
 
+TEST_F(SocialMetricsRunTest, AMistypedMetricIsAnErrorNamingTheMetricMeant) {
+  const SuiteLoadResult r = LoadSuite(
+      dir_.Write("typo.yaml", std::string(kPlain) + "columns: [spl, jerk_meen]\n"), registry_);
+  EXPECT_FALSE(r.suite);
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_EQ(r.errors[0].line, 11);  // the columns: line after kPlain's ten
+  EXPECT_NE(r.errors[0].Format().find("'jerk_meen' is no row's info key and no social metric; "
+                                      "did you mean 'jerk_mean'?"),
+            std::string::npos)
+      << r.errors[0].Format();
+  // An info column of any other name stays what it was: filled from the rows' info.
+  EXPECT_TRUE(
+      LoadSuite(dir_.Write("info.yaml", std::string(kPlain) + "columns: [notes]\n"), registry_)
+          .suite);
+}
+
 TEST_F(SocialMetricsRunTest, AStoredRunResumesWithItsMetrics) {
   const Suite social = Load(std::string(kPlain) + "columns: [jerk_mean]\n");
   Run(social, "out");

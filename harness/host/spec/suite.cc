@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "crowdsim/bench/closest_name.h"
 #include "crowdsim/bench/episode_columns.h"
 #include "spec/config_text.h"
 #include "spec/kinematics_reader.h"
@@ -71,6 +72,33 @@ void ReadIsolation(Reader& r, const YAML::Node& root, Suite* s) {
 }  // namespace
 
 namespace {
+
+// A `columns:` name that no row's or summary's info fills and that is one typo from a social
+// metric's name: the metric was meant (an info column of that name would stay empty).
+void CheckNamedColumns(Reader& r, const YAML::Node& cols, const Suite& s) {
+  if (!cols || !cols.IsSequence()) return;
+  std::vector<std::string> metrics;
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (Social(c)) metrics.push_back(c.name);
+  }
+  std::set<std::string> filled;
+  for (const RowSpec& row : s.rows) {
+    for (const auto& [k, v] : row.info) filled.insert(k);
+  }
+  for (const SummarySpec& summary : s.summaries) {
+    for (const auto& [k, v] : summary.info) filled.insert(k);
+  }
+  for (size_t i = 0; i < cols.size(); ++i) {
+    if (!cols[i].IsScalar()) continue;
+    const std::string name = cols[i].as<std::string>();
+    if (IsSocialMetric(name) || filled.count(name)) continue;
+    const std::string hint = DidYouMean(name, metrics);
+    if (!hint.empty()) {
+      r.Error(cols[i], Reader::Index("columns", i),
+              "'" + name + "' is no row's info key and no social metric" + hint);
+    }
+  }
+}
 
 /// A suite row is a row spec with a label, extra table columns and published values.
 const RowRules kSuiteRowRules{"a policy plugin name such as linear or orca, or a .so path",
@@ -351,6 +379,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
       }
     }
   }
+  CheckNamedColumns(r, root["columns"], s);
   if (!r.errors.empty()) {
     // Suite-level sections (world, humans, robot sensors) are read once per row: report each
     // problem once.
