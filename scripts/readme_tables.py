@@ -4,8 +4,9 @@ pages cannot drift from results/<suite>/table.csv: each block between `<!-- tabl
 and `<!-- table:NAME end -->` is the suite NAME's rows, ours (success with its 95% interval)
 beside the paper's values where the row has them. A block `table:NAME:compact` has only the
 rows' description, the success and the paper's success; `table:NAME:social` the description,
-the success and the social navigation metrics of SOCIAL. Every suite of REQUIRED has a full
-block on some page.
+the success and the social navigation metrics of SOCIAL; `table:NAME:scenarios` a model x
+interaction scenario matrix of success / SPL (rows swept over `social_scenarios` worlds). Every
+suite of REQUIRED has a full block on some page.
 
     scripts/readme_tables.py            # rewrite the pages' blocks
     scripts/readme_tables.py --check    # exit 1 (and say which) when a block is out of date or missing
@@ -16,7 +17,7 @@ import re
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact|:social)?) begin -->\n)(?P<body>.*?)"
+BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact|:social|:scenarios)?) begin -->\n)(?P<body>.*?)"
                    r"(<!-- table:(?P=name)(?P=form) end -->)", re.S)
 # The pages that hold blocks, and the suites whose full table one of them must hold.
 PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
@@ -41,7 +42,7 @@ def paper(row, key):
     return f"{float(value):.3f}" if value else "-"
 
 
-def table(name: str, compact: bool = False, social: bool = False) -> str:
+def table(name: str, compact: bool = False, social: bool = False, scenarios: bool = False) -> str:
     path = ROOT / "results" / name / "table.csv"
     if not path.is_file():
         raise SystemExit(f"readme_tables: {path} does not exist (run the suite {name} first)")
@@ -53,6 +54,8 @@ def table(name: str, compact: bool = False, social: bool = False) -> str:
         return compact_table(rows, [c for c in info if c not in ("weights", "procedure")], with_paper)
     if social:
         return social_table(rows, info)
+    if scenarios:
+        return scenario_matrix(rows)
     head = info + ["success [95% CI]"] + (["paper"] if with_paper else []) + \
         ["collision"] + (["paper"] if with_paper else []) + ["timeout"] + \
         (["paper"] if with_paper else []) + ["nav. time"] + (["paper"] if with_paper else [])
@@ -106,6 +109,29 @@ def social_table(rows, info) -> str:
     return "\n".join(lines) + "\n"
 
 
+SCENARIO = re.compile(r"scenario: (?P<name>\w+)")
+
+
+def scenario_matrix(rows) -> str:
+    """Models down, scenarios across, each cell the success rate / SPL."""
+    models, scenarios, cells = [], [], {}
+    for r in rows:
+        m = SCENARIO.search(r["label"])
+        if not m:
+            raise SystemExit(f"readme_tables: row {r['label']!r} names no social_scenarios scenario")
+        model, scenario = r["model"], m.group("name")
+        if model not in models:
+            models.append(model)
+        if scenario not in scenarios:
+            scenarios.append(scenario)
+        cells[model, scenario] = f"{rate(r, 'success rate')} / {float(r['SPL']):.2f}"
+    head = ["model"] + [s.replace("_", " ") for s in scenarios]
+    lines = ["| " + " | ".join(head) + " |", "|---|" + "---:|" * len(scenarios)]
+    for model in models:
+        lines.append("| " + " | ".join([model] + [cells.get((model, s), "-") for s in scenarios]) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def main() -> int:
     check = "--check" in sys.argv[1:]
     stale = []
@@ -117,9 +143,10 @@ def main() -> int:
         def fill(m):
             compact = m.group("form") == ":compact"
             social = m.group("form") == ":social"
-            if not compact and not social:
+            scenarios = m.group("form") == ":scenarios"
+            if not compact and not social and not scenarios:
                 full.add(m.group("name"))
-            body = table(m.group("name"), compact, social)
+            body = table(m.group("name"), compact, social, scenarios)
             if body != m.group("body"):
                 stale.append(f"{name}: {m.group('name')}{m.group('form')}")
             return m.group(1) + body + m.group(5)
