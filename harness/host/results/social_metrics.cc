@@ -131,7 +131,7 @@ double TimeToCollision(const AgentState& a, const AgentState& b) {
 double ShortestFreePath(const StaticMap& map, const AgentState& robot) {
   const double straight = (robot.goal - robot.position).norm();
   if (map.rectangles.empty()) return straight;
-  const route::RouteField field(map, robot.goal, robot.radius, kRouteResolution);
+  const RouteField field(map, robot.goal, robot.radius, kRouteResolution);
   const double d = field.At(robot.position, 0.0).distance;
   return std::isfinite(d) ? std::max(d, straight) : straight;
 }

@@ -6,7 +6,7 @@
 #include <queue>
 #include <utility>
 
-namespace crowdsim::route {
+namespace crowdsim {
 // The 16 moves of the grid: 4 straight, 4 diagonal, 8 knight's moves (16 directions keep a
 // grid path within 2.7% of the straight length; 8 directions: 8.2%). A move needs only its
 // end cell free, not the cells its segment crosses: the distance to a convex obstacle along a
@@ -211,4 +211,4 @@ RouteField::Reading RouteField::At(const Vec2& p, double lookahead) const {
   return r;
 }
 
-}  // namespace crowdsim::route
+}  // namespace crowdsim

@@ -9,7 +9,7 @@
 #include "crowdsim/export.h"
 #include "crowdsim/static_map.h"
 
-namespace crowdsim::route {
+namespace crowdsim {
 
 class CROWDSIM_SDK_API RouteField {
  public:
@@ -64,4 +64,4 @@ class CROWDSIM_SDK_API RouteField {
   std::vector<double> value_;  // path length to the goal from each cell centre; kInfinity
 };
 
-}  // namespace crowdsim::route
+}  // namespace crowdsim
