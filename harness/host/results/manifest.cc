@@ -134,6 +134,13 @@ Json RowJson(const TableRow& line, bool social, const RunFacts& facts) {
   j["humans"] = {{"count", r.humans.count},
                  {"goal_mode", r.humans.goal_mode == HumanGoalMode::kStay ? "stay" : "new_goal"},
                  {"policy", PluginJson(r.humans.policy)}};
+  // Written only when set, as in the config hash.
+  auto range = [&](const char* key, const std::optional<AttributeRange>& a) {
+    if (a) j["humans"][key] = a->lo == a->hi ? Json(a->lo) : Json::array({a->lo, a->hi});
+  };
+  range("radius", r.humans.radius);
+  range("v_pref", r.humans.v_pref);
+  if (r.humans.distracted > 0.0) j["humans"]["distracted"] = r.humans.distracted;
   AddLineTail(line, social, &j);
   return j;
 }

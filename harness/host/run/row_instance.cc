@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "crowdsim/bench/human_attributes.h"
 #include "crowdsim/bench/runner.h"
 #include "crowdsim/rng.h"
 #include "run/worker_process.h"
@@ -87,6 +88,7 @@ ScenarioRequest MakeEpisodeRequest(const Suite& suite, const RowSpec& row, const
   req.num_humans = row.humans.count;
   req.goal_mode = row.humans.goal_mode;
   req.sim = suite.sim;
+  req.humans = DrawHumanAttributes(row.humans, suite.sim, req.seed, req.num_humans);
   return req;
 }
 

@@ -11,6 +11,7 @@
 #include "crowdsim/version.h"
 #include "run/slow_episode_watch.h"
 #include "spec/config_text.h"
+#include "spec/human_attributes_reader.h"
 
 namespace crowdsim {
 
@@ -105,7 +106,8 @@ void SuiteRow::CheckEveryLayout(int episodes, std::set<std::string>* checked) co
   // alone.
   std::ostringstream crowd;
   suite_internal::Canonical(row.world, crowd);
-  crowd << " " << row.humans.count << " " << static_cast<int>(row.humans.goal_mode);
+  crowd << " " << row.humans.count << " " << static_cast<int>(row.humans.goal_mode) << " ";
+  suite_internal::CanonicalHumanAttributes(row.humans, crowd);
   if (checked->count(crowd.str())) return;
   for (int k = 1; k < layouts; ++k) {
     try {

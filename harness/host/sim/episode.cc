@@ -233,6 +233,9 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
     s.heading = HeadingToGoal(s);
     humans_.push_back(s);
   }
+  const bool any_unaware = std::any_of(scenario_.humans.begin(), scenario_.humans.end(),
+                                       [](const HumanSpec& h) { return h.ignores_robot; });
+  if (sim_.robot_visible && any_unaware) unaware_index_ = std::make_unique<AgentIndex>();
   human_goal_index_.assign(humans_.size(), 0);
   human_reached_.assign(humans_.size(), false);
   human_actions_.resize(humans_.size());
@@ -302,6 +305,7 @@ void Episode::DecideHumans() {
   human_view_.assign(humans_.begin(), humans_.end());
   if (sim_.robot_visible) human_view_.push_back(robot_);
   human_index_.Rebuild(human_view_);
+  if (unaware_index_) unaware_index_->Rebuild(humans_);
   human_obs_.time = time_;
   human_obs_.agents = &human_index_;
   // The count read once: DecideHuman changes no size, but the compiler cannot know that.
@@ -321,6 +325,8 @@ void Episode::DecideHuman(int i) {
   human_obs_.frame = human_needs_[i].heading_frame ? Frame::Make(h.position, HeadingToGoal(h))
                                                    : Frame{.origin = h.position};
   human_obs_.self_index = i;
+  human_obs_.agents =
+      unaware_index_ && scenario_.humans[i].ignores_robot ? unaware_index_.get() : &human_index_;
   human_actions_[i] = DecideNamed(*agents_.humans[i], human_obs_, i);
   if (!human_actions_[i].velocity.allFinite()) {
     throw std::runtime_error(PolicyName(i) + " returned a non-finite velocity");

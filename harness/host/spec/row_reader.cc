@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "spec/human_attributes_reader.h"
 #include "spec/kinematics_reader.h"
 
 namespace crowdsim::suite_internal {
@@ -53,8 +54,7 @@ void ReadHumans(Reader& r, const YAML::Node& file_level, const YAML::Node& row_l
     return {YAML::Node(YAML::NodeType::Undefined), ""};
   };
   if (Present(row_level)) {
-    if (r.IsMap(row_level, path, "count, policy, params, goal_mode"))
-      r.CheckKeys(row_level, path, kHumansKeys);
+    if (r.IsMap(row_level, path, kHumansWhat)) r.CheckKeys(row_level, path, kHumansKeys);
   }
   if (auto [n, p] = pick("count"); Present(n)) ReadHumanCount(r, n, p, rules.humans_range, out);
   if (auto [n, p] = pick("goal_mode"); Present(n)) {
@@ -67,6 +67,7 @@ void ReadHumans(Reader& r, const YAML::Node& file_level, const YAML::Node& row_l
         r.Error(n, p, "value '" + *s + "' is not valid; valid: stay, new_goal");
     }
   }
+  ReadHumanAttributes(r, pick, out);
   auto [pn, pp] = pick("policy");
   const YAML::Node policy_node =
       Present(pn)

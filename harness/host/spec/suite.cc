@@ -12,6 +12,7 @@
 #include "crowdsim/bench/closest_name.h"
 #include "crowdsim/bench/episode_columns.h"
 #include "spec/config_text.h"
+#include "spec/human_attributes_reader.h"
 #include "spec/kinematics_reader.h"
 #include "spec/row_reader.h"
 #include "spec/spec_head_reader.h"
@@ -321,8 +322,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   d.world = root["world"];
   d.humans = root["humans"];
   if (Present(d.humans)) {
-    if (r.IsMap(d.humans, "humans", "count, policy, params, goal_mode"))
-      r.CheckKeys(d.humans, "humans", kHumansKeys);
+    if (r.IsMap(d.humans, "humans", kHumansWhat)) r.CheckKeys(d.humans, "humans", kHumansKeys);
   }
   if (const auto robot = root["robot"]) {
     if (r.IsMap(robot, "robot", "sensors, kinematics")) {
@@ -411,6 +411,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
     os << " world:";
     Canonical(row.world, os);
     os << " humans:" << row.humans.count << "," << static_cast<int>(row.humans.goal_mode) << ",";
+    CanonicalHumanAttributes(row.humans, os);
     Canonical(row.humans.policy, os);
     os << "\n";
     row.canonical = head.str() + os.str();

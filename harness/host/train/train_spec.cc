@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "spec/config_text.h"
+#include "spec/human_attributes_reader.h"
 #include "spec/kinematics_reader.h"
 #include "spec/row_reader.h"
 #include "spec/schema_defaults.h"
@@ -181,6 +182,7 @@ std::string Canonical(const TrainSpec& s) {
   os << "\nhumans:" << row.humans.count << "-" << row.humans.count_max << ",";
   // Written only when not the default, so existing trainings' hashes stay valid.
   if (row.humans.goal_mode != HumanGoalMode::kStay) os << "goal_mode=new_goal,";
+  suite_internal::CanonicalHumanAttributes(row.humans, os);
   suite_internal::Canonical(row.humans.policy, os);
   os << "\nteacher:";
   suite_internal::Canonical(s.teacher, os);

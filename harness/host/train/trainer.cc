@@ -14,6 +14,7 @@
 
 #include "atomic_file.h"
 #include "crowdsim/bench/episode.h"
+#include "crowdsim/bench/human_attributes.h"
 #include "crowdsim/bench/input_files.h"
 #include "crowdsim/bench/results.h"
 #include "crowdsim/bench/row_instance.h"
@@ -248,6 +249,7 @@ Scenario Trainer::MakeScenario(const char* stream, int index) const {
   }
   req.goal_mode = humans.goal_mode;
   req.sim = spec_.sim;
+  req.humans = DrawHumanAttributes(humans, spec_.sim, req.seed, req.num_humans);
   Scenario scenario = world_->Make(req);
   CheckHumanCount(req, scenario);
   return scenario;

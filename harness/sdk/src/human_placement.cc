@@ -64,10 +64,17 @@ double PassableGoalClearance(double human_radius, double padding) {
 
 namespace {
 
+// A placed human's point and radius: gaps between people add both radii.
+struct Disc {
+  Vec2 centre;
+  double radius = 0.0;
+};
+
 // One point to place: the discs it must keep clear of and the point its distance counts from.
 struct PointRule {
-  const std::vector<Vec2>* others = nullptr;  // same-kind points of humans placed before
-  double other_gap = 0.0;                     // centre distance to each of `others`
+  const std::vector<Disc>* others = nullptr;  // same-kind points of humans placed before
+  double radius = 0.0;                        // the placed human's own radius
+  double discomfort = 0.0;                    // centre gap to other k: radius + r_k + this
   Vec2 robot_point = Vec2::Zero();
   double robot_gap = 0.0;
   const Vec2* previous = nullptr;  // goal rule: the point walked from; null for starts
@@ -75,14 +82,14 @@ struct PointRule {
   const std::function<bool(const Vec2&)>* stricter = nullptr;  // goals: room to pass
 };
 
-bool FarFromAll(const Vec2& p, const std::vector<Vec2>& points, double gap) {
-  // (p - q).norm() >= gap, on squares where clearly apart; the square root only near the boundary.
-  const double gap_sq = gap * gap;
-  const double surely_far = gap_sq * (1.0 + 1e-9), surely_near = gap_sq * (1.0 - 1e-9);
-  return std::all_of(points.begin(), points.end(), [&](const Vec2& q) {
-    const double d_sq = (p - q).squaredNorm();
-    if (d_sq > surely_far) return true;
-    if (d_sq < surely_near) return false;
+bool FarFromAll(const Vec2& p, const PointRule& rule) {
+  // |p - q| >= gap, on squares where clearly apart; the square root only near the boundary.
+  return std::all_of(rule.others->begin(), rule.others->end(), [&](const Disc& q) {
+    const double gap = (rule.radius + q.radius) + rule.discomfort;
+    const double gap_sq = gap * gap;
+    const double d_sq = (p - q.centre).squaredNorm();
+    if (d_sq > gap_sq * (1.0 + 1e-9)) return true;
+    if (d_sq < gap_sq * (1.0 - 1e-9)) return false;
     return std::sqrt(d_sq) >= gap;
   });
 }
@@ -103,7 +110,7 @@ bool Draw(const PlacementArea& area, const PointSampler& sample, const PointRule
     // The tests are pure, so order only sets cost: distances first (most rejections), free-space
     // predicates (every rectangle) last.
     if ((p - rule.robot_point).norm() < rule.robot_gap) continue;
-    if (!FarFromAll(p, *rule.others, rule.other_gap)) continue;
+    if (!FarFromAll(p, rule)) continue;
     if (rule.previous != nullptr &&
         (p - *rule.previous).norm() < RelaxedDistance(rule.previous_min, t, max_tries)) {
       continue;
@@ -181,8 +188,7 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
   const int n = request.num_humans;
   const int goals_per_human =
       request.goal_mode == HumanGoalMode::kNewGoal ? options.new_goal_count : 1;
-  const double human_gap = 2.0 * options.human_radius + options.discomfort_dist;
-  const double robot_gap = options.human_radius + options.robot_radius + options.discomfort_dist;
+  const double d = options.discomfort_dist;
 
   // Points the sampler cannot place, and later ones of that kind, draw from the whole region.
   const PointSampler more = area.region.Area() > 0.0 ? UniformSampler(area.region) : PointSampler();
@@ -196,9 +202,9 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
     return more && Draw(area, more, rule, options.max_tries, rng, out);
   };
 
-  std::vector<Vec2> starts;
+  std::vector<Disc> starts;
   // goals_by_index[k]: the k-th goals of the humans placed so far (goal k meets goal k).
-  std::vector<std::vector<Vec2>> goals_by_index(static_cast<size_t>(goals_per_human));
+  std::vector<std::vector<Disc>> goals_by_index(static_cast<size_t>(goals_per_human));
   std::vector<HumanSpec> humans;
   humans.reserve(static_cast<size_t>(n));
 
@@ -206,13 +212,16 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
     HumanSpec h;
     h.radius = options.human_radius;
     h.v_pref = options.human_v_pref;
-    PointRule start_rule{&starts, human_gap, robot_start, robot_gap, nullptr, 0.0};
+    if (!request.humans.empty()) ApplyHumanAttributes(request, i, &h);
+    const double robot_gap = h.radius + options.robot_radius + d;
+    PointRule start_rule{&starts, h.radius, d, robot_start, robot_gap, nullptr, 0.0};
     if (!draw(start_rule, 0, &h.start)) Fail("start", i, n, options, area);
 
     Vec2 previous = h.start;
     for (int k = 0; k < goals_per_human; ++k) {
       PointRule goal_rule{&goals_by_index[static_cast<size_t>(k)],
-                          human_gap,
+                          h.radius,
+                          d,
                           robot_goal,
                           robot_gap,
                           &previous,
@@ -222,10 +231,10 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
       if (!draw(goal_rule, k + 1, &goal))
         Fail("goal " + std::to_string(k + 1), i, n, options, area);
       h.goals.push_back(goal);
-      goals_by_index[static_cast<size_t>(k)].push_back(goal);
+      goals_by_index[static_cast<size_t>(k)].push_back({goal, h.radius});
       previous = goal;
     }
-    starts.push_back(h.start);
+    starts.push_back({h.start, h.radius});
     humans.push_back(std::move(h));
   }
   return humans;

@@ -64,8 +64,9 @@ struct Placed {
 // r_h + r_A + discomfort_dist to any placed agent's position or goal; goal = -start.
 void CircleHuman(double radius, const ScenarioRequest& request, int index,
                  const std::vector<Placed>& placed, Rng& rng, Vec2* start, Vec2* goal) {
-  const double r_h = request.sim.human_radius;
-  const double v_pref = request.sim.human_v_pref;
+  const HumanAttributes self = HumanAttributesOf(request, index);
+  const double r_h = self.radius;
+  const double v_pref = self.v_pref;
   for (int t = 0; t < kMaxTries; ++t) {
     const double angle = rng.Uniform() * 2.0 * std::numbers::pi;
     const double px_noise = (rng.Uniform() - 0.5) * v_pref;
@@ -92,7 +93,7 @@ void CircleHuman(double radius, const ScenarioRequest& request, int index,
 // positions only), then the goal on the other side (tested against placed goals only).
 void SquareHuman(double width, const ScenarioRequest& request, int index,
                  const std::vector<Placed>& placed, Rng& rng, Vec2* start, Vec2* goal) {
-  const double r_h = request.sim.human_radius;
+  const double r_h = HumanAttributesOf(request, index).radius;
   const double sign = rng.Uniform() > 0.5 ? -1.0 : 1.0;
   auto clear = [&](const Vec2& p, bool against_goals) {
     for (const Placed& a : placed) {
@@ -184,11 +185,10 @@ Scenario CrowdNavWorld::Make(const ScenarioRequest& request) const {
     } else {
       SquareHuman(square_width_, request, i, placed, rng, &start, &goal);
     }
-    placed.push_back({start, goal, request.sim.human_radius});
     HumanSpec h;
     h.start = start;
-    h.radius = request.sim.human_radius;
-    h.v_pref = request.sim.human_v_pref;
+    ApplyHumanAttributes(request, i, &h);
+    placed.push_back({start, goal, h.radius});
     // New goals alternate between the far side and the start, drawing nothing more, so the
     // first goal (and everything CrowdNav does) stays identical in both goal modes.
     h.goals.reserve(static_cast<std::size_t>(goals));

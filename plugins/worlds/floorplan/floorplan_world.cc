@@ -88,11 +88,12 @@ Scenario FloorplanWorld::Make(const ScenarioRequest& request) const {
   s.seed = request.seed;
   s.layout = name_ + "/" + split_ + "/" + std::to_string(k);
   // Free points were sampled with the robot's clearance against the plan's mask; the
-  // predicate adds the kept rectangles for the human's own radius.
-  const auto free = std::make_shared<DiscFreeSpace>(map_, request.sim.human_radius);
+  // predicate adds the kept rectangles for the largest person's radius.
+  const double human_radius = LargestHumanRadius(request);
+  const auto free = std::make_shared<DiscFreeSpace>(map_, human_radius);
   // Goals leave room to pass: a human who stays on its goal must not close a passage.
-  const auto goal_space = std::make_shared<DiscFreeSpace>(
-      map_, PassableGoalClearance(request.sim.human_radius, passage_padding_));
+  const auto goal_space =
+      std::make_shared<DiscFreeSpace>(map_, PassableGoalClearance(human_radius, passage_padding_));
   // The plan's free points first (the scenarios of every committed table); a crowd larger than
   // those points hold goes on to the whole floor.
   PlacementArea area{[free](const Vec2& p) { return free->Contains(p); }, ListSampler(free_points_),

@@ -195,11 +195,13 @@ Scenario RandomRectWorld::Make(const ScenarioRequest& request) const {
                          " draws. Fix: lower min_start_goal_dist or check the layout");
   }
 
-  const auto human_space = std::make_shared<const DiscFreeSpace>(
-      map, request.sim.human_radius + options_.clearance_margin);
+  // Free space for the largest person: it holds every smaller one too.
+  const double human_radius = LargestHumanRadius(request);
+  const auto human_space =
+      std::make_shared<const DiscFreeSpace>(map, human_radius + options_.clearance_margin);
   // Goals leave room to pass: a human who stays on its goal must not close a passage.
   const auto goal_space = std::make_shared<const DiscFreeSpace>(
-      map, PassableGoalClearance(request.sim.human_radius, options_.passage_padding));
+      map, PassableGoalClearance(human_radius, options_.passage_padding));
   const PlacementArea area{[human_space](const Vec2& p) { return human_space->Contains(p); },
                            sample, [goal_space](const Vec2& p) { return goal_space->Contains(p); },
                            map->bounds};

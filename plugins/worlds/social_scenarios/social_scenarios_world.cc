@@ -34,8 +34,8 @@ Scenario SocialScenariosWorld::Make(const ScenarioRequest& request) const {
     HumanSpec h;
     h.start = p.start;
     h.goals = {p.goal};
-    h.radius = request.sim.human_radius;
-    h.v_pref = request.sim.human_v_pref * p.speed_factor;
+    ApplyHumanAttributes(request, k, &h);
+    h.v_pref *= p.speed_factor;
     s.humans.push_back(std::move(h));
   }
   return s;

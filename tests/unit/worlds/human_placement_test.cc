@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace crowdsim {
@@ -320,6 +321,59 @@ TEST(HumanPlacement, ZeroHumansIsEmpty) {
   EXPECT_TRUE(PlaceHumans(AreaOf(Room(10.0), 0.4), Vec2(0, -4), Vec2(0, 4),
                           Request(0, HumanGoalMode::kStay), HumanPlacementOptions{}, rng)
                   .empty());
+}
+
+// People of their own sizes keep their own gaps: r_i + r_j + discomfort between any two, r_i +
+// r_robot + discomfort from the robot, each with its drawn radius, speed and attention.
+TEST(HumanPlacement, VariedPeopleKeepGapsOfTheirOwnRadii) {
+  const auto map = Room(12.0, {Rect::FromCorners(-1, -1, 1, 1)});
+  const Vec2 robot_start(-4.0, -4.0), robot_goal(4.0, 4.0);
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    ScenarioRequest request = Request(8, HumanGoalMode::kStay);
+    Rng draws(seed);
+    for (int i = 0; i < 8; ++i) {
+      request.humans.push_back(
+          {std::round(draws.Uniform(0.3, 0.5) * 100) / 100, draws.Uniform(0.5, 1.5), i % 3 == 0});
+    }
+    const double largest = LargestHumanRadius(request);
+    const DiscFreeSpace space(map, largest);
+    Rng rng(seed);
+    const auto humans = PlaceHumans(AreaOf(map, largest), robot_start, robot_goal, request,
+                                    HumanPlacementOptions::FromRequest(request), rng);
+    ASSERT_EQ(humans.size(), 8u);
+    for (size_t i = 0; i < humans.size(); ++i) {
+      const HumanSpec& h = humans[i];
+      EXPECT_EQ(h.radius, request.humans[i].radius);
+      EXPECT_EQ(h.v_pref, request.humans[i].v_pref);
+      EXPECT_EQ(h.ignores_robot, request.humans[i].ignores_robot);
+      EXPECT_TRUE(space.Contains(h.start));
+      EXPECT_GE((h.start - robot_start).norm(), h.radius + 0.3 + 0.2);
+      EXPECT_GE((h.goals[0] - robot_goal).norm(), h.radius + 0.3 + 0.2);
+      for (size_t j = 0; j < i; ++j) {
+        const double gap = h.radius + humans[j].radius + 0.2;
+        EXPECT_GE((h.start - humans[j].start).norm(), gap) << "seed " << seed;
+        EXPECT_GE((h.goals[0] - humans[j].goals[0]).norm(), gap) << "seed " << seed;
+      }
+    }
+  }
+}
+
+// Attributes equal to the sim's place exactly the people the sim's radius places.
+TEST(HumanPlacement, AttributesOfTheSimsPersonChangeNoPlacement) {
+  const auto map = Room(10.0, {Rect::FromCorners(-1, -1, 1, 1)});
+  ScenarioRequest plain = Request(6, HumanGoalMode::kNewGoal);
+  ScenarioRequest drawn = plain;
+  drawn.humans.assign(6, HumanAttributes{0.3, 1.0, false});
+  Rng a(11), b(11);
+  const auto x = PlaceHumans(AreaOf(map, 0.3), Vec2(-3, -3), Vec2(3, 3), plain,
+                             HumanPlacementOptions::FromRequest(plain), a);
+  const auto y = PlaceHumans(AreaOf(map, 0.3), Vec2(-3, -3), Vec2(3, 3), drawn,
+                             HumanPlacementOptions::FromRequest(drawn), b);
+  ASSERT_EQ(x.size(), y.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    EXPECT_EQ(x[i].start, y[i].start);
+    EXPECT_EQ(x[i].goals, y[i].goals);
+  }
 }
 
 }  // namespace

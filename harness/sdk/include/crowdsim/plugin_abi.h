@@ -19,7 +19,7 @@ namespace crowdsim {
 
 /// Bump when any interface or this descriptor changes layout: the host refuses a plugin built for
 /// another version.
-inline constexpr std::uint32_t kPluginAbiVersion = 9;
+inline constexpr std::uint32_t kPluginAbiVersion = 10;
 
 /// Name of the exported alias.
 inline constexpr const char* kPluginAliasName = "crowdsim_plugin_v1";

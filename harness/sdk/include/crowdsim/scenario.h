@@ -18,6 +18,7 @@ struct CROWDSIM_SDK_API HumanSpec {
   std::vector<Vec2> goals;  ///< at least one
   double radius = 0.3;
   double v_pref = 1.0;
+  bool ignores_robot = false;  ///< a distracted person: the robot is never in its view
 };
 
 /// Everything needed to replay an episode exactly (with the policies).

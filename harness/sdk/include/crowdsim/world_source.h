@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "crowdsim/export.h"
 #include "crowdsim/scenario.h"
@@ -12,6 +13,14 @@ namespace crowdsim {
 
 enum class HumanGoalMode { kStay, kNewGoal };
 
+/// One person's own attributes, drawn per episode by the harness (suite `humans: {radius,
+/// v_pref, distracted}`, docs/humans.md).
+struct CROWDSIM_SDK_API HumanAttributes {
+  double radius = 0.3;         ///< m
+  double v_pref = 1.0;         ///< m/s
+  bool ignores_robot = false;  ///< distracted: never sees the robot, even a visible one
+};
+
 /// What the harness asks a world for.
 struct CROWDSIM_SDK_API ScenarioRequest {
   std::uint64_t seed = 0;  ///< episode seed (DeriveSeed)
@@ -19,7 +28,16 @@ struct CROWDSIM_SDK_API ScenarioRequest {
   int num_humans = 5;
   HumanGoalMode goal_mode = HumanGoalMode::kStay;
   SimConfig sim;  ///< radii and speeds
+  /// One per human when the people vary; empty: everybody has sim's radius and v_pref.
+  std::vector<HumanAttributes> humans;
 };
+
+/// Human i's attributes: request.humans[i], or sim's radius and v_pref when none are drawn.
+CROWDSIM_SDK_API HumanAttributes HumanAttributesOf(const ScenarioRequest& request, int i);
+/// The largest radius among the requested humans: the clearance of free space for any of them.
+CROWDSIM_SDK_API double LargestHumanRadius(const ScenarioRequest& request);
+/// Copies human i's attributes (radius, v_pref, ignores_robot) onto `spec`.
+CROWDSIM_SDK_API void ApplyHumanAttributes(const ScenarioRequest& request, int i, HumanSpec* spec);
 
 class CROWDSIM_SDK_API WorldSource {
  public:

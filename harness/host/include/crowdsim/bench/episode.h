@@ -176,6 +176,8 @@ class Episode {
   std::vector<Action> human_actions_;
   std::vector<AgentState> human_view_;  // agents humans see (humans + robot if visible)
   AgentIndex human_index_;
+  // Distracted people's view of a visible robot's episode: the humans alone (null: none).
+  std::unique_ptr<AgentIndex> unaware_index_;
   Observation robot_obs_;
   bool robot_obs_current_ = false;  ///< robot_obs_ shows the current state (ObserveRobot)
   Observation human_obs_;

@@ -33,12 +33,23 @@ struct PluginUse {
   Params params;
 };
 
+/// A per-person attribute: one value (lo == hi), or drawn uniformly from [lo, hi] per person.
+struct AttributeRange {
+  double lo = 0.0;
+  double hi = 0.0;
+};
+
 /// The humans of a row.
 struct HumansSpec {
   int count = 5;      ///< humans per episode; the least of a range
   int count_max = 5;  ///< the most: `count` itself, or a training file's range [count, count_max]
   PluginUse policy;
   HumanGoalMode goal_mode = HumanGoalMode::kStay;
+  std::optional<AttributeRange> radius;  ///< `radius:` (m); unset: sim.human_radius for all
+  std::optional<AttributeRange> v_pref;  ///< `v_pref:` (m/s); unset: sim.human_v_pref for all
+  double distracted = 0.0;  ///< `distracted:` chance that a person never sees the robot
+  /// Whether people differ from the sim's one person (the harness then draws their attributes).
+  bool Varied() const { return radius || v_pref || distracted > 0.0; }
 };
 
 /// Published values of a row (e.g. the paper's), shown beside ours; never in results or hash.

@@ -1,0 +1,27 @@
+// Internal: a row's per-person attributes (`humans: {radius, v_pref, distracted}`) and their
+// canonical text.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <utility>
+
+#include "crowdsim/bench/suite.h"
+#include "spec/suite_reader.h"
+
+namespace crowdsim::suite_internal {
+
+/// Reads `radius`, `v_pref` (a number or [lo, hi]) and `distracted` (a probability) from a
+/// `humans:` map; `pick` finds a key in the row, else the file (path for messages).
+void ReadHumanAttributes(Reader& r,
+                         const std::function<std::pair<YAML::Node, std::string>(const char*)>& pick,
+                         HumansSpec* out);
+
+/// Appends "radius=lo:hi,v_pref=lo:hi,distracted=p," for what is set: nothing for the sim's
+/// people, so old config hashes hold.
+void CanonicalHumanAttributes(const HumansSpec& humans, std::ostream& os);
+
+}  // namespace crowdsim::suite_internal
