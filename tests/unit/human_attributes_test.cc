@@ -91,5 +91,32 @@ TEST(HumanAttributes, OneKeySetLeavesTheOthersAtTheSimsValues) {
   }
 }
 
+// share 0.6 of 10 people: the first 6 walk in groups of 2-3 (consecutive ids from 0), the rest
+// alone; each group at the pace of its slowest member.
+TEST(HumanAttributes, GroupsTakeTheFirstShareOfThePeopleAtOnePace) {
+  HumansSpec spec = CrowdNavPeople();
+  spec.groups = GroupsSpec{0.6, 2, 3};
+  for (std::uint64_t seed = 1; seed <= 500; ++seed) {
+    const auto people = DrawHumanAttributes(spec, SimConfig{}, seed, 10);
+    int grouped = 0;
+    for (size_t i = 0; i < people.size();) {
+      size_t end = i + 1;
+      while (end < people.size() && people[i].group >= 0 && people[end].group == people[i].group)
+        ++end;
+      if (people[i].group >= 0) {
+        EXPECT_GE(end - i, 2u);
+        EXPECT_LE(end - i, 3u);
+        for (size_t k = i; k < end; ++k) EXPECT_EQ(people[k].v_pref, people[i].v_pref);
+        grouped += static_cast<int>(end - i);
+      }
+      i = end;
+    }
+    // round(0.6 * 10) = 6 grouped, or 5 when a 2 and a 3 leave one person over, who walks alone.
+    EXPECT_LE(grouped, 6);
+    EXPECT_GE(grouped, 5);
+    for (size_t i = 6; i < people.size(); ++i) EXPECT_EQ(people[i].group, -1);
+  }
+}
+
 }  // namespace
 }  // namespace crowdsim

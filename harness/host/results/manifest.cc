@@ -141,6 +141,10 @@ Json RowJson(const TableRow& line, bool social, const RunFacts& facts) {
   range("radius", r.humans.radius);
   range("v_pref", r.humans.v_pref);
   if (r.humans.distracted > 0.0) j["humans"]["distracted"] = r.humans.distracted;
+  if (const auto& g = r.humans.groups) {
+    j["humans"]["groups"] = {{"share", g->share},
+                             {"size", Json::array({g->size_min, g->size_max})}};
+  }
   AddLineTail(line, social, &j);
   return j;
 }

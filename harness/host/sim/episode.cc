@@ -231,6 +231,7 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
     s.radius = h.radius;
     s.v_pref = h.v_pref;
     s.heading = HeadingToGoal(s);
+    s.group = h.group;
     humans_.push_back(s);
   }
   const bool any_unaware = std::any_of(scenario_.humans.begin(), scenario_.humans.end(),

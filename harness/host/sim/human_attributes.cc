@@ -15,6 +15,30 @@ double Draw(const std::optional<AttributeRange>& range, double fallback, Rng& rn
   return range->lo + (range->hi - range->lo) * u;
 }
 
+// The first round(share * count) people walk in groups of sizes drawn in [size_min, size_max]
+// (the last one smaller, or alone when one person is left); each group walks at the pace of its
+// slowest member, so that it can stay together.
+void FormGroups(const GroupsSpec& groups, std::uint64_t episode_seed,
+                std::vector<HumanAttributes>* people) {
+  Rng rng(SplitMix64(episode_seed ^ 0x67726f757073ULL));  // "groups"
+  const int count = static_cast<int>(people->size());
+  const int grouped = std::min(count, static_cast<int>(std::lround(groups.share * count)));
+  const auto span = static_cast<std::uint64_t>(groups.size_max - groups.size_min + 1);
+  int next = 0, id = 0;
+  while (grouped - next >= 2) {
+    const int size = std::min(grouped - next, groups.size_min + static_cast<int>(rng.Below(span)));
+    double pace = (*people)[static_cast<size_t>(next)].v_pref;
+    for (int k = next; k < next + size; ++k)
+      pace = std::min(pace, (*people)[static_cast<size_t>(k)].v_pref);
+    for (int k = next; k < next + size; ++k) {
+      (*people)[static_cast<size_t>(k)].group = id;
+      (*people)[static_cast<size_t>(k)].v_pref = pace;
+    }
+    next += size;
+    ++id;
+  }
+}
+
 }  // namespace
 
 std::vector<HumanAttributes> DrawHumanAttributes(const HumansSpec& humans, const SimConfig& sim,
@@ -35,6 +59,7 @@ std::vector<HumanAttributes> DrawHumanAttributes(const HumansSpec& humans, const
     a.ignores_robot = rng.Uniform() < humans.distracted;
     people.push_back(a);
   }
+  if (humans.groups) FormGroups(*humans.groups, episode_seed, &people);
   return people;
 }
 

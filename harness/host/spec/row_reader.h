@@ -19,11 +19,11 @@ inline const std::vector<std::string> kRowSpecKeys = {"policy",     "params", "w
                                                       "kinematics", "world",  "humans"};
 
 /// The keys of a `humans:` map.
-inline const std::vector<std::string> kHumansKeys = {"count",  "policy", "params",    "goal_mode",
-                                                     "radius", "v_pref", "distracted"};
+inline const std::vector<std::string> kHumansKeys = {"count",  "policy", "params",     "goal_mode",
+                                                     "radius", "v_pref", "distracted", "groups"};
 /// What a `humans:` map holds, for "must be a map of ...".
 inline constexpr const char* kHumansWhat =
-    "count, policy, params, goal_mode, radius, v_pref, distracted";
+    "count, policy, params, goal_mode, radius, v_pref, distracted, groups";
 
 /// Fallbacks for what a row lacks: a suite's top-level `world`, `humans` (per key),
 /// `robot.sensors` and `robot.kinematics`, then schema defaults.

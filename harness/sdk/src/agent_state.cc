@@ -19,4 +19,18 @@ double HeadingToGoal(const AgentState& s) {
   return std::atan2(d.y(), d.x());
 }
 
+void GroupMates(std::span<const AgentState> agents, int self, std::vector<Vec2>* out) {
+  out->clear();
+  if (self < 0 || static_cast<size_t>(self) >= agents.size()) return;
+  const AgentState& me = agents[static_cast<size_t>(self)];
+  if (me.group < 0 || (me.goal - me.position).squaredNorm() < kGroupReleaseDist * kGroupReleaseDist)
+    return;
+  for (size_t k = static_cast<size_t>(self); k-- > 0 && agents[k].group == me.group;)
+    out->push_back(agents[k].position);
+  for (size_t k = static_cast<size_t>(self) + 1; k < agents.size() && agents[k].group == me.group;
+       ++k) {
+    out->push_back(agents[k].position);
+  }
+}
+
 }  // namespace crowdsim

@@ -42,6 +42,17 @@ PointSampler UniformSampler(const Rect& region) {
   };
 }
 
+PointSampler DiscSampler(const Vec2& centre, double radius) {
+  return [centre, radius](Rng& rng) {
+    // Rejection from the square: 79% of the draws land in the disc.
+    for (;;) {
+      const double x = rng.Uniform(-radius, radius);
+      const double y = rng.Uniform(-radius, radius);
+      if (x * x + y * y <= radius * radius) return Vec2(centre.x() + x, centre.y() + y);
+    }
+  };
+}
+
 PointSampler ListSampler(std::vector<Vec2> points) {
   if (points.empty()) throw std::invalid_argument("ListSampler: the list of points is empty");
   // Shared so that copies of the sampler do not copy a long list.
@@ -193,7 +204,12 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
   // Points the sampler cannot place, and later ones of that kind, draw from the whole region.
   const PointSampler more = area.region.Area() > 0.0 ? UniformSampler(area.region) : PointSampler();
   std::vector<char> sampler_spent(static_cast<size_t>(goals_per_human) + 1, 0);  // starts, goals
-  auto draw = [&](const PointRule& rule, int kind, Vec2* out) {
+  auto draw = [&](const PointRule& rule, int kind, const Vec2* near, Vec2* out) {
+    // A group member first near its leader's point; where none fits, anywhere.
+    if (near != nullptr &&
+        Draw(area, DiscSampler(*near, options.group_spread), rule, options.max_tries, rng, out)) {
+      return true;
+    }
     char& spent = sampler_spent[static_cast<size_t>(kind)];
     if (!spent) {
       if (Draw(area, area.sample, rule, options.max_tries, rng, out)) return true;
@@ -213,9 +229,12 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
     h.radius = options.human_radius;
     h.v_pref = options.human_v_pref;
     if (!request.humans.empty()) ApplyHumanAttributes(request, i, &h);
+    const int leader = request.humans.empty() ? -1 : GroupLeaderOf(request, i);
+    const HumanSpec* lead = leader >= 0 ? &humans[static_cast<size_t>(leader)] : nullptr;
     const double robot_gap = h.radius + options.robot_radius + d;
     PointRule start_rule{&starts, h.radius, d, robot_start, robot_gap, nullptr, 0.0};
-    if (!draw(start_rule, 0, &h.start)) Fail("start", i, n, options, area);
+    if (!draw(start_rule, 0, lead ? &lead->start : nullptr, &h.start))
+      Fail("start", i, n, options, area);
 
     Vec2 previous = h.start;
     for (int k = 0; k < goals_per_human; ++k) {
@@ -228,7 +247,7 @@ std::vector<HumanSpec> PlaceHumans(const PlacementArea& area, const Vec2& robot_
                           options.goal_min_dist,
                           &area.is_goal_free};
       Vec2 goal;
-      if (!draw(goal_rule, k + 1, &goal))
+      if (!draw(goal_rule, k + 1, lead ? &lead->goals[static_cast<size_t>(k)] : nullptr, &goal))
         Fail("goal " + std::to_string(k + 1), i, n, options, area);
       h.goals.push_back(goal);
       goals_by_index[static_cast<size_t>(k)].push_back({goal, h.radius});

@@ -130,6 +130,15 @@ ParamSchema Schema() {
        60.0,
        {},
        "s; a yield never lasts longer than this (>= yield_time)"},
+      {"group_cohesion",
+       ParamType::kBool,
+       true,
+       0,
+       1,
+       {},
+       "a walking group's member farther than (N-1)/2 m from the group's centre heads half "
+       "towards it (Moussaid et al. 2010's threshold; README)",
+       /*hashed_at_default=*/false},
       {"others_pref_zero",
        ParamType::kBool,
        true,
@@ -152,6 +161,7 @@ OrcaPolicy::OrcaPolicy(const Params& params)
       guidance_enabled_(params.GetBool("guidance")),
       guidance_margin_(params.GetDouble("guidance_margin")),
       yield_enabled_(params.GetBool("yield")),
+      group_cohesion_(params.GetBool("group_cohesion")),
       guidance_(static_cast<int>(params.GetInt("stall_steps"))),
       yielding_(YieldSettingsFrom(params)) {
   if (!params.GetBool("others_pref_zero")) {
@@ -291,8 +301,12 @@ Action OrcaPolicy::Decide(const Observation& obs) {
 
   Scratch& scratch = ThreadScratch();
   GatherNeighbours(obs, &scratch);
-  const Vec2 pref =
+  Vec2 pref =
       PreferredVelocity(self.position, Target(obs, radius, time_step, &scratch), self.v_pref);
+  if (group_cohesion_ && obs.agents != nullptr) {
+    GroupMates(obs.agents->agents(), obs.self_index, &scratch.group);
+    pref = KeepWithGroup(self.position, pref, self.v_pref, scratch.group);
+  }
 
   OrcaParams params;
   params.time_horizon = time_horizon_;

@@ -41,6 +41,7 @@ class OrcaPolicy final : public Policy {
       OrcaAgent agent;
     };
     std::vector<Seen> seen;
+    std::vector<Vec2> group;  ///< the walking group's other members
     OrcaSolveScratch solve;
   };
   /// The calling thread's scratch: one thread-local lookup (a call in a plugin) per decision.
@@ -65,6 +66,7 @@ class OrcaPolicy final : public Policy {
   bool guidance_enabled_;
   double guidance_margin_;
   bool yield_enabled_;
+  bool group_cohesion_;
 
   // Episode state.
   const StaticMap* ctx_map_ = nullptr;

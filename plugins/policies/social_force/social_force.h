@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <span>
 
 #include "crowdsim/geometry.h"
 
@@ -19,6 +20,24 @@ struct Constants {
   double cos_view = -0.17364817;  ///< cos(φ), φ = 100°: half the field of view (2φ = 200°)
   double out_of_view = 0.5;       ///< c, weight of a pedestrian outside the field of view
 };
+
+/// The group forces' constants: Moussaïd et al. 2010's forces (PLoS ONE 5(4) e10047) with
+/// PySocialForce's factors (README.md).
+struct GroupConstants {
+  double coherence = 2.0;       ///< m/s^2, pull towards the group's centre beyond (N - 1) / 2 m
+  double repulsion = 1.0;       ///< m/s^2, push from each member closer than repulsion_dist
+  double repulsion_dist = 0.5;  ///< m between centres
+  double gaze = 3.0;            ///< m/s^2 per rad, turn towards the others beyond half_view
+  double half_view = 1.7453292519943295;  ///< rad (100°) between walking direction and them
+};
+
+/// The group forces on a member at `position` walking along unit `e` (its desired direction;
+/// zero: no gaze force), with the group's other members at `others` (empty: no force):
+///  - coherence: g.coherence towards the centre of all N members when farther than (N - 1) / 2;
+///  - repulsion: g.repulsion away from each other member closer than g.repulsion_dist;
+///  - gaze: -g.gaze (α - half_view) e when the others' centre is α > half_view off e.
+Vec2 GroupForce(const Vec2& position, const Vec2& e, std::span<const Vec2> others,
+                const GroupConstants& g);
 
 /// Acceleration towards `desired` (velocity, m/s) from `velocity` within `tau`: (v0 e - v) / τ.
 inline Vec2 DrivingForce(const Vec2& velocity, const Vec2& desired, double tau) {

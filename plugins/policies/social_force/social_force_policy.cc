@@ -12,6 +12,7 @@ namespace crowdsim::social_force {
 
 ParamSchema Schema() {
   const Constants c;
+  const GroupConstants g;
   return {
       {"tau", ParamType::kDouble, c.tau, 0.05, 10.0, {}, "s; relaxation time (HM95: 0.5)"},
       {"v0",
@@ -99,6 +100,49 @@ ParamSchema Schema() {
        2.0,
        {},
        "m; roadmap corners sit this much farther out than the agent's radius (as ORCA's)"},
+      // Group forces act on members of walking groups alone: at their defaults they are left
+      // out of the config hash, so results without groups keep theirs.
+      {"group_coherence",
+       ParamType::kDouble,
+       g.coherence,
+       0.0,
+       100.0,
+       {},
+       "m/s^2; pull towards the group's centre beyond (N-1)/2 m (PySocialForce: 2)",
+       /*hashed_at_default=*/false},
+      {"group_repulsion",
+       ParamType::kDouble,
+       g.repulsion,
+       0.0,
+       100.0,
+       {},
+       "m/s^2; push from a member closer than group_repulsion_dist (PySocialForce: 1)",
+       /*hashed_at_default=*/false},
+      {"group_repulsion_dist",
+       ParamType::kDouble,
+       g.repulsion_dist,
+       0.0,
+       10.0,
+       {},
+       "m between centres (PySocialForce: 0.5)",
+       /*hashed_at_default=*/false},
+      {"group_gaze",
+       ParamType::kDouble,
+       g.gaze,
+       0.0,
+       100.0,
+       {},
+       "m/s^2 per rad; turn towards the other members beyond group_view (PySocialForce: 3)",
+       /*hashed_at_default=*/false},
+      {"group_view",
+       ParamType::kDouble,
+       100.0,
+       0.0,
+       180.0,
+       {},
+       "degrees between walking direction and the others' centre before gazing (PySocialForce: "
+       "100)",
+       /*hashed_at_default=*/false},
   };
 }
 
@@ -117,6 +161,11 @@ SocialForcePolicy::SocialForcePolicy(const Params& params)
   constants_.r_wall = params.GetDouble("r");
   constants_.cos_view = std::cos(params.GetDouble("view_angle") * M_PI / 360.0);
   constants_.out_of_view = params.GetDouble("out_of_view");
+  group_constants_.coherence = params.GetDouble("group_coherence");
+  group_constants_.repulsion = params.GetDouble("group_repulsion");
+  group_constants_.repulsion_dist = params.GetDouble("group_repulsion_dist");
+  group_constants_.gaze = params.GetDouble("group_gaze");
+  group_constants_.half_view = params.GetDouble("group_view") * M_PI / 180.0;
 }
 
 PolicyNeeds SocialForcePolicy::Needs() const {
@@ -152,7 +201,8 @@ void SocialForcePolicy::GatherOthers(const Observation& obs) {
 }
 
 Vec2 SocialForcePolicy::Acceleration(const AgentState& self, const orca::GuidanceTarget& target,
-                                     const std::vector<std::pair<Vec2, Vec2>>& others) const {
+                                     const std::vector<std::pair<Vec2, Vec2>>& others,
+                                     std::span<const Vec2> group) const {
   const Vec2 desired = orca::PreferredVelocity(self.position, target, self.v_pref);
   Vec2 total = DrivingForce(self.velocity, desired, constants_.tau);
   // The heading that decides the field of view: where the agent wants to go.
@@ -168,6 +218,7 @@ Vec2 SocialForcePolicy::Acceleration(const AgentState& self, const orca::Guidanc
       if (r.squaredNorm() < wall_range_ * wall_range_) total += WallRepulsion(r, constants_);
     }
   }
+  if (!group.empty()) total += GroupForce(self.position, e, group, group_constants_);
   return total;
 }
 
@@ -204,7 +255,9 @@ Action SocialForcePolicy::Decide(const Observation& obs) {
                                           ? guidance_.Next(self.position, self.goal)
                                           : orca::GuidanceTarget{self.goal, true};
   GatherOthers(obs);
-  Vec2 velocity = self.velocity + Acceleration(self, target, others_) * time_step_;
+  group_.clear();
+  if (obs.agents != nullptr) GroupMates(obs.agents->agents(), obs.self_index, &group_);
+  Vec2 velocity = self.velocity + Acceleration(self, target, others_, group_) * time_step_;
   const double max_speed = max_speed_factor_ * self.v_pref;
   if (velocity.norm() > max_speed) velocity *= max_speed / velocity.norm();
   return Action{SlideAlongRectangles(self.position, self.radius, velocity)};

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "crowdsim/params.h"
@@ -24,9 +25,11 @@ class SocialForcePolicy final : public Policy {
   Action Decide(const Observation& obs) override;
 
   /// The summed acceleration (m/s^2) on `self` heading for `target` among `others` (position,
-  /// velocity) and the map's rectangles: what Decide integrates over one step.
+  /// velocity), its group's other members at `group` and the map's rectangles: what Decide
+  /// integrates over one step.
   Vec2 Acceleration(const AgentState& self, const orca::GuidanceTarget& target,
-                    const std::vector<std::pair<Vec2, Vec2>>& others) const;
+                    const std::vector<std::pair<Vec2, Vec2>>& others,
+                    std::span<const Vec2> group = {}) const;
 
  private:
   /// Fills others_ with the neighbours' (position, velocity): ground truth for a human, the
@@ -37,6 +40,7 @@ class SocialForcePolicy final : public Policy {
   Vec2 SlideAlongRectangles(const Vec2& position, double radius, Vec2 velocity) const;
 
   Constants constants_;
+  GroupConstants group_constants_;
   double max_speed_factor_;
   double neighbor_dist_;
   int max_neighbors_;
@@ -49,6 +53,7 @@ class SocialForcePolicy final : public Policy {
   double roadmap_radius_ = -1.0;
   orca::Guidance guidance_;
   std::vector<std::pair<Vec2, Vec2>> others_;
+  std::vector<Vec2> group_;
   std::vector<int> ids_;
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crowdsim/geometry.h"
+#include "crowdsim/human_placement.h"
 #include "crowdsim/rng.h"
 
 namespace crowdsim::crowdnav {
@@ -61,17 +62,26 @@ struct Placed {
 }
 
 // generate_circle_crossing_human: angle, x noise, y noise; rejected when closer than
-// r_h + r_A + discomfort_dist to any placed agent's position or goal; goal = -start.
+// r_h + r_A + discomfort_dist to any placed agent's position or goal; goal = -start. A group
+// member draws its start near its leader's first (HumanPlacementOptions::group_spread).
 void CircleHuman(double radius, const ScenarioRequest& request, int index,
-                 const std::vector<Placed>& placed, Rng& rng, Vec2* start, Vec2* goal) {
+                 const std::vector<Placed>& placed, const Vec2* leader, Rng& rng, Vec2* start,
+                 Vec2* goal) {
   const HumanAttributes self = HumanAttributesOf(request, index);
   const double r_h = self.radius;
   const double v_pref = self.v_pref;
+  const PointSampler near =
+      leader ? DiscSampler(*leader, HumanPlacementOptions{}.group_spread) : PointSampler();
   for (int t = 0; t < kMaxTries; ++t) {
-    const double angle = rng.Uniform() * 2.0 * std::numbers::pi;
-    const double px_noise = (rng.Uniform() - 0.5) * v_pref;
-    const double py_noise = (rng.Uniform() - 0.5) * v_pref;
-    const Vec2 p(radius * std::cos(angle) + px_noise, radius * std::sin(angle) + py_noise);
+    Vec2 p;
+    if (near && t < kMaxTries / 2) {
+      p = near(rng);
+    } else {
+      const double angle = rng.Uniform() * 2.0 * std::numbers::pi;
+      const double px_noise = (rng.Uniform() - 0.5) * v_pref;
+      const double py_noise = (rng.Uniform() - 0.5) * v_pref;
+      p = Vec2(radius * std::cos(angle) + px_noise, radius * std::sin(angle) + py_noise);
+    }
     bool collide = false;
     for (const Placed& a : placed) {
       const double min_dist = r_h + a.radius + request.sim.discomfort_dist;
@@ -92,8 +102,10 @@ void CircleHuman(double radius, const ScenarioRequest& request, int index,
 // generate_square_crossing_human: side sign first, then the start (tested against placed
 // positions only), then the goal on the other side (tested against placed goals only).
 void SquareHuman(double width, const ScenarioRequest& request, int index,
-                 const std::vector<Placed>& placed, Rng& rng, Vec2* start, Vec2* goal) {
+                 const std::vector<Placed>& placed, const Placed* leader, Rng& rng, Vec2* start,
+                 Vec2* goal) {
   const double r_h = HumanAttributesOf(request, index).radius;
+  const double spread = HumanPlacementOptions{}.group_spread;
   const double sign = rng.Uniform() > 0.5 ? -1.0 : 1.0;
   auto clear = [&](const Vec2& p, bool against_goals) {
     for (const Placed& a : placed) {
@@ -103,18 +115,29 @@ void SquareHuman(double width, const ScenarioRequest& request, int index,
     return true;
   };
   bool ok = false;
+  // A group member tries near its leader's start and goal for the first half of the tries.
+  const PointSampler near_start = leader ? DiscSampler(leader->position, spread) : PointSampler();
+  const PointSampler near_goal = leader ? DiscSampler(leader->goal, spread) : PointSampler();
   for (int t = 0; t < kMaxTries && !ok; ++t) {
-    const double px = rng.Uniform() * width * 0.5 * sign;
-    const double py = (rng.Uniform() - 0.5) * width;
-    *start = Vec2(px, py);
+    if (near_start && t < kMaxTries / 2) {
+      *start = near_start(rng);
+    } else {
+      const double px = rng.Uniform() * width * 0.5 * sign;
+      const double py = (rng.Uniform() - 0.5) * width;
+      *start = Vec2(px, py);
+    }
     ok = clear(*start, false);
   }
   if (!ok) Fail(index, request, false, width);
   ok = false;
   for (int t = 0; t < kMaxTries && !ok; ++t) {
-    const double gx = rng.Uniform() * width * 0.5 * -sign;
-    const double gy = (rng.Uniform() - 0.5) * width;
-    *goal = Vec2(gx, gy);
+    if (near_goal && t < kMaxTries / 2) {
+      *goal = near_goal(rng);
+    } else {
+      const double gx = rng.Uniform() * width * 0.5 * -sign;
+      const double gy = (rng.Uniform() - 0.5) * width;
+      *goal = Vec2(gx, gy);
+    }
     ok = clear(*goal, true);
   }
   if (!ok) Fail(index, request, false, width);
@@ -180,10 +203,14 @@ Scenario CrowdNavWorld::Make(const ScenarioRequest& request) const {
   const int goals = request.goal_mode == HumanGoalMode::kNewGoal ? new_goal_count_ : 1;
   for (int i = 0; i < request.num_humans; ++i) {
     Vec2 start, goal;
+    // placed[0] is the robot: human k is placed[k + 1].
+    const int leader = GroupLeaderOf(request, i);
+    const Placed* lead = leader >= 0 ? &placed[static_cast<size_t>(leader) + 1] : nullptr;
     if (crossing_ == Crossing::kCircle) {
-      CircleHuman(circle_radius_, request, i, placed, rng, &start, &goal);
+      CircleHuman(circle_radius_, request, i, placed, lead ? &lead->position : nullptr, rng, &start,
+                  &goal);
     } else {
-      SquareHuman(square_width_, request, i, placed, rng, &start, &goal);
+      SquareHuman(square_width_, request, i, placed, lead, rng, &start, &goal);
     }
     HumanSpec h;
     h.start = start;

@@ -305,5 +305,17 @@ TEST(OrcaYieldingTest, HeadOnMeetingInAOneMetrePassageResolves) {
   EXPECT_LE(penetration, 1e-9);
 }
 
+// A pair 2 m apart: the centre is 1 m away, beyond the 0.5 m threshold, so the member heads along
+// (goal direction + 2 x centre direction) at v_pref; within it, or alone, the velocity stays.
+TEST(OrcaGroupTest, AFarMemberHeadsTowardsItsGroup) {
+  const Vec2 partner[] = {Vec2(0.0, 2.0)};
+  const Vec2 v = KeepWithGroup(Vec2::Zero(), Vec2(1.2, 0.0), 1.2, partner);
+  EXPECT_NEAR(v.norm(), 1.2, 1e-12);
+  EXPECT_NEAR(v.y() / v.x(), 2.0, 1e-12);
+  const Vec2 near[] = {Vec2(0.0, 0.9)};
+  EXPECT_EQ(KeepWithGroup(Vec2::Zero(), Vec2(1.2, 0.0), 1.2, near), Vec2(1.2, 0.0));
+  EXPECT_EQ(KeepWithGroup(Vec2::Zero(), Vec2(1.2, 0.0), 1.2, {}), Vec2(1.2, 0.0));
+}
+
 }  // namespace
 }  // namespace crowdsim::orca

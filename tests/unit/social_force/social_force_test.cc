@@ -19,6 +19,42 @@
 namespace crowdsim::social_force {
 namespace {
 
+// Moussaïd et al. 2010's group forces, by hand. A pair 2 m apart: the centre is 1 m away, beyond
+// the (2 - 1) / 2 = 0.5 m threshold, so coherence pulls with 2 m/s^2 towards it; the partner lies
+// straight ahead (no gaze force) and is farther than 0.5 m (no repulsion).
+TEST(SocialForce, AFarPartnerPullsWithTheCoherenceFactor) {
+  const GroupConstants g;
+  const Vec2 partner[] = {Vec2(2.0, 0.0)};
+  const Vec2 f = GroupForce(Vec2::Zero(), Vec2(1.0, 0.0), partner, g);
+  EXPECT_NEAR(f.x(), 2.0, 1e-12);
+  EXPECT_NEAR(f.y(), 0.0, 1e-12);
+  // Within the threshold (centre 0.4 m away) nothing pulls.
+  const Vec2 near[] = {Vec2(0.8, 0.0)};
+  EXPECT_NEAR(GroupForce(Vec2::Zero(), Vec2(1.0, 0.0), near, g).norm(), 0.0, 1e-12);
+  // Alone: no force.
+  EXPECT_EQ(GroupForce(Vec2::Zero(), Vec2(1.0, 0.0), {}, g), Vec2::Zero());
+}
+
+// The partner 0.4 m to the left of a member walking along x: closer than 0.5 m, it pushes with
+// 1 m/s^2 away (along -y); at 90° it is within the 100° view, so no gaze force.
+TEST(SocialForce, AClosePartnerPushesAway) {
+  const GroupConstants g;
+  const Vec2 partner[] = {Vec2(0.0, 0.4)};
+  const Vec2 f = GroupForce(Vec2::Zero(), Vec2(1.0, 0.0), partner, g);
+  EXPECT_NEAR(f.x(), 0.0, 1e-12);
+  EXPECT_NEAR(f.y(), -1.0, 1e-12);
+}
+
+// The partner 0.8 m straight behind: 180° off the walking direction, 80° beyond the 100° view,
+// so the gaze force is -3 (80° in rad) e; the centre is 0.4 m away (no pull), no repulsion.
+TEST(SocialForce, APartnerBehindTurnsTheGaze) {
+  const GroupConstants g;
+  const Vec2 partner[] = {Vec2(-0.8, 0.0)};
+  const Vec2 f = GroupForce(Vec2::Zero(), Vec2(1.0, 0.0), partner, g);
+  EXPECT_NEAR(f.x(), -3.0 * 80.0 * M_PI / 180.0, 1e-9);
+  EXPECT_NEAR(f.y(), 0.0, 1e-12);
+}
+
 // A standing person 1 m away pushes with V0/σ exp(-1/σ) = 7 exp(-10/3) along the line.
 TEST(SocialForce, AStandingPersonPushesWithTheCircularGradient) {
   const Constants c;

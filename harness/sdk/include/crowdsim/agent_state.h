@@ -1,6 +1,9 @@
 // Kinematic state of one agent (robot or human).
 #pragma once
 
+#include <span>
+#include <vector>
+
 #include "crowdsim/export.h"
 #include "crowdsim/geometry.h"
 
@@ -14,6 +17,9 @@ struct CROWDSIM_SDK_API AgentState {
   double radius = 0.3;           ///< m
   double v_pref = 1.0;           ///< preferred speed, m/s
   double heading = 0.0;          ///< rad; holonomic robot: direction to its goal (no state)
+  /// A person's walking group (docs/humans.md); -1 alone, and for the robot. Members of a group
+  /// are consecutive in the humans' list.
+  int group = -1;
 };
 
 /// The agent-centric frame of sensors and learned policies: origin at the agent, x along its
@@ -42,5 +48,14 @@ struct CROWDSIM_SDK_API Frame {
 
 /// Heading of a holonomic robot: the direction to its goal (0 when on the goal).
 CROWDSIM_SDK_API double HeadingToGoal(const AgentState& s);
+
+/// Within this distance (m) of its goal a group member walks alone: members' goals lie apart, so
+/// keeping together there would hold them off their goals (docs/humans.md).
+inline constexpr double kGroupReleaseDist = 1.0;
+
+/// Fills `out` with the positions of the other members of agents[self]'s walking group (they are
+/// consecutive in `agents`); empty when it walks alone, or is within kGroupReleaseDist of its goal.
+CROWDSIM_SDK_API void GroupMates(std::span<const AgentState> agents, int self,
+                                 std::vector<Vec2>* out);
 
 }  // namespace crowdsim

@@ -44,6 +44,8 @@ using PointSampler = std::function<Vec2(Rng&)>;
 
 /// Uniform candidates in `region` (rooms generated from rectangles).
 CROWDSIM_SDK_API PointSampler UniformSampler(const Rect& region);
+/// Uniform candidates in the disc of `radius` around `centre` (group members near their leader).
+CROWDSIM_SDK_API PointSampler DiscSampler(const Vec2& centre, double radius);
 /// Candidates drawn uniformly from a fixed list (floor plans' free points); `points` non-empty.
 CROWDSIM_SDK_API PointSampler ListSampler(std::vector<Vec2> points);
 
@@ -75,6 +77,7 @@ struct CROWDSIM_SDK_API HumanPlacementOptions {
   double goal_min_dist = 3.0;    ///< m; a goal's distance from the previous point, if room allows
   int new_goal_count = 16;       ///< goals per human in HumanGoalMode::kNewGoal (>= 1)
   int max_tries = 2000;          ///< candidate draws per point before giving up (>= 1)
+  double group_spread = 1.5;     ///< m; a group member starts and ends this near its leader's
 
   /// Options from a request's radii, speeds and discomfort distance (other fields default).
   static HumanPlacementOptions FromRequest(const ScenarioRequest& request);
@@ -84,8 +87,9 @@ struct CROWDSIM_SDK_API HumanPlacementOptions {
 /// discomfort_dist from the robot's start; goals likewise (goal k against goal k, and the robot's
 /// goal). Each goal is at least goal_min_dist from the previous point and satisfies
 /// area.is_goal_free (if set); both relax over the second half of the tries. kStay: one goal;
-/// kNewGoal: new_goal_count. Candidates: area.sample, then area.region if set. Deterministic per
-/// rng state. Throws PlacementError (with density when area.region is set).
+/// kNewGoal: new_goal_count. Candidates: area.sample, then area.region if set; a group member's
+/// first within group_spread of its leader's point. Deterministic per rng state. Throws
+/// PlacementError (with density when area.region is set).
 CROWDSIM_SDK_API std::vector<HumanSpec> PlaceHumans(const PlacementArea& area,
                                                     const Vec2& robot_start, const Vec2& robot_goal,
                                                     const ScenarioRequest& request,

@@ -19,6 +19,7 @@ struct CROWDSIM_SDK_API HumanSpec {
   double radius = 0.3;
   double v_pref = 1.0;
   bool ignores_robot = false;  ///< a distracted person: the robot is never in its view
+  int group = -1;              ///< walking group, -1 alone; a group's members are consecutive
 };
 
 /// Everything needed to replay an episode exactly (with the policies).

@@ -19,6 +19,9 @@ struct CROWDSIM_SDK_API HumanAttributes {
   double radius = 0.3;         ///< m
   double v_pref = 1.0;         ///< m/s
   bool ignores_robot = false;  ///< distracted: never sees the robot, even a visible one
+  /// Walking group, -1 alone. Members are consecutive, the first one leads: worlds place the
+  /// others near it, start and goal.
+  int group = -1;
 };
 
 /// What the harness asks a world for.
@@ -36,7 +39,9 @@ struct CROWDSIM_SDK_API ScenarioRequest {
 CROWDSIM_SDK_API HumanAttributes HumanAttributesOf(const ScenarioRequest& request, int i);
 /// The largest radius among the requested humans: the clearance of free space for any of them.
 CROWDSIM_SDK_API double LargestHumanRadius(const ScenarioRequest& request);
-/// Copies human i's attributes (radius, v_pref, ignores_robot) onto `spec`.
+/// Human i's group leader (the group's first member), or -1 when i walks alone or leads.
+CROWDSIM_SDK_API int GroupLeaderOf(const ScenarioRequest& request, int i);
+/// Copies human i's attributes (radius, v_pref, ignores_robot, group) onto `spec`.
 CROWDSIM_SDK_API void ApplyHumanAttributes(const ScenarioRequest& request, int i, HumanSpec* spec);
 
 class CROWDSIM_SDK_API WorldSource {

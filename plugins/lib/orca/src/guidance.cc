@@ -90,4 +90,19 @@ GuidanceTarget Guidance::Next(const Vec2& position, const Vec2& goal) {
   return {path_[next_], next_ + 1 == path_.size()};
 }
 
+Vec2 KeepWithGroup(const Vec2& position, const Vec2& pref, double v_pref,
+                   std::span<const Vec2> mates) {
+  if (mates.empty()) return pref;
+  Vec2 centre = position;
+  for (const Vec2& q : mates) centre += q;
+  const double n = static_cast<double>(mates.size()) + 1.0;
+  const Vec2 to_centre = centre / n - position;
+  const double d = to_centre.norm();
+  if (d <= 0.5 * (n - 1.0)) return pref;
+  const double speed = pref.norm();
+  const Vec2 towards = (speed > 0.0 ? Vec2(pref / speed) : Vec2::Zero()) + 2.0 * to_centre / d;
+  const double norm = towards.norm();
+  return norm > 0.0 ? Vec2(towards * (v_pref / norm)) : pref;
+}
+
 }  // namespace crowdsim::orca

@@ -39,6 +39,13 @@ struct AttributeRange {
   double hi = 0.0;
 };
 
+/// `humans.groups`: people who walk together (docs/humans.md).
+struct GroupsSpec {
+  double share = 0.0;  ///< of the people, the share who walk in groups (rounded to whole people)
+  int size_min = 2;    ///< a group's size, drawn uniformly in [size_min, size_max]
+  int size_max = 3;
+};
+
 /// The humans of a row.
 struct HumansSpec {
   int count = 5;      ///< humans per episode; the least of a range
@@ -47,9 +54,10 @@ struct HumansSpec {
   HumanGoalMode goal_mode = HumanGoalMode::kStay;
   std::optional<AttributeRange> radius;  ///< `radius:` (m); unset: sim.human_radius for all
   std::optional<AttributeRange> v_pref;  ///< `v_pref:` (m/s); unset: sim.human_v_pref for all
-  double distracted = 0.0;  ///< `distracted:` chance that a person never sees the robot
+  double distracted = 0.0;           ///< `distracted:` chance that a person never sees the robot
+  std::optional<GroupsSpec> groups;  ///< `groups:`; unset: everybody walks alone
   /// Whether people differ from the sim's one person (the harness then draws their attributes).
-  bool Varied() const { return radius || v_pref || distracted > 0.0; }
+  bool Varied() const { return radius || v_pref || distracted > 0.0 || groups; }
 };
 
 /// Published values of a row (e.g. the paper's), shown beside ours; never in results or hash.

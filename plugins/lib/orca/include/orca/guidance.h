@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "crowdsim/geometry.h"
@@ -28,6 +29,12 @@ inline Vec2 PreferredVelocity(const Vec2& position, const GuidanceTarget& target
   if (dist <= 0.0) return Vec2::Zero();
   return to_target * (v_pref / dist);
 }
+
+/// A walking group's cohesion for an ORCA person (Moussaïd et al. 2010's threshold): farther than
+/// (N - 1) / 2 m from the centre of its N members, it heads half along `pref`, half towards the
+/// centre, at v_pref; else (and alone: `mates` empty) `pref` as it is.
+Vec2 KeepWithGroup(const Vec2& position, const Vec2& pref, double v_pref,
+                   std::span<const Vec2> mates);
 
 /// Path-following state of one agent (one per policy instance; not shared).
 class Guidance {
