@@ -24,10 +24,10 @@ constexpr const char* kSuite = R"(name: logged
 episodes: 6
 seed: 3
 world: {source: random_rect, obstacles: 1, split: test}
-humans: {count: 5, policy: orca}
+humans: {count: 5, policy: orca, groups: {share: 0.6, size: 2}}
 robot:
   sensors: [person]
-columns: [spl]
+columns: [spl, group_intrusions]
 rows:
   - {label: orca, policy: orca}
   - {label: unicycle, policy: orca, kinematics: unicycle}
@@ -82,7 +82,8 @@ TEST_F(EpisodeLogTest, ScoringTheRecordedLogsGivesTheRunsColumns) {
     scored.outcome.status = *log.status;
     scored.outcome.social = ScoreEpisodeLog(log);
     EXPECT_EQ(scored.outcome.status, run.outcome.status) << log_path;
-    for (const EpisodeColumn* c : EpisodeColumnsOf(true)) {
+    // Every family: the groups' metrics come from the people's logged groups.
+    for (const EpisodeColumn* c : EpisodeColumnsOf(kAllMetrics)) {
       if (!Social(*c)) continue;
       EXPECT_EQ(FormatEpisodeCell(*c, scored), FormatEpisodeCell(*c, run))
           << log_path << " " << c->name;

@@ -114,6 +114,34 @@ TEST_F(SocialMetricsRunTest, NamedMetricsJoinEveryFileAndChangeNoEpisode) {
       nlohmann::json::parse(Text("plain", "manifest.json"))["rows"][0]["metrics"].contains("spl"));
 }
 
+// The walking groups' metrics are a family of their own: naming one adds its columns alone, so a
+// suite naming only the first family's metrics keeps its files; both together carry both.
+TEST_F(SocialMetricsRunTest, GroupMetricsAreAFamilyOfTheirOwn) {
+  std::string grouped = kPlain;
+  grouped.replace(grouped.find("policy: orca}"), 13, "policy: orca, groups: {share: 1, size: 2}}");
+  const Suite groups = Load(grouped + "columns: [group_intrusions]\n");
+  const Suite core = Load(grouped + "columns: [spl]\n");
+  const Suite both = Load(grouped + "columns: [spl, group_share]\n");
+  EXPECT_EQ(groups.social_metrics, kGroupMetrics);
+  EXPECT_EQ(core.social_metrics, kCoreMetrics);
+  EXPECT_EQ(both.social_metrics, kAllMetrics);
+  EXPECT_NE(groups.canonical.find("group_metrics"), std::string::npos);
+  EXPECT_EQ(core.canonical.find("group_metrics"), std::string::npos);
+  Run(groups, "groups");
+  Run(core, "core");
+  Run(both, "both");
+  const std::string csv = Text("groups", "episodes.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), EpisodeCsvHeader(kGroupMetrics));
+  EXPECT_EQ(Text("core", "episodes.csv").substr(0, csv.find('\n')).find("group_"),
+            std::string::npos);
+  const std::string all = Text("both", "episodes.csv");
+  EXPECT_EQ(all.substr(0, all.find('\n')), EpisodeCsvHeader(kAllMetrics));
+  // Two pairs and one person alone in every episode: the metrics apply everywhere.
+  for (const std::string& v : Column(csv, "group_intrusions")) EXPECT_FALSE(v.empty());
+  EXPECT_EQ(Column(csv, "group_share"), Column(all, "group_share"));
+  EXPECT_EQ(Column(csv, "status"), Column(Text("core", "episodes.csv"), "status"));
+}
+
 TEST_F(SocialMetricsRunTest, AMistypedMetricIsAnErrorNamingTheMetricMeant) {
   const SuiteLoadResult r = LoadSuite(
       dir_.Write("typo.yaml", std::string(kPlain) + "columns: [spl, jerk_meen]\n"), registry_);

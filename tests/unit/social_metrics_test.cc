@@ -150,6 +150,28 @@ TEST(SocialMetrics, StandingAtTheGoalIsNoFreezing) {
   EXPECT_DOUBLE_EQ(m.Finish(true, 9.9).freezing_time, 0.0);
 }
 
+// A pair standing at (0, +-0.5): its space is the circle of 0.5 m around (0, 0), reached by the
+// robot's disc (0.3 m) within 0.8 m. Driving along y = 0 from x = -3 at 1 m/s, the robot is in it
+// at x = -0.75 ... 0.75: 7 of 24 steps, one entry; along y = 2 never.
+TEST(SocialMetrics, DrivingThroughAPairIsOneGroupIntrusion) {
+  AgentState a = Agent(0.0, 0.5), b = Agent(0.0, -0.5);
+  a.group = b.group = 0;
+  const AgentState pair[] = {a, b};
+  for (const double y : {0.0, 2.0}) {
+    SocialMetricsAccumulator m(kDt, true, 0.2);
+    for (int k = 0; k <= 24; ++k) m.Observe(Robot(-3.0 + k * kDt, y, 1.0, 0.0), pair);
+    const SocialMetrics s = m.Finish(false, 10.0);
+    EXPECT_DOUBLE_EQ(s.group_intrusions, y == 0.0 ? 1.0 : 0.0);
+    EXPECT_DOUBLE_EQ(s.group_share, y == 0.0 ? 7.0 / 24.0 : 0.0);
+  }
+  // People alone (or a "group" of one) have no group space: not applicable.
+  const AgentState alone[] = {Agent(0.0, 0.5), Agent(0.0, -0.5)};
+  SocialMetricsAccumulator m(kDt, true, 0.2);
+  for (int k = 0; k <= 24; ++k) m.Observe(Robot(-3.0 + k * kDt, 0.0, 1.0, 0.0), alone);
+  EXPECT_TRUE(std::isnan(m.Finish(false, 10.0).group_intrusions));
+  EXPECT_TRUE(std::isnan(m.Finish(false, 10.0).group_share));
+}
+
 TEST(SocialMetrics, TheShortestFreePathGoesAroundAWall) {
   // A wall x in [4.9, 5.1], y in [-2, 2] between (0, 0) and (10, 0); a 0.3 m disc passes its
   // corners 0.3 m off: two tangents to (5 -+ 0.1, 2.3) and the 0.2 m along the top,

@@ -38,6 +38,7 @@ Json StateJson(const EpisodeFrame& f) {
                       {"vx", h.velocity.x()},
                       {"vy", h.velocity.y()},
                       {"radius", h.radius}});
+    if (h.group >= 0) people.back()["group"] = h.group;  // absent: walks alone
   }
   return {{"t", f.time},
           {"robot",
@@ -183,6 +184,12 @@ EpisodeFrame ReadState(const LineReader& in) {
     h.position = Vec2(in.Number(people[i], "x", at), in.Number(people[i], "y", at));
     h.velocity = Vec2(in.Number(people[i], "vx", at), in.Number(people[i], "vy", at));
     h.radius = in.Number(people[i], "radius", at);
+    if (people[i].is_object() && people[i].contains("group")) {
+      const double group = in.Number(people[i], "group", at);
+      if (!(group >= 0.0) || group != std::floor(group) || group > 1e9)
+        in.Fail(at + "group", "is not a whole number >= 0 (leave it out for a person alone)");
+      h.group = static_cast<int>(group);
+    }
     f.humans.push_back(h);
   }
   return f;

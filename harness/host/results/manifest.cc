@@ -69,7 +69,7 @@ Json PluginJson(const PluginUse& u) {
 Json IntervalJson(const Interval& i) { return Json::array({Number(i.low), Number(i.high)}); }
 
 /// Adds a table line's info, metrics (with 95% intervals) and reference to its manifest object.
-void AddLineTail(const TableRow& line, bool social, Json* j) {
+void AddLineTail(const TableRow& line, MetricFamilies social, Json* j) {
   Json info = Json::object();
   for (const auto& [key, value] : line.Info()) info[key] = value;
   (*j)["info"] = std::move(info);
@@ -90,7 +90,7 @@ void AddLineTail(const TableRow& line, bool social, Json* j) {
     metrics[key] = Number(m.*field);
   }
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (c.mean != RowMean::kNone && (social || !Social(c)))
+    if (c.mean != RowMean::kNone && (!Social(c) || (social & FamilyOf(c))))
       metrics[c.name] = Number(RowMeanField(m, c));
   }
   metrics["success_rate_95"] = IntervalJson(WilsonInterval95(m.successes, m.episodes));
@@ -120,7 +120,7 @@ Json SimJson(const SimConfig& sim) {
   return j;
 }
 
-Json RowJson(const TableRow& line, bool social, const RunFacts& facts) {
+Json RowJson(const TableRow& line, MetricFamilies social, const RunFacts& facts) {
   const RowSpec& r = *line.spec;
   Json j;
   j["label"] = r.label;

@@ -167,7 +167,7 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
   }
   // Social metrics: those the suite names in table.md, all of them in table.csv.
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (!Social(c) || !suite.social_metrics) continue;
+    if (!Social(c) || !(suite.social_metrics & FamilyOf(c))) continue;
     const auto& named = suite.metric_columns;
     if (!with_uncertainty && std::find(named.begin(), named.end(), c.name) == named.end()) continue;
     cols.push_back({c.table_header, [&c](const TableRow& r) {
@@ -225,15 +225,22 @@ bool IsSocialMetric(std::string_view name) {
                      [&](const EpisodeColumn& c) { return Social(c) && c.name == name; });
 }
 
-std::vector<const EpisodeColumn*> EpisodeColumnsOf(bool social) {
+MetricFamilies MetricFamilyOf(std::string_view name) {
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (Social(c) && c.name == name) return FamilyOf(c);
+  }
+  return 0;
+}
+
+std::vector<const EpisodeColumn*> EpisodeColumnsOf(MetricFamilies families) {
   std::vector<const EpisodeColumn*> columns;
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (social || !Social(c)) columns.push_back(&c);
+    if (!Social(c) || (families & FamilyOf(c))) columns.push_back(&c);
   }
   return columns;
 }
 
-std::string EpisodeCsvHeader(bool social) {
+std::string EpisodeCsvHeader(MetricFamilies social) {
   std::string header;
   for (const EpisodeColumn* c : EpisodeColumnsOf(social)) {
     if (!header.empty()) header += ',';
@@ -259,7 +266,7 @@ std::string FormatEpisodeCell(const EpisodeColumn& c, const EpisodeLine& e) {
       c.field);
 }
 
-std::string FormatEpisodeLine(const EpisodeLine& e, bool social) {
+std::string FormatEpisodeLine(const EpisodeLine& e, MetricFamilies social) {
   std::string line;
   for (const EpisodeColumn* c : EpisodeColumnsOf(social)) {
     if (c != kEpisodeColumns) line += ',';
@@ -349,7 +356,8 @@ std::string ParseCell(const EpisodeColumn& c, const std::string& text, EpisodeLi
 
 }  // namespace
 
-std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e, bool social) {
+std::string ParseEpisodeFields(const std::vector<std::string>& v, EpisodeLine* e,
+                               MetricFamilies social) {
   const auto columns = EpisodeColumnsOf(social);
   const size_t n = columns.size();
   if (v.size() != n) {
@@ -370,9 +378,13 @@ EpisodesCsvRead ReadEpisodesCsvChecked(const fs::path& path) {
   std::string line;
   if (!std::getline(f, line)) line.clear();
   if (!line.empty() && line.back() == '\r') line.pop_back();
-  // A suite with social metrics writes their columns too.
-  read.social = line == EpisodeCsvHeader(true);
-  if (line != EpisodeCsvHeader(false) && !read.social) {
+  // A suite with social metrics writes their families' columns too.
+  bool known = false;
+  for (MetricFamilies f = 0; f <= kAllMetrics && !known; ++f) {
+    known = line == EpisodeCsvHeader(f);
+    if (known) read.social = f;
+  }
+  if (!known) {
     throw std::runtime_error(
         path.string() +
         ":1: " + (line.empty() ? "the first line is empty" : "the header is " + Quote(line)) +

@@ -83,6 +83,26 @@ void SocialMetricsAccumulator::Observe(const AgentState& robot,
     if (nearest_sq < config_.intimate_radius * config_.intimate_radius) ++intimate_steps_;
     if (nearest_sq < personal_sq) ++personal_steps_;
   }
+  // Walking groups: members are consecutive runs of one group id.
+  bool in_any_group = false;
+  size_t group = 0;
+  for (size_t first = 0; first < humans.size();) {
+    size_t end = first + 1;
+    if (humans[first].group >= 0) {
+      while (end < humans.size() && humans[end].group == humans[first].group) ++end;
+    }
+    if (end - first >= 2) {
+      groups_seen_ = true;
+      if (inside_group_.size() <= group) inside_group_.resize(group + 1, 0);
+      const bool inside = GroupSpaceContains(humans.subspan(first, end - first), robot);
+      if (inside && !inside_group_[group] && states_ > 0) ++group_entries_;
+      inside_group_[group] = inside;
+      in_any_group = in_any_group || inside;
+      ++group;
+    }
+    first = end;
+  }
+  if (states_ > 0 && in_any_group) ++group_steps_;
   last_position_ = robot.position;
   last_velocity_ = v;
   last_heading_ = robot.heading;
@@ -111,7 +131,23 @@ SocialMetrics SocialMetricsAccumulator::Finish(bool success, double shortest_pat
   m.personal_share = steps > 0 ? static_cast<double>(personal_steps_) / steps : 0.0;
   m.personal_intrusions = intrusions_;
   m.min_ttc = min_ttc_;
+  if (groups_seen_) {
+    m.group_intrusions = group_entries_;
+    m.group_share = steps > 0 ? static_cast<double>(group_steps_) / steps : 0.0;
+  }
   return m;
+}
+
+bool GroupSpaceContains(std::span<const AgentState> members, const AgentState& robot) {
+  if (members.size() < 2) return false;
+  Vec2 centre = Vec2::Zero();
+  for (const AgentState& m : members) centre += m.position;
+  centre /= static_cast<double>(members.size());
+  double radius_sq = 0.0;
+  for (const AgentState& m : members)
+    radius_sq = std::max(radius_sq, (m.position - centre).squaredNorm());
+  const double reach = std::sqrt(radius_sq) + robot.radius;
+  return (robot.position - centre).squaredNorm() < reach * reach;
 }
 
 double TimeToCollision(const AgentState& a, const AgentState& b) {

@@ -4,7 +4,7 @@
 
 namespace crowdsim {
 
-EpisodeOutcome PlayEpisode(Episode& episode, bool social_metrics) {
+EpisodeOutcome PlayEpisode(Episode& episode, unsigned social_metrics) {
   if (!social_metrics) return episode.Run();
   const SimConfig& sim = episode.sim();
   SocialMetricsAccumulator social(sim.time_step, episode.kinematics().Holonomic(), sim.goal_radius);

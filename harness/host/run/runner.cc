@@ -143,7 +143,7 @@ std::vector<SuiteRow> PreflightRows(const Suite& suite, PluginRegistry& registry
   return rows;
 }
 
-std::string EpisodesCsvText(const std::vector<const EpisodeLine*>& lines, bool social) {
+std::string EpisodesCsvText(const std::vector<const EpisodeLine*>& lines, MetricFamilies social) {
   std::string text = EpisodeCsvHeader(social) + "\n";
   for (const EpisodeLine* line : lines) text += FormatEpisodeLine(*line, social) + "\n";
   return text;
@@ -198,8 +198,8 @@ std::vector<PolicyErrorNote> PolicyErrorNotes(const Suite& suite, const EpisodeL
 /// thread-safe.
 class EpisodeSink {
  public:
-  EpisodeSink(const fs::path& episodes_csv, bool social, std::chrono::milliseconds max_delay,
-              Progress& progress, EpisodeLines* done)
+  EpisodeSink(const fs::path& episodes_csv, MetricFamilies social,
+              std::chrono::milliseconds max_delay, Progress& progress, EpisodeLines* done)
       : path_(episodes_csv),
         social_(social),
         out_(episodes_csv, max_delay),
@@ -229,7 +229,7 @@ class EpisodeSink {
 
  private:
   fs::path path_;
-  bool social_;
+  MetricFamilies social_;
   EpisodeAppender out_;
   Progress& progress_;
   EpisodeLines* done_;

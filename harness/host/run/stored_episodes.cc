@@ -126,7 +126,7 @@ void CheckShard(const ResumeTarget& target) {
 
 /// Appends `lines` and `damaged` (as read) to episodes.dropped.csv, with a header when new.
 fs::path SetAside(const fs::path& out_dir, const std::vector<const EpisodeLine*>& lines,
-                  const std::vector<std::string>& damaged, bool social) {
+                  const std::vector<std::string>& damaged, MetricFamilies social) {
   const fs::path path = out_dir / "episodes.dropped.csv";
   const bool fresh = !fs::exists(path);
   std::ofstream out(path, std::ios::app);
@@ -202,8 +202,8 @@ EpisodeLines StoredEpisodes(const Suite& suite,
     } else if (const auto other = kept_line.find(key); other == kept_line.end()) {
       kept_line[key] = &line;
       done[key] = line;
-    } else if (WithoutTimingColumns(FormatEpisodeLine(*other->second, true)) ==
-               WithoutTimingColumns(FormatEpisodeLine(line, true))) {
+    } else if (WithoutTimingColumns(FormatEpisodeLine(*other->second, kAllMetrics)) ==
+               WithoutTimingColumns(FormatEpisodeLine(line, kAllMetrics))) {
       aside.push_back(&line);  // a second copy of the same result
       ++copies;
     } else {

@@ -398,8 +398,10 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   std::ostringstream head;
   head << "seed=" << s.seed << "\n";
   CanonicalSim(s.sim, head);
-  s.social_metrics = !s.metric_columns.empty();
-  if (s.social_metrics) head << "social_metrics\n";  // other files; absent, old hashes hold
+  for (const std::string& name : s.metric_columns) s.social_metrics |= MetricFamilyOf(name);
+  // Other files; absent, old hashes hold.
+  if (s.social_metrics & kCoreMetrics) head << "social_metrics\n";
+  if (s.social_metrics & kGroupMetrics) head << "group_metrics\n";
   s.canonical = head.str();
   for (auto& row : s.rows) {
     std::ostringstream os;

@@ -69,6 +69,7 @@ struct EpisodeColumn {
   bool empty_is_nan = false;       ///< an empty cell reads back as NaN: not applicable
   bool timing = false;  ///< wall-clock: differs between runs and machines, left out of comparisons
   RowMean mean = RowMean::kNone;
+  int family = 0;  ///< social metrics: the MetricFamilies bit (1 << family) that turns it on
   /// Where the row mean goes (mean != kNone); a social column's goes to RowMetrics::social.
   double RowMetrics::*row_mean = nullptr;
   const char* table_header = nullptr;  ///< the row mean's column in table.md / table.csv
@@ -218,30 +219,59 @@ inline constexpr EpisodeColumn kEpisodeColumns[] = {
      .mean = RowMean::kAll,
      .table_header = "min. TTC",
      .table_decimals = 3},
+    // Walking groups' metrics: their own family, so suites naming only the above keep their files.
+    {.name = "group_intrusions",
+     .field = &SocialMetrics::group_intrusions,
+     .decimals = 0,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .family = 1,
+     .table_header = "group intrusions",
+     .table_decimals = 3},
+    {.name = "group_share",
+     .field = &SocialMetrics::group_share,
+     .decimals = 6,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .family = 1,
+     .table_header = "group share",
+     .table_decimals = 3},
     {.name = "error", .field = &EpisodeOutcome::error},
 };
+
+/// Which social metric families a file carries, a bit each: kCoreMetrics (SPL ... min_ttc),
+/// kGroupMetrics (walking groups). A suite turns on the families of the metrics it names.
+using MetricFamilies = unsigned;
+inline constexpr MetricFamilies kCoreMetrics = 1u;
+inline constexpr MetricFamilies kGroupMetrics = 2u;
+inline constexpr MetricFamilies kAllMetrics = kCoreMetrics | kGroupMetrics;
 
 /// A social navigation metric's column: in the files of a suite with social metrics only.
 inline bool Social(const EpisodeColumn& c) {
   return std::holds_alternative<double SocialMetrics::*>(c.field);
 }
+/// The family bit of a social metric's column.
+inline MetricFamilies FamilyOf(const EpisodeColumn& c) { return 1u << c.family; }
 /// True for the name of a social metric's column (suites name them in `columns:`).
 bool IsSocialMetric(std::string_view name);
-/// The columns of episodes.csv, with or without the social metrics, in file order.
-std::vector<const EpisodeColumn*> EpisodeColumnsOf(bool social);
+/// The family bit of the social metric `name` (0 when it is none).
+MetricFamilies MetricFamilyOf(std::string_view name);
+/// The columns of episodes.csv with the social metrics of `families`, in file order.
+std::vector<const EpisodeColumn*> EpisodeColumnsOf(MetricFamilies families);
 /// A column's row mean in `m`.
 double& RowMeanField(RowMetrics& m, const EpisodeColumn& c);
 double RowMeanField(const RowMetrics& m, const EpisodeColumn& c);
 
 /// Header line of episodes.csv (the column names, comma-separated).
-std::string EpisodeCsvHeader(bool social);
+std::string EpisodeCsvHeader(MetricFamilies social);
 /// One cell as episodes.csv writes it.
 std::string FormatEpisodeCell(const EpisodeColumn& c, const EpisodeLine& e);
 /// One CSV line (no newline).
-std::string FormatEpisodeLine(const EpisodeLine& e, bool social);
+std::string FormatEpisodeLine(const EpisodeLine& e, MetricFamilies social);
 /// Reads one line's fields (from SplitCsvLine) into `e`; returns why they are no episode line, or
 /// "".
-std::string ParseEpisodeFields(const std::vector<std::string>& fields, EpisodeLine* e, bool social);
+std::string ParseEpisodeFields(const std::vector<std::string>& fields, EpisodeLine* e,
+                               MetricFamilies social);
 /// episodes.csv without timing columns: what two runs of one configuration must agree on, anywhere.
 std::string WithoutTimingColumns(const std::string& episodes_csv);
 

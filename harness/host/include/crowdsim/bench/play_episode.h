@@ -7,6 +7,6 @@ namespace crowdsim {
 
 /// Runs `episode` to its end; with `social_metrics`, an accumulator watches every state (time 0
 /// first) and the outcome carries its SocialMetrics (docs/metrics.md).
-EpisodeOutcome PlayEpisode(Episode& episode, bool social_metrics);
+EpisodeOutcome PlayEpisode(Episode& episode, unsigned social_metrics);
 
 }  // namespace crowdsim

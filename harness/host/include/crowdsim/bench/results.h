@@ -22,7 +22,7 @@ struct EpisodesCsvRead {
   std::vector<std::string> damaged_lines;  ///< their text, as read
   std::string first_damage;    ///< "FILE:LINE: why" of the first of them; empty when none
   bool cut_last_line = false;  ///< the last line lacks its newline (a crash mid-write): skipped
-  bool social = false;         ///< it has the social metrics' columns
+  MetricFamilies social = 0;   ///< the social metric families whose columns it has
 };
 /// Reads an episodes.csv. Throws std::runtime_error (file, line, fix) when unreadable, when the
 /// header is neither EpisodeCsvHeader(false) nor (true), or when no episode line reads. Damaged

@@ -31,7 +31,15 @@ struct SocialMetrics {
   double personal_share = 0.0;     ///< share of the steps with a person within personal_radius
   double personal_intrusions = 0;  ///< entries of a person into the personal zone after time 0
   double min_ttc = 5.0;  ///< s; constant-velocity TTC, at most SocialMetricsConfig::ttc_horizon
+  /// The robot in a walking group's space (GroupSpaceContains): entries after time 0, and the
+  /// share of the steps. NaN when no group of two or more walks in the episode.
+  double group_intrusions = std::numeric_limits<double>::quiet_NaN();
+  double group_share = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// Whether the robot's disc reaches into a walking group's space: the circle around its members'
+/// centre through the farthest member's centre (the o-space of Kendon's F-formation, as a circle).
+bool GroupSpaceContains(std::span<const AgentState> members, const AgentState& robot);
 
 /// Radii and thresholds (docs/metrics.md cites each).
 struct SocialMetricsConfig {
@@ -86,6 +94,10 @@ class SocialMetricsAccumulator {
   int intrusions_ = 0;
   std::vector<unsigned char> inside_personal_;  // per person, within personal_radius
   double min_ttc_;
+  bool groups_seen_ = false;
+  int group_steps_ = 0;
+  int group_entries_ = 0;
+  std::vector<unsigned char> inside_group_;  // per group, in list order
 };
 
 /// Time until two discs touch, each keeping its velocity: 0 when they overlap, infinity when they

@@ -106,10 +106,10 @@ struct Suite {
   std::uint64_t seed = 0;
   SimConfig sim;
   std::vector<std::string> info_columns;  ///< order of the extra columns
-  /// Social metrics named in `columns:` (table.md shows them); naming one turns them all on:
+  /// Social metrics named in `columns:` (table.md shows them); naming one turns its family on:
   /// episodes.csv, table.csv and manifest.json carry them (docs/metrics.md). Hashed when on.
   std::vector<std::string> metric_columns;
-  bool social_metrics = false;
+  unsigned social_metrics = 0;  ///< MetricFamilies (episode_columns.h) of the named metrics
   std::vector<RowSpec> rows;
   std::vector<SummarySpec> summaries;  ///< shown after the rows; not part of the config hash
   std::vector<std::string> overrides;  ///< `--set key.path=value` applied to the file, in order
