@@ -22,7 +22,7 @@ BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact|:social|:
 # The pages that hold blocks, and the suites whose full table one of them must hold.
 PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
 REQUIRED = ["table1", "table1_3obs", "table2", "table1_route", "table2_route", "human_models",
-            "kinematics", "perception"]
+            "kinematics", "perception", "people"]
 # The social navigation metrics a `:social` block shows (table.csv headers, docs/metrics.md).
 SOCIAL = ["SPL", "accel. mean", "jerk mean", "path irregularity", "freezing time", "personal share",
           "personal intrusions", "min. TTC"]
@@ -31,6 +31,8 @@ INFO = ["line", "model", "humans.policy", "kinematics", "perception", "sensor(s)
 # The paper's column names where they need a word more out of the paper's context.
 HEADER = {"# of obstacles": "trained with # obstacles", "humans": "trained with humans",
           "humans.policy": "people", "kinematics": "robot body"}
+# Where a suite's info column means something else: the people suite sweeps its test people.
+SUITE_HEADER = {"people": {"humans": "people (humans: ...)"}}
 
 
 def rate(row, key):
@@ -50,6 +52,7 @@ def table(name: str, compact: bool = False, social: bool = False, scenarios: boo
         rows = list(csv.DictReader(f))
     info = [c for c in INFO if rows and c in rows[0]]
     with_paper = any(r.get("paper success") for r in rows)
+    headers = {**HEADER, **SUITE_HEADER.get(name, {})}
     if compact:
         return compact_table(rows, [c for c in info if c not in ("weights", "procedure")], with_paper)
     if social:
@@ -59,7 +62,7 @@ def table(name: str, compact: bool = False, social: bool = False, scenarios: boo
     head = info + ["success [95% CI]"] + (["paper"] if with_paper else []) + \
         ["collision"] + (["paper"] if with_paper else []) + ["timeout"] + \
         (["paper"] if with_paper else []) + ["nav. time"] + (["paper"] if with_paper else [])
-    lines = header_lines(head, info)
+    lines = header_lines(head, info, headers)
     for r in rows:
         cells = [r[c] for c in info] + [success_cell(r)]
         for ours, theirs in (("success rate", "success"), ("collision rate", "collision"),
@@ -73,9 +76,9 @@ def table(name: str, compact: bool = False, social: bool = False, scenarios: boo
     return "\n".join(lines) + "\n"
 
 
-def header_lines(head, info):
+def header_lines(head, info, headers=HEADER):
     """A Markdown table's header and alignment rows: info columns left, figures right."""
-    return ["| " + " | ".join(HEADER.get(c, c) for c in head) + " |",
+    return ["| " + " | ".join(headers.get(c, c) for c in head) + " |",
             "|" + "|".join("---" if c in info else "---:" for c in head) + "|"]
 
 
