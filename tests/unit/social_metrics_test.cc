@@ -150,11 +150,11 @@ TEST(SocialMetrics, StandingAtTheGoalIsNoFreezing) {
   EXPECT_DOUBLE_EQ(m.Finish(true, 9.9).freezing_time, 0.0);
 }
 
-// A pair standing at (0, +-0.5): its space is the circle of 0.5 m around (0, 0), reached by the
-// robot's disc (0.3 m) within 0.8 m. Driving along y = 0 from x = -3 at 1 m/s, the robot is in it
-// at x = -0.75 ... 0.75: 7 of 24 steps, one entry; along y = 2 never.
+// A pair standing at (0, +-1): its space is the circle of 1 - 0.3 m around (0, 0) inside their
+// bodies, reached by the robot's disc (0.3 m) within 1 m. Driving along y = 0 from x = -3 at 1 m/s,
+// the robot is in it at x = -0.75 ... 0.75: 7 of 24 steps, one entry; along y = 2 never.
 TEST(SocialMetrics, DrivingThroughAPairIsOneGroupIntrusion) {
-  AgentState a = Agent(0.0, 0.5), b = Agent(0.0, -0.5);
+  AgentState a = Agent(0.0, 1.0), b = Agent(0.0, -1.0);
   a.group = b.group = 0;
   const AgentState pair[] = {a, b};
   for (const double y : {0.0, 2.0}) {
@@ -165,7 +165,7 @@ TEST(SocialMetrics, DrivingThroughAPairIsOneGroupIntrusion) {
     EXPECT_DOUBLE_EQ(s.group_share, y == 0.0 ? 7.0 / 24.0 : 0.0);
   }
   // People alone (or a "group" of one) have no group space: not applicable.
-  const AgentState alone[] = {Agent(0.0, 0.5), Agent(0.0, -0.5)};
+  const AgentState alone[] = {Agent(0.0, 1.0), Agent(0.0, -1.0)};
   SocialMetricsAccumulator m(kDt, true, 0.2);
   for (int k = 0; k <= 24; ++k) m.Observe(Robot(-3.0 + k * kDt, 0.0, 1.0, 0.0), alone);
   EXPECT_TRUE(std::isnan(m.Finish(false, 10.0).group_intrusions));

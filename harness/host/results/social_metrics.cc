@@ -143,10 +143,11 @@ bool GroupSpaceContains(std::span<const AgentState> members, const AgentState& r
   Vec2 centre = Vec2::Zero();
   for (const AgentState& m : members) centre += m.position;
   centre /= static_cast<double>(members.size());
-  double radius_sq = 0.0;
+  // The space the members' bodies enclose: to the inner edge of the farthest one.
+  double inner = 0.0;
   for (const AgentState& m : members)
-    radius_sq = std::max(radius_sq, (m.position - centre).squaredNorm());
-  const double reach = std::sqrt(radius_sq) + robot.radius;
+    inner = std::max(inner, (m.position - centre).norm() - m.radius);
+  const double reach = inner + robot.radius;
   return (robot.position - centre).squaredNorm() < reach * reach;
 }
 

@@ -37,8 +37,9 @@ struct SocialMetrics {
   double group_share = std::numeric_limits<double>::quiet_NaN();
 };
 
-/// Whether the robot's disc reaches into a walking group's space: the circle around its members'
-/// centre through the farthest member's centre (the o-space of Kendon's F-formation, as a circle).
+/// Whether the robot's disc reaches into a group's space: the circle around its members' centre
+/// out to the inner edge of the farthest member's disc (the o-space of Kendon's F-formation, as a
+/// circle). A robot at a conversational circle's open place, as far out as the members, is not in.
 bool GroupSpaceContains(std::span<const AgentState> members, const AgentState& robot);
 
 /// Radii and thresholds (docs/metrics.md cites each).
