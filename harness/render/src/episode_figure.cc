@@ -265,11 +265,30 @@ void DrawRobotPaths(Drawing* d, const View& v, const EpisodeFigure& fig,
   }
 }
 
+// A dashed line through the members of each walking group (consecutive in the list), closed
+// for three or more: who walks with whom.
+void DrawGroupLinks(Drawing* d, const View& v, const std::vector<AgentState>& people) {
+  for (size_t first = 0; first < people.size();) {
+    size_t end = first + 1;
+    if (people[first].group >= 0) {
+      while (end < people.size() && people[end].group == people[first].group) ++end;
+    }
+    if (end - first >= 2) {
+      std::vector<Vec2> pts;
+      for (size_t i = first; i < end; ++i) pts.push_back(v.ToCanvas(people[i].position));
+      if (end - first >= 3) pts.push_back(pts.front());
+      d->AddPolyline("group", std::move(pts), Stroke(palette::kGroupLink, 1.4, true));
+    }
+    first = end;
+  }
+}
+
 // Discs where everybody ended (or is, in an animation frame); a collision ringed at its end.
 void DrawDiscs(Drawing* d, const View& v, const EpisodeFigure& fig, std::optional<size_t> frame) {
   const std::string disc = frame ? "agent" : "final";
   const std::vector<EpisodeFrame>& hframes = HumanFrames(fig);
   const EpisodeFrame& humans_now = hframes[LastFrame(hframes, frame)];
+  DrawGroupLinks(d, v, humans_now.humans);
   for (size_t i = 0; i < hframes[0].humans.size(); ++i) {
     DrawDisc(d, v, humans_now.humans[i], disc + " human", palette::Human(static_cast<int>(i)),
              std::to_string(i + 1));

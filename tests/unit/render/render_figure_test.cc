@@ -94,6 +94,15 @@ TEST(EpisodeFigure, SvgShowsEveryRectangleAndTrajectory) {
   EXPECT_EQ(CountOf(svg, "class=\"mask\""), 0);
 }
 
+// The two humans as one walking group: one dashed link between them; alone, none.
+TEST(EpisodeFigure, AWalkingGroupIsLinked) {
+  Scenario sc = ScriptedScenario();
+  EXPECT_EQ(CountOf(ToSvg(DrawEpisode(Figure(sc, RunScripted(sc)))), "class=\"group\""), 0);
+  for (HumanSpec& h : sc.humans) h.group = 0;
+  const std::string svg = ToSvg(DrawEpisode(Figure(sc, RunScripted(sc))));
+  EXPECT_EQ(CountOf(svg, "<polyline class=\"group\""), 1);
+}
+
 TEST(EpisodeFigure, TheSameEpisodeGivesTheSameSvgBytes) {
   const Scenario sc = ScriptedScenario();
   const EpisodeResult a = RunScripted(sc);

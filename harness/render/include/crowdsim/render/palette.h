@@ -15,6 +15,7 @@ inline constexpr Color kRobotCompare{230, 110, 20, 1.0};   ///< second robot of 
 inline constexpr Color kBeam{220, 40, 40, 1.0};            ///< lidar beams and hits
 inline constexpr Color kPersonReading{148, 52, 190, 1.0};  ///< person-sensor detections
 inline constexpr Color kUnseen{150, 150, 150, 1.0};        ///< people no detection is near
+inline constexpr Color kGroupLink{90, 90, 90, 0.6};        ///< the links of a walking group
 inline constexpr Color kSuccess{44, 160, 44, 1.0};         ///< outcome charts: success
 inline constexpr Color kCollision{214, 39, 40, 1.0};       ///< collisions, collision marks
 inline constexpr Color kTimeout{255, 170, 40, 1.0};        ///< timeouts
