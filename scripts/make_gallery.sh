@@ -71,6 +71,9 @@ for scenario in frontal_approach overtaking crossing doorway narrow_hallway blin
   render "scenario_$scenario" suites/social.yaml --row "$row" --episode 0
   row=$((row + 1))
 done
+# The group scenarios (suites/social_groups.yaml): the OMPL planner's rows 7 and 8.
+render scenario_join_group suites/social_groups.yaml --row 7 --episode 0
+render scenario_leave_group suites/social_groups.yaml --row 8 --episode 0
 
 # The README's picture: ORCA and the straight-line robot in one quick.yaml episode.
 e=$(first_pair quick orca linear success collision_obstacle 3)

@@ -116,7 +116,9 @@ SCENARIO = re.compile(r"scenario: (?P<name>\w+)")
 
 
 def scenario_matrix(rows) -> str:
-    """Models down, scenarios across, each cell the success rate / SPL."""
+    """Models down, scenarios across, each cell the success rate / SPL (/ group intrusions, the
+    mean per episode, when the suite has them)."""
+    groups = bool(rows) and "group intrusions" in rows[0]
     models, scenarios, cells = [], [], {}
     for r in rows:
         m = SCENARIO.search(r["label"])
@@ -128,6 +130,8 @@ def scenario_matrix(rows) -> str:
         if scenario not in scenarios:
             scenarios.append(scenario)
         cells[model, scenario] = f"{rate(r, 'success rate')} / {float(r['SPL']):.2f}"
+        if groups:
+            cells[model, scenario] += f" / {float(r['group intrusions']):.2f}"
     head = ["model"] + [s.replace("_", " ") for s in scenarios]
     lines = ["| " + " | ".join(head) + " |", "|---|" + "---:|" * len(scenarios)]
     for model in models:

@@ -13,9 +13,9 @@
 namespace crowdsim {
 namespace {
 
-const std::vector<std::string> kScenarios = {"frontal_approach", "overtaking",     "crossing",
-                                             "doorway",          "narrow_hallway", "blind_corner",
-                                             "intersection",     "standing_person"};
+const std::vector<std::string> kScenarios = {
+    "frontal_approach", "overtaking",   "crossing",        "doorway",    "narrow_hallway",
+    "blind_corner",     "intersection", "standing_person", "join_group", "leave_group"};
 
 class SocialScenariosTest : public ::testing::TestWithParam<std::string> {
  protected:
@@ -77,6 +77,38 @@ TEST_P(SocialScenariosTest, MorePeopleThanTheGeometryHoldsIsAClearError) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, SocialScenariosTest, ::testing::ValuesIn(kScenarios));
+
+// The group scenarios: everybody stands in one conversational group whose open place is the
+// robot's goal (join) or start (leave): members on a circle around a centre beyond that place,
+// the open place as far out as they are, no member nearer to it than 1 m (an F-formation's
+// gap the robot fits in).
+TEST(SocialGroupScenarios, PeopleStandInACircleWithTheRobotsPlaceOpen) {
+  PluginRegistry registry{{testing::PluginDir()}};
+  const auto& plugin = registry.Load("social_scenarios", PluginKind::kWorld);
+  for (const std::string name : {"join_group", "leave_group"}) {
+    Params p = Params::Defaults(plugin.schema);
+    p.Set("scenario", name);
+    const auto world = registry.MakeWorld(plugin, p);
+    for (int people = 2; people <= 6; ++people) {
+      for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        ScenarioRequest r;
+        r.seed = seed;
+        r.num_humans = people;
+        const Scenario s = world->Make(r);
+        const Vec2 place = name == "join_group" ? s.robot_goal : s.robot_start;
+        Vec2 centre = Vec2::Zero();
+        for (const HumanSpec& h : s.humans) centre += h.start;
+        centre /= people;
+        for (const HumanSpec& h : s.humans) {
+          EXPECT_EQ(h.group, 0);
+          EXPECT_EQ(h.goals.front(), h.start);  // they stand
+          EXPECT_GE((h.start - place).norm(), 1.0) << name << " seed " << seed;
+          EXPECT_GT(h.start.x(), place.x());  // the group lies beyond the robot's place
+        }
+      }
+    }
+  }
+}
 
 }  // namespace
 }  // namespace crowdsim

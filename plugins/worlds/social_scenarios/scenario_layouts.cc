@@ -1,6 +1,8 @@
 #include "scenario_layouts.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace crowdsim::social_scenarios {
@@ -34,6 +36,18 @@ double InFile(double first, double spacing, int k, Rng& rng) {
   return first + spacing * k + rng.Uniform(-0.2, 0.2);
 }
 
+// A conversational group (an F-formation) of `count` people standing on a circle with one open
+// place at `slot`, the circle's far side from there along +x: person k at the k-th of count + 1
+// places around it (jittered by up to 0.05 rad), neighbours 1.1 m apart or more.
+Vec2 InCircle(const Vec2& slot, int k, int count, Rng& rng) {
+  const double places = count + 1.0;
+  const double radius = std::max(0.8, 0.55 / std::sin(std::numbers::pi / places));
+  const Vec2 centre = slot + Vec2(radius, 0.0);
+  const double angle =
+      std::numbers::pi + 2.0 * std::numbers::pi * (k + 1) / places + rng.Uniform(-0.05, 0.05);
+  return centre + radius * Vec2(std::cos(angle), std::sin(angle));
+}
+
 }  // namespace
 
 Layout MakeLayout(const std::string& name) {
@@ -46,7 +60,7 @@ Layout MakeLayout(const std::string& name) {
     CorridorBetweenRooms(&l.map, far_end, 1.5);  // 3 m wide, 8 m long
   } else if (name == "narrow_hallway") {
     CorridorBetweenRooms(&l.map, far_end, 0.9);  // 1.8 m: two people pass, barely
-  } else if (name == "crossing") {
+  } else if (name == "crossing" || name == "join_group" || name == "leave_group") {
     l.map.bounds = Rect::FromCorners(-12.0, -12.0, 12.0, 12.0);  // open space
   } else if (name == "doorway") {
     // A room split at x = 0 by a wall with a 1.2 m door.
@@ -86,7 +100,7 @@ Layout MakeLayout(const std::string& name) {
   return l;
 }
 
-PersonPlan MakePerson(const std::string& name, int k, Rng& rng) {
+PersonPlan MakePerson(const std::string& name, int k, int count, Rng& rng) {
   PersonPlan p;
   p.speed_factor = rng.Uniform(0.8, 1.2);  // people walk at 80-120% of the suite's v_pref
   if (name == "frontal_approach") {
@@ -126,6 +140,16 @@ PersonPlan MakePerson(const std::string& name, int k, Rng& rng) {
     const double x = rng.Uniform(-0.6, 0.6);
     p.start = Vec2(x, side * InFile(4.5, 1.5, k / 2, rng));
     p.goal = Vec2(x, -side * 8.0);
+  } else if (name == "join_group") {
+    // A group standing in conversation whose open place is the robot's goal: the robot joins it.
+    p.start = InCircle(Vec2(7.0, 0.0), k, count, rng);
+    p.goal = p.start;
+    p.group = 0;
+  } else if (name == "leave_group") {
+    // The robot stands in a group's open place, its goal beyond the group: it must walk round.
+    p.start = InCircle(Vec2(-7.0, 0.0), k, count, rng);
+    p.goal = p.start;
+    p.group = 0;
   }
   return p;
 }

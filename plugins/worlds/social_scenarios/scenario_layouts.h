@@ -13,14 +13,16 @@ namespace crowdsim::social_scenarios {
 
 /// The scenarios, in the order of the `scenario` parameter's choices.
 inline const std::vector<std::string> kScenarioNames = {
-    "frontal_approach", "overtaking",   "crossing",     "doorway",
-    "narrow_hallway",   "blind_corner", "intersection", "standing_person"};
+    "frontal_approach", "overtaking",   "crossing",        "doorway",    "narrow_hallway",
+    "blind_corner",     "intersection", "standing_person", "join_group", "leave_group"};
 
-/// One person of a scenario: start, goal and speed factor (times the suite's human v_pref).
+/// One person of a scenario: start, goal, speed factor (times the suite's human v_pref) and,
+/// for a scripted group, its group id.
 struct PersonPlan {
   Vec2 start;
   Vec2 goal;
   double speed_factor = 1.0;
+  int group = -1;
 };
 
 /// The most people a scenario places (its geometry holds this many).
@@ -36,7 +38,7 @@ struct Layout {
 /// The layout of scenario `name`.
 Layout MakeLayout(const std::string& name);
 
-/// Person `k` of scenario `name`, its variation drawn from `rng`.
-PersonPlan MakePerson(const std::string& name, int k, Rng& rng);
+/// Person `k` of the `count` people of scenario `name`, its variation drawn from `rng`.
+PersonPlan MakePerson(const std::string& name, int k, int count, Rng& rng);
 
 }  // namespace crowdsim::social_scenarios

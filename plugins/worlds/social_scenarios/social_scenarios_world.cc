@@ -30,12 +30,13 @@ Scenario SocialScenariosWorld::Make(const ScenarioRequest& request) const {
   s.robot_goal = layout_.robot_goal;
   Rng rng(request.seed);
   for (int k = 0; k < request.num_humans; ++k) {
-    const PersonPlan p = MakePerson(name_, k, rng);
+    const PersonPlan p = MakePerson(name_, k, request.num_humans, rng);
     HumanSpec h;
     h.start = p.start;
     h.goals = {p.goal};
     ApplyHumanAttributes(request, k, &h);
     h.v_pref *= p.speed_factor;
+    if (p.group >= 0) h.group = p.group;  // a scripted group, whatever humans.groups says
     s.humans.push_back(std::move(h));
   }
   return s;
