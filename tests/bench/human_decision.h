@@ -4,6 +4,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,19 @@ inline std::vector<Rect> SevenRects() {
           Rect::FromCorners(-1.0, -3.5, 1.0, -2.5), Rect::FromCorners(3.0, 2.5, 4.5, 4.0),
           Rect::FromCorners(-4.5, -2.0, -3.5, 0.0), Rect::FromCorners(2.5, -4.0, 4.0, -3.0),
           Rect::FromCorners(-1.0, 3.5, 1.0, 4.5)};
+}
+
+/// Ten people on a ring 1.2-3 m around the origin, walking across it at 0.8 m/s.
+inline std::vector<AgentState> TenCrossingPeople() {
+  std::vector<AgentState> others;
+  for (int k = 0; k < 10; ++k) {
+    const double a = 0.63 * k;
+    AgentState s;
+    s.position = (1.2 + 0.18 * k) * Vec2(std::cos(a), std::sin(a));
+    s.velocity = 0.8 * Vec2(-std::sin(a), std::cos(a));
+    others.push_back(s);
+  }
+  return others;
 }
 
 /// Times `plugin`'s Decide (schema defaults) for a human at the origin, heading for a goal

@@ -5,7 +5,7 @@ if(CROWDSIM_BUILD_TESTS)
     SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/social_force/social_force_test.cc
             ${CMAKE_SOURCE_DIR}/plugins/policies/social_force/social_force.cc)
   target_include_directories(social_force_test PRIVATE
-    ${CMAKE_SOURCE_DIR}/plugins/policies/social_force)
+    ${CMAKE_SOURCE_DIR}/plugins/policies/social_force ${CMAKE_SOURCE_DIR}/plugins/lib/walking/include)
 endif()
 
 if(CROWDSIM_BUILD_BENCHMARKS)

@@ -56,6 +56,15 @@ TEST(ListPlugins, APluginThatHidesAnotherOfItsNameSaysWhichFile) {
       << help;
 }
 
+TEST(ListPlugins, ListsTheShippedHumanModels) {
+  // docs/humans.md's models: each listed by name with its description.
+  const auto [status, out] = testing::Shell(Exe() + " list-plugins");
+  EXPECT_EQ(status, 0) << out;
+  for (const char* name : {"orca", "social_force", "hsfm", "linear"}) {
+    EXPECT_NE(out.find("  " + std::string(name) + " - "), std::string::npos) << name << "\n" << out;
+  }
+}
+
 TEST(ListPlugins, AnEmptyTextDefaultIsShownAsEmptyQuotes) {
   // The torchscript and floor-plan plugins' file parameters default to "" (none given).
   const auto [status, out] = testing::Shell(Exe() + " list-plugins");

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "crowdsim/geometry.h"
+#include "walking/contact.h"
 
 namespace crowdsim::social_force {
 
@@ -63,9 +64,6 @@ inline Vec2 WallRepulsion(const Vec2& r_from_wall, const Constants& c) {
   return r_from_wall * (c.u0_wall / c.r_wall * std::exp(-d / c.r_wall) / d);
 }
 
-/// The point of `rect` nearest to `p` (p itself inside it).
-inline Vec2 NearestPoint(const Rect& rect, const Vec2& p) {
-  return p.cwiseMax(rect.min).cwiseMin(rect.max);
-}
+using walking::NearestPoint;
 
 }  // namespace crowdsim::social_force

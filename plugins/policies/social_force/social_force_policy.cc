@@ -6,7 +6,7 @@
 
 #include "crowdsim/agent_index.h"
 #include "crowdsim/static_map.h"
-#include "orca/roadmap.h"
+#include "walking/contact.h"
 
 namespace crowdsim::social_force {
 
@@ -151,8 +151,7 @@ SocialForcePolicy::SocialForcePolicy(const Params& params)
       neighbor_dist_(params.GetDouble("neighbor_dist")),
       max_neighbors_(static_cast<int>(params.GetInt("max_neighbors"))),
       wall_range_(params.GetDouble("wall_range")),
-      guidance_enabled_(params.GetBool("guidance")),
-      guidance_margin_(params.GetDouble("guidance_margin")) {
+      guide_(params.GetBool("guidance"), params.GetDouble("guidance_margin")) {
   constants_.tau = params.GetDouble("tau");
   constants_.v0_ped = params.GetDouble("v0");
   constants_.sigma = params.GetDouble("sigma");
@@ -179,37 +178,19 @@ PolicyNeeds SocialForcePolicy::Needs() const {
 void SocialForcePolicy::Reset(const EpisodeContext& ctx) {
   map_ = ctx.map;
   time_step_ = ctx.sim.time_step;
-  roadmap_radius_ = -1.0;  // the roadmap is made for the agent's radius at its first decision
-  guidance_.Reset(nullptr);
-}
-
-void SocialForcePolicy::GatherOthers(const Observation& obs) {
-  others_.clear();
-  if (obs.agents != nullptr) {
-    obs.agents->Nearest(obs.self.position, neighbor_dist_, max_neighbors_, obs.self_index, &ids_);
-    const auto all = obs.agents->agents();
-    for (const int id : ids_) others_.emplace_back(all[id].position, all[id].velocity);
-    return;
-  }
-  const SensorReading* reading = obs.Reading("person");
-  if (reading == nullptr) return;
-  for (const PersonObservation& person : reading->people) {
-    const Vec2 position = obs.frame.origin + obs.frame.VectorToWorld(person.position);
-    if ((position - obs.self.position).norm() < neighbor_dist_)
-      others_.emplace_back(position, obs.frame.VectorToWorld(person.velocity));
-  }
+  guide_.Reset(ctx.map);
 }
 
 Vec2 SocialForcePolicy::Acceleration(const AgentState& self, const orca::GuidanceTarget& target,
-                                     const std::vector<std::pair<Vec2, Vec2>>& others,
+                                     const std::vector<walking::Neighbour>& others,
                                      std::span<const Vec2> group) const {
   const Vec2 desired = orca::PreferredVelocity(self.position, target, self.v_pref);
   Vec2 total = DrivingForce(self.velocity, desired, constants_.tau);
   // The heading that decides the field of view: where the agent wants to go.
   const double norm = desired.norm();
   const Vec2 e = norm > 0.0 ? Vec2(desired / norm) : Vec2::Zero();
-  for (const auto& [position, velocity] : others) {
-    const Vec2 f = PedestrianRepulsion(self.position - position, velocity, constants_);
+  for (const walking::Neighbour& other : others) {
+    const Vec2 f = PedestrianRepulsion(self.position - other.position, other.velocity, constants_);
     total += ViewWeight(e, f, constants_) * f;
   }
   if (map_ != nullptr) {
@@ -222,45 +203,17 @@ Vec2 SocialForcePolicy::Acceleration(const AgentState& self, const orca::Guidanc
   return total;
 }
 
-Vec2 SocialForcePolicy::SlideAlongRectangles(const Vec2& position, double radius,
-                                             Vec2 velocity) const {
-  if (map_ == nullptr) return velocity;
-  // Whether the step would end closer than `radius` to `rect`, and closer than now.
-  const auto touches = [&](const Rect& rect, const Vec2& v) {
-    const Vec2 next = position + v * time_step_;
-    const double gap = (next - NearestPoint(rect, next)).squaredNorm();
-    return gap < radius * radius && gap < (position - NearestPoint(rect, position)).squaredNorm();
-  };
-  for (const Rect& rect : map_->rectangles) {
-    if (!touches(rect, velocity)) continue;
-    const Vec2 out = position - NearestPoint(rect, position);
-    const double d = out.norm();
-    if (d > 0.0) velocity -= std::min(0.0, velocity.dot(out / d)) * (out / d);  // slide
-  }
-  // A corner, or two rectangles at once: stop rather than touch.
-  for (const Rect& rect : map_->rectangles) {
-    if (touches(rect, velocity)) return Vec2::Zero();
-  }
-  return velocity;
-}
-
 Action SocialForcePolicy::Decide(const Observation& obs) {
   const AgentState& self = obs.self;
-  if (guidance_enabled_ && map_ != nullptr && !map_->rectangles.empty() &&
-      self.radius != roadmap_radius_) {
-    roadmap_radius_ = self.radius;
-    guidance_.Reset(orca::SharedRoadmap(*map_, self.radius, guidance_margin_));
-  }
-  const orca::GuidanceTarget target = guidance_.roadmap() != nullptr
-                                          ? guidance_.Next(self.position, self.goal)
-                                          : orca::GuidanceTarget{self.goal, true};
-  GatherOthers(obs);
+  const orca::GuidanceTarget target = guide_.Target(self);
+  walking::GatherNeighbours(obs, neighbor_dist_, max_neighbors_, &ids_, &others_);
   group_.clear();
   if (obs.agents != nullptr) GroupMates(obs.agents->agents(), obs.self_index, &group_);
   Vec2 velocity = self.velocity + Acceleration(self, target, others_, group_) * time_step_;
   const double max_speed = max_speed_factor_ * self.v_pref;
   if (velocity.norm() > max_speed) velocity *= max_speed / velocity.norm();
-  return Action{SlideAlongRectangles(self.position, self.radius, velocity)};
+  return Action{
+      walking::SlideAlongRectangles(map_, time_step_, self.position, self.radius, velocity)};
 }
 
 }  // namespace crowdsim::social_force

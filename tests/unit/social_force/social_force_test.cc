@@ -15,6 +15,7 @@
 #include "suite_runs.h"
 #include "temp_dir.h"
 #include "test_paths.h"
+#include "walk_scene.h"
 
 namespace crowdsim::social_force {
 namespace {
@@ -125,56 +126,24 @@ TEST(SocialForce, APersonNeverWalksIntoARectangle) {
   PluginRegistry registry({crowdsim::testing::PluginDir()});
   const LoadedPlugin& plugin = registry.Load("social_force", PluginKind::kPolicy);
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> coord(-5.0, 5.0), size(0.3, 2.5);
   int steps_checked = 0, touching = 0;
   for (int scene = 0; scene < 60; ++scene) {
     Params params = Params::Defaults(plugin.schema);
     params.Set("guidance", scene % 3 == 0);
     if (scene % 3 == 2) params.Set("u0", 0.0);
-    StaticMap map;
-    map.bounds = Rect::FromCorners(-8, -8, 8, 8);
-    for (int r = 0; r < 4; ++r) {
-      const Vec2 corner(coord(rng), coord(rng));
-      map.rectangles.push_back(Rect{corner, corner + Vec2(size(rng), size(rng))});
-    }
-    AgentState self;
-    self.radius = 0.3;
-    self.v_pref = 1.0;
-    const auto clear = [&](const Vec2& p) {
-      for (const Rect& rect : map.rectangles) {
-        if ((p - NearestPoint(rect, p)).norm() < self.radius + 0.05) return false;
-      }
-      return true;
-    };
-    do self.position = Vec2(coord(rng), coord(rng));
-    while (!clear(self.position));
-    do self.goal = Vec2(coord(rng), coord(rng));
-    while (!clear(self.goal));
-    auto policy = registry.MakePolicy(plugin, params);
-    EpisodeContext ctx;
-    ctx.map = &map;
-    ctx.role = AgentRole::kHuman;
-    policy->Reset(ctx);
-    std::vector<AgentState> agents{self};
-    AgentIndex index;
-    for (int step = 0; step < 120; ++step) {
-      index.Rebuild(agents);
-      Observation obs;
-      obs.self = agents[0];
-      obs.agents = &index;
-      obs.self_index = 0;
-      const Vec2 v = policy->Decide(obs).velocity;
-      ASSERT_LE(v.norm(), 1.3 + 1e-9);
-      agents[0].position += v * ctx.sim.time_step;
-      agents[0].velocity = v;
-      for (const Rect& rect : map.rectangles) {
-        const Vec2 p = agents[0].position;
-        const double gap = (p - NearestPoint(rect, p)).norm();
-        ASSERT_GE(gap, self.radius - 1e-9) << "scene " << scene << " step " << step;
-        touching += gap < self.radius + 0.02;
-      }
-      ++steps_checked;
-    }
+    const testing::WalkScene drawn = testing::RandomWalkScene(rng);
+    const StaticMap& map = drawn.map;
+    const AgentState& self = drawn.self;
+    testing::Walk(plugin, registry, params, &map, self, 120,
+                  [&](int step, const Vec2& v, const AgentState& s) {
+                    ASSERT_LE(v.norm(), 1.3 + 1e-9);
+                    for (const Rect& rect : map.rectangles) {
+                      const double gap = (s.position - NearestPoint(rect, s.position)).norm();
+                      ASSERT_GE(gap, self.radius - 1e-9) << "scene " << scene << " step " << step;
+                      touching += gap < self.radius + 0.02;
+                    }
+                    ++steps_checked;
+                  });
   }
   EXPECT_EQ(steps_checked, 60 * 120);
   EXPECT_GT(touching, 100) << "the scenes must bring people against rectangles";
