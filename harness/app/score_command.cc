@@ -48,7 +48,7 @@ int ScoreCommand(const std::vector<std::string>& args) {
   }
   const std::vector<const EpisodeColumn*> columns = [] {
     std::vector<const EpisodeColumn*> social;
-    for (const EpisodeColumn* c : EpisodeColumnsOf(kAllMetrics)) {
+    for (const EpisodeColumn* c : EpisodeColumnsOf(kLogMetrics)) {
       if (Social(*c)) social.push_back(c);
     }
     return social;

@@ -22,6 +22,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "crowdsim/bench/episode_columns.h"
 #include "crowdsim/bench/play_episode.h"
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/bench/row_instance.h"
@@ -97,7 +98,7 @@ class CrowdNavTask {
 
   /// Episode k as a suite run plays it: the row's own policies, nothing between them and the
   /// episode; with the social metrics when `social`.
-  EpisodeOutcome PlayPlain(int k, bool social) {
+  EpisodeOutcome PlayPlain(int k, MetricFamilies social) {
     const RowSpec& row = suite().rows.at(0);
     const Scenario scenario = world_->Make(MakeEpisodeRequest(suite(), row, *world_, k));
     Episode episode(scenario, suite().sim, plain_agents_);
@@ -130,7 +131,8 @@ class CrowdNavTask {
 
 // `replayed` empty: the plain episodes, as `crowdsim-bench run` plays them (with the social
 // metrics when `social`).
-void TimeEpisodes(benchmark::State& state, std::optional<Replayed> replayed, bool social = false) {
+void TimeEpisodes(benchmark::State& state, std::optional<Replayed> replayed,
+                  MetricFamilies social = 0) {
   static CrowdNavTask* task = nullptr;  // recorded once for every variant
   try {
     if (task == nullptr) task = new CrowdNavTask();
@@ -162,9 +164,15 @@ BENCHMARK(BM_CrowdNavEpisode)->Unit(benchmark::kMicrosecond);
 
 // The same episodes with every social navigation metric computed (issue 47: within 10%).
 void BM_CrowdNavEpisodeSocialMetrics(benchmark::State& state) {
-  TimeEpisodes(state, std::nullopt, true);
+  TimeEpisodes(state, std::nullopt, kCoreMetrics);
 }
 BENCHMARK(BM_CrowdNavEpisodeSocialMetrics)->Unit(benchmark::kMicrosecond);
+
+// And the robot's effect on the people, which replays each episode without the robot (opt-in).
+void BM_CrowdNavEpisodePeopleEffect(benchmark::State& state) {
+  TimeEpisodes(state, std::nullopt, kCoreMetrics | kEffectMetrics);
+}
+BENCHMARK(BM_CrowdNavEpisodePeopleEffect)->Unit(benchmark::kMicrosecond);
 
 void BM_CrowdNavEpisodeReplaying(benchmark::State& state, Replayed replayed) {
   TimeEpisodes(state, replayed);

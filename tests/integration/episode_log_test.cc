@@ -82,8 +82,8 @@ TEST_F(EpisodeLogTest, ScoringTheRecordedLogsGivesTheRunsColumns) {
     scored.outcome.status = *log.status;
     scored.outcome.social = ScoreEpisodeLog(log);
     EXPECT_EQ(scored.outcome.status, run.outcome.status) << log_path;
-    // Every family: the groups' metrics come from the people's logged groups.
-    for (const EpisodeColumn* c : EpisodeColumnsOf(kAllMetrics)) {
+    // Every family a log holds: the groups' metrics come from the people's logged groups.
+    for (const EpisodeColumn* c : EpisodeColumnsOf(kLogMetrics)) {
       if (!Social(*c)) continue;
       EXPECT_EQ(FormatEpisodeCell(*c, scored), FormatEpisodeCell(*c, run))
           << log_path << " " << c->name;

@@ -124,7 +124,7 @@ TEST_F(SocialMetricsRunTest, GroupMetricsAreAFamilyOfTheirOwn) {
   const Suite both = Load(grouped + "columns: [spl, group_share]\n");
   EXPECT_EQ(groups.social_metrics, kGroupMetrics);
   EXPECT_EQ(core.social_metrics, kCoreMetrics);
-  EXPECT_EQ(both.social_metrics, kAllMetrics);
+  EXPECT_EQ(both.social_metrics, kCoreMetrics | kGroupMetrics);
   EXPECT_NE(groups.canonical.find("group_metrics"), std::string::npos);
   EXPECT_EQ(core.canonical.find("group_metrics"), std::string::npos);
   Run(groups, "groups");
@@ -135,7 +135,7 @@ TEST_F(SocialMetricsRunTest, GroupMetricsAreAFamilyOfTheirOwn) {
   EXPECT_EQ(Text("core", "episodes.csv").substr(0, csv.find('\n')).find("group_"),
             std::string::npos);
   const std::string all = Text("both", "episodes.csv");
-  EXPECT_EQ(all.substr(0, all.find('\n')), EpisodeCsvHeader(kAllMetrics));
+  EXPECT_EQ(all.substr(0, all.find('\n')), EpisodeCsvHeader(kCoreMetrics | kGroupMetrics));
   // Two pairs and one person alone in every episode: the metrics apply everywhere.
   for (const std::string& v : Column(csv, "group_intrusions")) EXPECT_FALSE(v.empty());
   EXPECT_EQ(Column(csv, "group_share"), Column(all, "group_share"));

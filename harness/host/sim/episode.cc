@@ -442,10 +442,7 @@ StepInfo Episode::Step() {
   robot_angular_ = move.angular;
   result_.path_length += v.norm() * dt;
   result_.max_speed = std::max(result_.max_speed, v.norm());
-  for (size_t i = 0; i < humans_.size(); ++i) {
-    humans_[i].velocity = human_actions_[i].velocity;
-    humans_[i].position += human_actions_[i].velocity * dt;
-  }
+  MoveHumans();
 
   // Record. Most steps earn +0, which changes no sum, so pow runs only for a reward.
   if (info.reward != 0.0) {
@@ -479,6 +476,21 @@ StepInfo Episode::Step() {
 const EpisodeResult& Episode::Run() {
   while (!done()) Step();
   return result_;
+}
+
+void Episode::MoveHumans() {
+  const double dt = sim_.time_step;
+  for (size_t i = 0; i < humans_.size(); ++i) {
+    humans_[i].velocity = human_actions_[i].velocity;
+    humans_[i].position += human_actions_[i].velocity * dt;
+  }
+}
+
+void Episode::StepPeopleOnly() {
+  DecideHumans();
+  MoveHumans();
+  ++step_index_;
+  time_ = step_index_ * sim_.time_step;
 }
 
 void Episode::Finish(EpisodeStatus status) {

@@ -402,6 +402,7 @@ SuiteLoadResult LoadSuite(const fs::path& file, PluginRegistry& registry,
   // Other files; absent, old hashes hold.
   if (s.social_metrics & kCoreMetrics) head << "social_metrics\n";
   if (s.social_metrics & kGroupMetrics) head << "group_metrics\n";
+  if (s.social_metrics & kEffectMetrics) head << "effect_metrics\n";
   s.canonical = head.str();
   for (auto& row : s.rows) {
     std::ostringstream os;

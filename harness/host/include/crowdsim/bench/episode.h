@@ -125,6 +125,10 @@ class Episode {
   StepInfo Step();
   /// Runs to the end.
   const EpisodeResult& Run();
+  /// Moves the people one step as if there were no robot: their decisions and moves alone, no
+  /// robot decision, judgement or end (throws what a human policy throws). With
+  /// sim.robot_visible false it is the world without the robot (the people effect's replay).
+  void StepPeopleOnly();
 
   const EpisodeResult& result() const { return result_; }
   double time() const { return time_; }
@@ -134,6 +138,8 @@ class Episode {
   const Scenario& scenario() const { return scenario_; }
   const SimConfig& sim() const { return sim_; }
   const RobotKinematics& kinematics() const { return agents_.kinematics; }
+  const EpisodeAgents& agents() const { return agents_; }
+  int steps() const { return step_index_; }
   /// The robot observation the last Step() gave to the robot policy.
   const Observation& last_robot_observation() const { return robot_obs_; }
   /// The robot's observation now, without decision or lookahead (e.g. to bootstrap from). It
@@ -146,6 +152,8 @@ class Episode {
   void Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
              int step, std::vector<SensorReading>* out) const;
   void DecideHumans();
+  /// Every human moves with its decided velocity for one step.
+  void MoveHumans();
   /// Human i's decision into human_actions_[i] (throws what its policy or the checks throw).
   void DecideHuman(int i);
   void FillRobotObservation();

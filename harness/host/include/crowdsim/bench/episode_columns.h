@@ -236,15 +236,44 @@ inline constexpr EpisodeColumn kEpisodeColumns[] = {
      .family = 1,
      .table_header = "group share",
      .table_decimals = 3},
+    // The robot's effect on the people: its own family, as it replays every episode.
+    {.name = "people_lost_progress",
+     .field = &SocialMetrics::people_lost_progress,
+     .decimals = 6,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .family = 2,
+     .table_header = "people lost progress",
+     .table_decimals = 3},
+    {.name = "people_path_added",
+     .field = &SocialMetrics::people_path_added,
+     .decimals = 6,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .family = 2,
+     .table_header = "people path added",
+     .table_decimals = 3},
+    {.name = "people_accel_added",
+     .field = &SocialMetrics::people_accel_added,
+     .decimals = 6,
+     .empty_is_nan = true,
+     .mean = RowMean::kFinite,
+     .family = 2,
+     .table_header = "people accel. added",
+     .table_decimals = 3},
     {.name = "error", .field = &EpisodeOutcome::error},
 };
 
 /// Which social metric families a file carries, a bit each: kCoreMetrics (SPL ... min_ttc),
-/// kGroupMetrics (walking groups). A suite turns on the families of the metrics it names.
+/// kGroupMetrics (walking groups), kEffectMetrics (the robot's effect on the people). A suite
+/// turns on the families of the metrics it names.
 using MetricFamilies = unsigned;
 inline constexpr MetricFamilies kCoreMetrics = 1u;
 inline constexpr MetricFamilies kGroupMetrics = 2u;
-inline constexpr MetricFamilies kAllMetrics = kCoreMetrics | kGroupMetrics;
+inline constexpr MetricFamilies kEffectMetrics = 4u;  ///< the people effect: replays each episode
+inline constexpr MetricFamilies kAllMetrics = kCoreMetrics | kGroupMetrics | kEffectMetrics;
+/// What an episode log holds enough for (the people effect needs a replay without the robot).
+inline constexpr MetricFamilies kLogMetrics = kCoreMetrics | kGroupMetrics;
 
 /// A social navigation metric's column: in the files of a suite with social metrics only.
 inline bool Social(const EpisodeColumn& c) {

@@ -35,6 +35,12 @@ struct SocialMetrics {
   /// share of the steps. NaN when no group of two or more walks in the episode.
   double group_intrusions = std::numeric_limits<double>::quiet_NaN();
   double group_share = std::numeric_limits<double>::quiet_NaN();
+  /// The robot's effect on the people (people_effect.h), means over people of (with the robot -
+  /// without it): how much farther from their goals they end (m), path walked (m) and mean
+  /// acceleration (m/s^2). NaN without people, or when not computed.
+  double people_lost_progress = std::numeric_limits<double>::quiet_NaN();
+  double people_path_added = std::numeric_limits<double>::quiet_NaN();
+  double people_accel_added = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Whether the robot's disc reaches into a group's space: the circle around its members' centre
