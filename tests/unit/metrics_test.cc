@@ -73,6 +73,27 @@ TEST(Metrics, CountsAndNavTimeStandardError) {
   EXPECT_TRUE(std::isnan(Aggregate(std::vector<EpisodeOutcome>{e[0], e[3]}, 25.0).nav_time_se));
 }
 
+// Social metrics' means carry standard errors: SPL 0, 0.5, 1 has mean 0.5, sample standard
+// deviation 0.5, s.e. 0.5 / sqrt(3); group intrusions (NaN in one episode, not counted) 1 and 3:
+// mean 2, s.e. sqrt(2) / sqrt(2) = 1. A summary of two rows: sqrt(se1^2 + se2^2) / 2.
+TEST(Metrics, SocialMeansCarryTheirStandardErrors) {
+  std::vector<EpisodeOutcome> e(3, Rec(EpisodeStatus::kSuccess, 10.0, 40, 0));
+  const double spl[] = {0.0, 0.5, 1.0};
+  const double intrusions[] = {1.0, 3.0, std::numeric_limits<double>::quiet_NaN()};
+  for (size_t i = 0; i < e.size(); ++i) {
+    e[i].social.spl = spl[i];
+    e[i].social.group_intrusions = intrusions[i];
+  }
+  const RowMetrics m = Aggregate(e, 25.0);
+  EXPECT_NEAR(m.social.spl, 0.5, 1e-12);
+  EXPECT_NEAR(m.social_se.spl, 0.5 / std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(m.social.group_intrusions, 2.0, 1e-12);
+  EXPECT_NEAR(m.social_se.group_intrusions, 1.0, 1e-12);
+  const RowMetrics both[] = {m, m};
+  EXPECT_NEAR(SummarizeRows(both).social_se.spl, std::sqrt(2.0) * 0.5 / std::sqrt(3.0) / 2.0,
+              1e-12);
+}
+
 TEST(Metrics, WilsonIntervalKnownValues) {
   // 348 of 500 (the line-10 seed-1010 model): p = 0.696.
   const Interval a = WilsonInterval95(348, 500);

@@ -90,8 +90,10 @@ void AddLineTail(const TableRow& line, MetricFamilies social, Json* j) {
     metrics[key] = Number(m.*field);
   }
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (c.mean != RowMean::kNone && (!Social(c) || (social & FamilyOf(c))))
+    if (c.mean != RowMean::kNone && (!Social(c) || (social & FamilyOf(c)))) {
       metrics[c.name] = Number(RowMeanField(m, c));
+      if (Social(c)) metrics[std::string(c.name) + "_se"] = Number(SocialSeField(m, c));
+    }
   }
   metrics["success_rate_95"] = IntervalJson(WilsonInterval95(m.successes, m.episodes));
   metrics["collision_rate_95"] = IntervalJson(WilsonInterval95(m.collisions, m.episodes));

@@ -10,12 +10,13 @@ namespace crowdsim {
 
 namespace {
 
-/// A column's row mean (kEpisodeColumns) over the episodes, in episode order.
-double RowMeanOf(const EpisodeColumn& c, std::span<const EpisodeOutcome> episodes) {
+/// A column's row mean (kEpisodeColumns) over the episodes, in episode order; its standard error
+/// into `se` (NaN with fewer than two episodes counted).
+double RowMeanOf(const EpisodeColumn& c, std::span<const EpisodeOutcome> episodes, double* se) {
   const bool social = Social(c);
   const auto social_member = social ? std::get<double SocialMetrics::*>(c.field) : nullptr;
   const auto member = social ? nullptr : std::get<double EpisodeOutcome::*>(c.field);
-  double sum = 0.0;
+  double sum = 0.0, sum_sq = 0.0;
   int count = 0;
   for (const EpisodeOutcome& e : episodes) {
     const double x = social ? e.social.*social_member : e.*member;
@@ -24,10 +25,15 @@ double RowMeanOf(const EpisodeColumn& c, std::span<const EpisodeOutcome> episode
                          (c.mean == RowMean::kFinite && std::isfinite(x));
     if (!counted) continue;
     sum += x;
+    sum_sq += x * x;
     ++count;
   }
+  *se = std::numeric_limits<double>::quiet_NaN();
   if (count == 0) return c.empty_is_nan ? std::numeric_limits<double>::quiet_NaN() : 0.0;
-  return sum / count;
+  const double mean = sum / count;
+  if (count >= 2)
+    *se = std::sqrt(std::max(0.0, (sum_sq - count * mean * mean) / (count - 1)) / count);
+  return mean;
 }
 
 }  // namespace
@@ -38,6 +44,14 @@ double& RowMeanField(RowMetrics& m, const EpisodeColumn& c) {
 
 double RowMeanField(const RowMetrics& m, const EpisodeColumn& c) {
   return Social(c) ? m.social.*std::get<double SocialMetrics::*>(c.field) : m.*c.row_mean;
+}
+
+double& SocialSeField(RowMetrics& m, const EpisodeColumn& c) {
+  return m.social_se.*std::get<double SocialMetrics::*>(c.field);
+}
+
+double SocialSeField(const RowMetrics& m, const EpisodeColumn& c) {
+  return m.social_se.*std::get<double SocialMetrics::*>(c.field);
 }
 
 RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit) {
@@ -88,7 +102,10 @@ RowMetrics Aggregate(std::span<const EpisodeOutcome> episodes, double time_limit
   m.nav_time = success > 0 ? nav_time / success : time_limit;
   m.danger_frequency = steps > 0 ? static_cast<double>(danger) / static_cast<double>(steps) : 0.0;
   for (const EpisodeColumn& c : kEpisodeColumns) {
-    if (c.mean != RowMean::kNone) RowMeanField(m, c) = RowMeanOf(c, episodes);
+    if (c.mean == RowMean::kNone) continue;
+    double se = 0.0;
+    RowMeanField(m, c) = RowMeanOf(c, episodes, &se);
+    if (Social(c)) SocialSeField(m, c) = se;
   }
   m.successes = success;
   m.collisions = coll_h + coll_o;
@@ -140,6 +157,13 @@ RowMetrics SummarizeRows(std::span<const RowMetrics> rows) {
     se_sq += r.nav_time_se * r.nav_time_se;
   }
   if (se_known) m.nav_time_se = std::sqrt(se_sq) / k;
+  // A mean of independent rows: its standard error is sqrt(sum se^2) / k (NaN if any is).
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (c.mean == RowMean::kNone || !Social(c)) continue;
+    double sum_sq = 0.0;
+    for (const RowMetrics& r : rows) sum_sq += SocialSeField(r, c) * SocialSeField(r, c);
+    SocialSeField(m, c) = std::sqrt(sum_sq) / k;
+  }
   return m;
 }
 

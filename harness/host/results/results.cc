@@ -200,6 +200,13 @@ std::vector<Column> Columns(const Suite& suite, const std::vector<TableRow>& row
   }
   cols.push_back(
       {"nav. time s.e.", [](const TableRow& r) { return Fixed(r.metrics.nav_time_se, 4); }});
+  // Every social metric's mean with its standard error (table.csv).
+  for (const EpisodeColumn& c : kEpisodeColumns) {
+    if (!Social(c) || !(suite.social_metrics & FamilyOf(c))) continue;
+    cols.push_back({std::string(c.table_header) + " s.e.", [&c](const TableRow& r) {
+                      return Fixed(SocialSeField(r.metrics, c), c.table_decimals + 1);
+                    }});
+  }
   if (!AnyReference(rows)) return cols;
   for (size_t i = 0; i < kCompared.size(); ++i) {
     const std::string name = kCompared[i];

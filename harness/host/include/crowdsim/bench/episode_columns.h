@@ -290,6 +290,9 @@ std::vector<const EpisodeColumn*> EpisodeColumnsOf(MetricFamilies families);
 /// A column's row mean in `m`.
 double& RowMeanField(RowMetrics& m, const EpisodeColumn& c);
 double RowMeanField(const RowMetrics& m, const EpisodeColumn& c);
+/// A social column's standard error of its row mean in `m`.
+double& SocialSeField(RowMetrics& m, const EpisodeColumn& c);
+double SocialSeField(const RowMetrics& m, const EpisodeColumn& c);
 
 /// Header line of episodes.csv (the column names, comma-separated).
 std::string EpisodeCsvHeader(MetricFamilies social);

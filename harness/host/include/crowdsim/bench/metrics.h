@@ -30,7 +30,8 @@ struct RowMetrics {
   double discounted_return = 0.0;   ///< mean
   double decision_time_us = 0.0;    ///< mean of per-episode means
   SocialMetrics social;             ///< means of the social columns (kEpisodeColumns says which)
-  int successes = 0;                ///< counts behind the rates (for their intervals)
+  SocialMetrics social_se;  ///< their standard errors (NaN with fewer than 2 episodes counted)
+  int successes = 0;        ///< counts behind the rates (for their intervals)
   int collisions = 0;
   int timeouts = 0;
   double nav_time_se =
