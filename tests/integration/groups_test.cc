@@ -8,6 +8,7 @@
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/bench/suite.h"
+#include "suite_file_test.h"
 #include "temp_dir.h"
 #include "test_paths.h"
 
@@ -26,23 +27,8 @@ std::string SuiteText(const std::string& people_policy, const std::string& group
          "}\nrobot:\n  sensors: []\nrows:\n  - {label: linear, policy: linear}\n";
 }
 
-class GroupsTest : public ::testing::Test {
+class GroupsTest : public testing::SuiteFileTest {
  protected:
-  SuiteLoadResult Load(const std::string& yaml) {
-    return LoadSuite(dir_.Write("suite.yaml", yaml), registry_);
-  }
-  Suite Loaded(const std::string& yaml) {
-    SuiteLoadResult r = Load(yaml);
-    std::string errors;
-    for (const auto& e : r.errors) errors += e.Format() + "\n";
-    EXPECT_TRUE(r.suite) << errors;
-    return r.suite ? *r.suite : Suite{};
-  }
-  std::string FirstError(const std::string& yaml) {
-    SuiteLoadResult r = Load(yaml);
-    return r.errors.empty() ? "" : r.errors.front().Format();
-  }
-
   // The largest distance of a walking member from its group's centre beyond (N - 1) / 2 over every
   // step of every episode (members within kGroupReleaseDist of their goals walk alone: left out).
   double LargestExcess(const Suite& suite) {
@@ -72,9 +58,6 @@ class GroupsTest : public ::testing::Test {
     }
     return largest;
   }
-
-  TempDir dir_;
-  PluginRegistry registry_{{testing::PluginDir()}};
 };
 
 // Over 40 episodes of 7 people in groups of 2-3 crossing each other (every step, every walking

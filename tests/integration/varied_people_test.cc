@@ -8,6 +8,7 @@
 #include "crowdsim/bench/episode.h"
 #include "crowdsim/bench/row_instance.h"
 #include "crowdsim/bench/suite.h"
+#include "suite_file_test.h"
 #include "suite_runs.h"
 #include "temp_dir.h"
 #include "test_paths.h"
@@ -24,26 +25,7 @@ std::string SuiteText(const std::string& sim, const std::string& world, const st
          "  - {label: orca, policy: orca}\n";
 }
 
-class VariedPeopleTest : public ::testing::Test {
- protected:
-  SuiteLoadResult Load(const std::string& yaml) {
-    return LoadSuite(dir_.Write("suite.yaml", yaml), registry_);
-  }
-  Suite Loaded(const std::string& yaml) {
-    SuiteLoadResult r = Load(yaml);
-    std::string errors;
-    for (const auto& e : r.errors) errors += e.Format() + "\n";
-    EXPECT_TRUE(r.suite) << errors;
-    return r.suite ? *r.suite : Suite{};
-  }
-  std::string FirstError(const std::string& yaml) {
-    SuiteLoadResult r = Load(yaml);
-    return r.errors.empty() ? "" : r.errors.front().Format();
-  }
-
-  TempDir dir_;
-  PluginRegistry registry_{{testing::PluginDir()}};
-};
+using VariedPeopleTest = testing::SuiteFileTest;
 
 constexpr const char* kCrowdNavPeople = ", radius: [0.3, 0.5], v_pref: [0.5, 1.5]";
 

@@ -25,4 +25,9 @@ SuiteRun RunSuiteFile(const std::filesystem::path& suite_file, const std::filesy
   return {WithoutTimingColumns(ReadText(out_dir / "episodes.csv")), summary.rows.size()};
 }
 
+std::vector<SuiteRun> RunOnOneAndTwoThreads(const std::filesystem::path& suite_file,
+                                            const std::filesystem::path& out_dir) {
+  return {RunSuiteFile(suite_file, out_dir / "1", 1), RunSuiteFile(suite_file, out_dir / "2", 2)};
+}
+
 }  // namespace crowdsim::testing

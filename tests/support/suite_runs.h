@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace crowdsim::testing {
 
@@ -17,5 +18,9 @@ struct SuiteRun {
 /// threads into `out_dir`.
 SuiteRun RunSuiteFile(const std::filesystem::path& suite_file, const std::filesystem::path& out_dir,
                       int jobs);
+
+/// Runs `suite_file` on one thread and on two (into out_dir/1 and out_dir/2): what each left.
+std::vector<SuiteRun> RunOnOneAndTwoThreads(const std::filesystem::path& suite_file,
+                                            const std::filesystem::path& out_dir);
 
 }  // namespace crowdsim::testing

@@ -157,14 +157,9 @@ TEST(SocialForce, ASuiteOfSocialForcePeopleGivesTheSameEpisodesOnAnyThreads) {
                 "name: sf\nepisodes: 6\nseed: 4\nworld: {source: random_rect, obstacles: 3}\n"
                 "humans: {count: 5, policy: social_force}\nrobot: {sensors: [person]}\n"
                 "rows:\n  - {label: orca, policy: orca}\n  - {label: sf, policy: social_force}\n");
-  std::vector<std::string> texts;
-  for (const int jobs : {1, 2}) {
-    const testing::SuiteRun run =
-        testing::RunSuiteFile(file, dir.path() / ("out" + std::to_string(jobs)), jobs);
-    ASSERT_EQ(run.rows, 2u);
-    texts.push_back(run.episodes);
-  }
-  EXPECT_EQ(texts[0], texts[1]);
+  const auto runs = testing::RunOnOneAndTwoThreads(file, dir.path());
+  ASSERT_EQ(runs[0].rows, 2u);
+  EXPECT_EQ(runs[0].episodes, runs[1].episodes);
 }
 
 }  // namespace
