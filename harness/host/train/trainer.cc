@@ -126,6 +126,9 @@ class Trainer {
   void Demonstrations();
   void Imitation();
   void Reinforcement();
+  /// Why RL stops at `episode`: `what` is not finite; where the last good weights are, the fix.
+  std::string Diverged(int episode, const std::string& what) const;
+  int checkpoint_counter_ = -1;  // RL episodes done when the checkpoint on disk was written
   ValidationResult Validate(int rl_episode);
   double TrainOn(std::span<const std::size_t> indices);
   void SaveCheckpoint();
@@ -446,6 +449,21 @@ ValidationResult Trainer::Validate(int rl_episode) {
   return v;
 }
 
+std::string Trainer::Diverged(int episode, const std::string& what) const {
+  std::string kept;
+  if (checkpoint_counter_ >= 0) {
+    kept = Out("checkpoint").string() + " holds the state after " +
+           std::to_string(checkpoint_counter_) + " RL episodes";
+  } else {
+    kept = "no checkpoint was written yet (il.pt holds the imitation start)";
+  }
+  if (fs::exists(Out("best.pt"))) kept += ", best.pt the best validation so far";
+  return "RL episode " + std::to_string(episode) + ": " + what +
+         ": the network diverged. Training stops rather than go on with broken weights; " + kept +
+         ". Fix: a lower training.rl_learning_rate (or fewer train_batches), then " +
+         (checkpoint_counter_ >= 0 ? "--resume" : "train again");
+}
+
 void Trainer::Reinforcement() {
   progress_.Phase("RL", state_.counter, t_.rl_episodes);
   const double discount = std::pow(spec_.sim.gamma, spec_.sim.time_step * spec_.sim.robot_v_pref);
@@ -474,6 +492,9 @@ void Trainer::Reinforcement() {
       const std::vector<float> v_next =
           next.empty() ? std::vector<float>{} : learner_->TargetValues(next);
       const std::vector<float> targets = TdTargets(tr.rewards, v_next, discount);
+      // A non-finite target would poison the memory, and every later batch with it.
+      if (!std::all_of(targets.begin(), targets.end(), [](float y) { return std::isfinite(y); }))
+        throw TrainError(Diverged(e, "a TD target is not finite (the target network's value)"));
       for (std::size_t i = 0; i < targets.size(); ++i)
         memory_.Push(std::move(tr.states[i]), targets[i], *source);
       summary_.times.rl_targets += Since(t0);
@@ -492,6 +513,7 @@ void Trainer::Reinforcement() {
         loss += TrainOn(std::span<const std::size_t>(perm.data(), b));
       }
       loss /= t_.train_batches;
+      if (!std::isfinite(loss)) throw TrainError(Diverged(e, "the loss is not finite"));
     }
     summary_.times.rl_updates += Since(t0);
     LogEpisode("rl", e, epsilon, tr, loss);
@@ -535,6 +557,7 @@ void Trainer::SaveCheckpoint() {
   // Replace the old checkpoint; LoadCheckpoint accepts a complete checkpoint.tmp after a crash.
   fs::remove_all(dir);
   fs::rename(tmp, dir);
+  checkpoint_counter_ = state_.phase == TrainPhase::kReinforcement ? state_.counter : 0;
   WriteLearningCurve();
   summary_.times.checkpoints += Since(t0);
 }
@@ -616,6 +639,7 @@ void Trainer::LoadCheckpoint() {
              : " (start without --resume, or give the --out of the interrupted training)"));
   }
   state_ = ReadCheckpointState(dir / "state.txt");
+  checkpoint_counter_ = state_.phase == TrainPhase::kReinforcement ? state_.counter : 0;
   if (state_.config_hash != spec_.ConfigHash()) AcceptNewRlLength(dir);
   try {
     learner_->LoadWeights(dir / "model.pt");

@@ -167,6 +167,26 @@ TEST(TrainingTest, APolicyFailingMidTrainingIsNamedOnce) {
   }
 }
 
+// A learning rate of 10 blows the value network up in the first RL episode: training stops there,
+// naming the episode, the cause and the fix, instead of training on with NaN weights.
+TEST(TrainingTest, ADivergingNetworkStopsTrainingWithTheFix) {
+  TempDir dir;
+  TrainFile f;
+  f.training =
+      "{il_episodes: 4, il_epochs: 2, rl_episodes: 12, rl_learning_rate: 10, "
+      "epsilon_decay_episodes: 6, train_batches: 5, validation_interval: 0}";
+  try {
+    Train(WriteTrainFile(dir, f), dir.path() / "out");
+    ADD_FAILURE() << "a diverging network trained on";
+  } catch (const training::TrainError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("RL episode 0: the loss is not finite: the network diverged"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("lower training.rl_learning_rate"), std::string::npos) << what;
+  }
+}
+
 TEST(TrainingTest, ResumeRefusesAnotherConfiguration) {
   TempDir dir;
   TrainFile f;
