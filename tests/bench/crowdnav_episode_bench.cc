@@ -81,6 +81,23 @@ class CrowdNavTask {
     instance_ = std::make_unique<RowInstance>(row, registry_);
     agents_ = instance_->Agents(static_cast<size_t>(row.humans.count_max));
     plain_agents_ = agents_;
+    // The row with its person sensor made realistic (perception.yaml's cell), then tracked.
+    for (const bool tracked : {false, true}) {
+      RowSpec real = row;
+      Params& person = real.sensors.at(0).params;
+      person.Set("fov_deg", 180.0);
+      person.Set("occlusion", std::string("obstacles+people"));
+      person.Set("position_noise", 0.1);
+      person.Set("detection_prob", 0.9);
+      if (tracked) {
+        person.Set("false_detections", 0.5);
+        person.Set("velocity", std::string("estimated"));
+        person.Set("tracker", std::string("nearest"));
+      }
+      perceiving_.push_back(std::make_unique<RowInstance>(real, registry_));
+      perceiving_agents_.push_back(
+          perceiving_.back()->Agents(static_cast<size_t>(row.humans.count_max)));
+    }
     robot_ = std::make_unique<RecordedPolicy>(agents_.robot);
     agents_.robot = robot_.get();
     for (Policy*& human : agents_.humans) {
@@ -105,6 +122,14 @@ class CrowdNavTask {
     return PlayEpisode(episode, social);
   }
 
+  /// Episode k with the realistic person sensor (`tracked`: with phantoms, tracker, velocities).
+  EpisodeOutcome PlayPerceiving(int k, bool tracked) {
+    const RowSpec& row = suite().rows.at(0);
+    const Scenario scenario = world_->Make(MakeEpisodeRequest(suite(), row, *world_, k));
+    Episode episode(scenario, suite().sim, perceiving_agents_.at(tracked ? 1 : 0));
+    return episode.Run();
+  }
+
   /// Episode k with every policy behind its recorder, the decisions of `replayed` played back.
   EpisodeResult Play(int k, Replayed replayed) {
     robot_->Use(k, replayed == Replayed::kRobot || replayed == Replayed::kEverybody);
@@ -122,8 +147,10 @@ class CrowdNavTask {
   SuiteLoadResult loaded_;
   std::shared_ptr<WorldSource> world_;
   std::unique_ptr<RowInstance> instance_;
-  EpisodeAgents agents_;        // the recorders
-  EpisodeAgents plain_agents_;  // the row's policies themselves
+  EpisodeAgents agents_;                                  // the recorders
+  EpisodeAgents plain_agents_;                            // the row's policies themselves
+  std::vector<std::unique_ptr<RowInstance>> perceiving_;  // realistic, realistic + tracked
+  std::vector<EpisodeAgents> perceiving_agents_;
   std::unique_ptr<RecordedPolicy> robot_;
   std::vector<std::unique_ptr<RecordedPolicy>> humans_;
   std::vector<EpisodeResult> recorded_;
@@ -173,6 +200,32 @@ void BM_CrowdNavEpisodePeopleEffect(benchmark::State& state) {
   TimeEpisodes(state, std::nullopt, kCoreMetrics | kEffectMetrics);
 }
 BENCHMARK(BM_CrowdNavEpisodePeopleEffect)->Unit(benchmark::kMicrosecond);
+
+// The row with a realistic person sensor (its own episodes: see the top).
+void BM_CrowdNavEpisodePerception(benchmark::State& state, bool tracked) {
+  static CrowdNavTask* task = nullptr;
+  try {
+    if (task == nullptr) task = new CrowdNavTask();
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  int k = 0;
+  std::int64_t steps = 0;
+  for (auto _ : state) {
+    steps += task->PlayPerceiving(k, tracked).steps;
+    k = (k + 1) % task->episodes();
+  }
+  state.counters["episodes_per_s"] =
+      benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["steps_per_episode"] =
+      static_cast<double>(steps) / static_cast<double>(state.iterations());
+  state.counters["time_per_step"] = benchmark::Counter(
+      static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK_CAPTURE(BM_CrowdNavEpisodePerception, realistic, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CrowdNavEpisodePerception, realistic_tracked, true)
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_CrowdNavEpisodeReplaying(benchmark::State& state, Replayed replayed) {
   TimeEpisodes(state, replayed);

@@ -1,6 +1,7 @@
 #include "crowdsim/bench/episode.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -12,6 +13,9 @@
 namespace crowdsim {
 
 namespace {
+// Each episode's history id (SenseInput::history_id): unique in the process, never 0.
+std::atomic<std::uint64_t> next_history_id{1};
+
 // A non-std::exception throw (`throw 42;`) is a policy_error too, not std::terminate.
 constexpr const char* kNonStandardException =
     "threw an exception not derived from std::exception (e.g. `throw 42;`); throw a "
@@ -73,7 +77,8 @@ class Episode::StepLookahead final : public Lookahead {
       o.robot.velocity = v;
       o.robot.heading = e_.RobotHeading(o.robot, move.heading);
       o.frame = Frame::Make(o.robot.position, o.robot.heading);
-      e_.Sense(o.robot, o.frame, next_humans_, e_.step_index_ + 1, &o.readings);
+      e_.Sense(o.robot, o.frame, next_humans_, e_.step_index_ + 1, &o.readings,
+               /*lookahead=*/true);
     }
   }
 
@@ -241,6 +246,15 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
   human_reached_.assign(humans_.size(), false);
   human_actions_.resize(humans_.size());
   lookahead_ = std::make_unique<StepLookahead>(*this);
+  for (const MountedSensor& m : agents_.sensors) {
+    const int n = m.sensor->HistorySteps();
+    if (n < 0 || history_steps_ < 0) {
+      history_steps_ = -1;
+    } else {
+      history_steps_ = std::max(history_steps_, n);
+    }
+  }
+  if (history_steps_ != 0) history_id_ = next_history_id.fetch_add(1, std::memory_order_relaxed);
 
   robot_needs_ = agents_.robot->Needs();
   if (const std::string refusal = KinematicsRefusal(robot_needs_, agents_.kinematics);
@@ -281,10 +295,12 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
 Episode::~Episode() = default;
 
 void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
-                    int step, std::vector<SensorReading>* out) const {
+                    int step, std::vector<SensorReading>* out, bool lookahead) const {
   const std::span<const MountedSensor> sensors = agents_.sensors;
   out->resize(sensors.size());
-  const SenseInput input{robot, frame, humans, world_, SensorNoiseSeed(scenario_.seed), step};
+  const SenseInput input{
+      robot, frame,          humans,     world_,      SensorNoiseSeed(scenario_.seed),
+      step,  sim_.time_step, Past(step), history_id_, lookahead};
   for (size_t s = 0; s < sensors.size(); ++s) {
     SensorReading& r = (*out)[s];
     // Readings are reused step to step and most already carry the name: no copy.
@@ -508,7 +524,24 @@ void Episode::Finish(EpisodeStatus status) {
   result_.humans_at_goal = at_goal;
 }
 
+std::span<const SensedFrame> Episode::Past(int step) const {
+  if (history_steps_ == 0) return {};
+  // past_ holds steps 0..step_index_; a lookahead senses step_index_ + 1 and gets them all.
+  const std::size_t end = std::min(past_.size(), static_cast<std::size_t>(std::max(step, 0)));
+  const std::size_t begin =
+      history_steps_ < 0 ? 0 : end - std::min(end, static_cast<std::size_t>(history_steps_));
+  return std::span<const SensedFrame>(past_).subspan(begin, end - begin);
+}
+
 void Episode::Record() {
+  if (history_steps_ != 0) {
+    // The state as the robot senses it at this step (FillRobotObservation's heading and frame).
+    SensedFrame& f = past_.emplace_back();
+    f.robot = robot_;
+    f.robot.heading = RobotHeading(robot_, robot_.heading);
+    f.frame = Frame::Make(f.robot.position, f.robot.heading);
+    f.humans.assign(humans_.begin(), humans_.end());
+  }
   if (!record_) return;
   result_.trajectory.push_back(EpisodeFrame{time_, robot_, humans_});
   // A holonomic robot's heading is its goal's direction, set when it senses: set it now.

@@ -66,7 +66,8 @@ ReplayedEpisode ReplayForFigure(const Suite& suite, size_t row, int episode,
   out.scenario = std::move(replay.scenario);
   out.result = std::move(replay.result);
   if (sensors_at) {
-    // The row's own sensor plugins, read at the recorded state (sensors are stateless).
+    // The row's own sensor plugins, read at the recorded state (sensors keep no state: a tracker
+    // replays the frames before).
     RowInstance instance(suite.rows[row], registry);
     const EpisodeAgents& agents = instance.Agents(out.scenario.humans.size());
     out.sensors = TakeSensorSnapshot(out.scenario, out.result, *sensors_at, agents.sensors);

@@ -52,7 +52,17 @@ void DrawBeams(Drawing* d, const View& v, const SensorSnapshot& s) {
   }
 }
 
-// Every person detected: a dashed ring and its velocity over 1 s.
+// Whether a person reading lies near nobody (as Detected, the other way round): a false
+// detection.
+bool Phantom(const SensorSnapshot& s, const Vec2& world) {
+  for (const AgentState& h : s.humans) {
+    if ((world - h.position).norm() <= h.radius + 0.5) return false;
+  }
+  return true;
+}
+
+// Every person detected: a dashed ring and its velocity over 1 s; a false detection a hollow
+// disc within its ring too; a tracked one its track id beside it.
 void DrawPeople(Drawing* d, const View& v, const SensorSnapshot& s) {
   for (const SensorReading& r : s.readings) {
     for (const PersonObservation& p : r.people) {
@@ -61,8 +71,17 @@ void DrawPeople(Drawing* d, const View& v, const SensorSnapshot& s) {
       const Vec2 c = v.ToCanvas(world);
       d->AddCircle("person-reading", c, v.Length(p.radius) + 3.0,
                    Stroke(palette::kPersonReading, 1.6, true));
+      if (Phantom(s, world)) {
+        d->AddCircle("phantom-reading", c, v.Length(p.radius),
+                     Stroke(palette::kPersonReading, 2.2));
+      }
       d->AddPolyline("person-velocity", {c, v.ToCanvas(world + vel)},
                      Stroke(palette::kPersonReading, 1.6));
+      if (p.track_id >= 0) {
+        const double offset = v.Length(p.radius) + 4.0;
+        d->AddText("track-id", c + Vec2(offset, -offset), std::to_string(p.track_id), 10.0,
+                   palette::kPersonReading);
+      }
     }
   }
 }

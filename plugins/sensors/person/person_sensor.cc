@@ -1,6 +1,7 @@
 #include "person_sensor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "crowdsim/collision_world.h"
@@ -51,6 +52,49 @@ ParamSchema Schema() {
        {},
        "m; standard deviation of the Gaussian noise added to each axis of a reported position",
        false},
+      {"false_detections",
+       ParamType::kDouble,
+       0.0,
+       0.0,
+       50.0,
+       {},
+       "expected number of phantom people a reading (Poisson), uniform over the free sensed area "
+       "(max_range, or 5 m when unlimited, and the field of view), at rest, radius 0.3 m",
+       false},
+      {"velocity",
+       ParamType::kString,
+       std::string("true"),
+       0,
+       0,
+       {"true", "estimated"},
+       "true: the people's velocities; estimated: the change of a detection's reported position "
+       "since its track's last detection over the time between (a new track: zero)",
+       false},
+      {"tracker",
+       ParamType::kString,
+       std::string("none"),
+       0,
+       0,
+       {"none", "nearest"},
+       "none: no identities (estimated velocities follow the true person); nearest: greedy "
+       "nearest-neighbour tracks, each detection's track_id",
+       false},
+      {"track_gate",
+       ParamType::kDouble,
+       1.0,
+       0.01,
+       100.0,
+       {},
+       "m; the farthest a detection may lie from a track's last position to continue it",
+       false},
+      {"track_max_gap",
+       ParamType::kInt,
+       std::int64_t{2},
+       0,
+       1000,
+       {},
+       "steps a track survives without a detection; a person seen again later gets a new id",
+       false},
   };
 }
 
@@ -79,7 +123,21 @@ PersonSensor::PersonSensor(const Params& params)
                         : std::cos(params.GetDouble("fov_deg") * M_PI / 360.0)),
       occlusion_(OcclusionFrom(params.GetString("occlusion"))),
       detection_prob_(params.GetDouble("detection_prob")),
-      position_noise_(params.GetDouble("position_noise")) {}
+      position_noise_(params.GetDouble("position_noise")),
+      false_detections_(params.GetDouble("false_detections")),
+      estimate_velocity_(params.GetString("velocity") == "estimated"),
+      track_(params.GetString("tracker") == "nearest") {
+  phantom_area_.range = max_range_ > 0.0 ? max_range_ : kPhantomRange;
+  phantom_area_.half_fov = params.GetDouble("fov_deg") * M_PI / 360.0;
+  tracker_.association = track_ ? Association::kNearest : Association::kIdentity;
+  tracker_.gate = params.GetDouble("track_gate");
+  tracker_.max_gap = static_cast<int>(params.GetInt("track_max_gap"));
+}
+
+int PersonSensor::HistorySteps() const {
+  if (track_) return -1;
+  return estimate_velocity_ ? tracker_.max_gap + 1 : 0;
+}
 
 bool PersonSensor::InRangeAndView(const SenseInput& in, std::size_t i) const {
   const Vec2 to = in.humans[i].position - in.frame.origin;
@@ -143,23 +201,12 @@ bool PersonSensor::PersonInTheWay(const SenseInput& in, const Vec2& end, double 
   return false;
 }
 
-void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
-  // The reading is reused step after step: its people are overwritten in place (clearing and
-  // pushing every person cost more).
-  std::vector<PersonObservation>& people = out->people;
+void PersonSensor::Detect(const SenseInput& in, std::vector<Detection>* out) const {
+  out->clear();
   const auto observe = [&in](const AgentState& h) {
     return PersonObservation{in.frame.PointToLocal(h.position), in.frame.VectorToLocal(h.velocity),
                              h.radius};
   };
-  if (!(max_range_ > 0.0) && half_fov_cos_ < -1.5 && occlusion_ == Occlusion::kNone &&
-      detection_prob_ >= 1.0 && position_noise_ == 0.0) {
-    // Unlimited: everybody, in the crowd's order.
-    people.resize(in.humans.size());
-    for (std::size_t i = 0; i < in.humans.size(); ++i) people[i] = observe(in.humans[i]);
-    return;
-  }
-  // The detected ones only: those beyond the reading's last size are added (sizing it to the
-  // whole crowd would construct and drop the others every step).
   thread_local std::vector<std::size_t> detected;
   detected.clear();
   for (std::size_t i = 0; i < in.humans.size(); ++i) {
@@ -167,24 +214,167 @@ void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
   }
   if (occlusion_ != Occlusion::kNone && !detected.empty()) Unoccluded(in, &detected);
   const bool noisy = detection_prob_ < 1.0 || position_noise_ > 0.0;
-  std::size_t n = 0;
   for (const std::size_t i : detected) {
-    PersonObservation seen = observe(in.humans[i]);
+    Detection d;
+    d.seen = observe(in.humans[i]);
+    d.world = in.humans[i].position;
+    d.person = static_cast<int>(i);
     if (noisy) {
       // One stream per (episode, step, human): the same draws on any thread and in a lookahead.
       Rng rng = NoiseRng(in, i);
       if (rng.Uniform() >= detection_prob_) continue;  // missed this step
       if (position_noise_ > 0.0) {
         const Vec2 noise(rng.Normal(), rng.Normal());
-        seen.position += in.frame.VectorToLocal(noise * position_noise_);
+        d.seen.position += in.frame.VectorToLocal(noise * position_noise_);
+        d.world += noise * position_noise_;
       }
     }
-    if (n < people.size()) {
-      people[n] = seen;
-    } else {
-      people.push_back(seen);
+    out->push_back(d);
+  }
+  if (false_detections_ > 0.0) AddFalseDetections(in, phantom_area_, false_detections_, out);
+}
+
+namespace {
+
+// The tracker's state after step k is a pure function of the episode's seed and frames 0..k:
+// this thread keeps the last one per (sensor, history), so that a reading replays only the
+// frames added since instead of the whole episode. The result is the same.
+struct Memo {
+  const void* sensor = nullptr;
+  std::uint64_t history_id = 0;
+  std::uint64_t noise_seed = 0;
+  int step = -1;  // the last past step folded into `state` (-1: before step 0, no tracks)
+  TrackerState state;
+  // The last real reading's state after its own step, with what it sensed: it becomes `state`
+  // once a past shows the same at that step (-1: none).
+  int pending_step = -1;
+  Frame frame;
+  std::vector<AgentState> humans;
+  TrackerState pending;
+};
+
+Memo* FindMemo(const void* sensor, const SenseInput& in) {
+  thread_local std::array<Memo, 4> memos;
+  thread_local std::size_t next = 0;
+  if (in.history_id == 0) return nullptr;
+  for (Memo& m : memos) {
+    if (m.sensor == sensor && m.history_id == in.history_id && m.noise_seed == in.noise_seed) {
+      return &m;
     }
-    ++n;
+  }
+  Memo& m = memos[next];
+  next = (next + 1) % memos.size();
+  m.sensor = sensor;
+  m.history_id = in.history_id;
+  m.noise_seed = in.noise_seed;
+  m.step = -1;  // the state before step 0: no tracks
+  m.state = TrackerState{};
+  m.pending_step = -1;
+  return &m;
+}
+
+// Whether `f` is what the pending reading sensed (all the tracker reads of it: the frame, where
+// people are and their size).
+bool SameState(const Memo& m, const SensedFrame& f) {
+  if (m.frame.origin != f.frame.origin || m.frame.cos_h != f.frame.cos_h ||
+      m.frame.sin_h != f.frame.sin_h || m.humans.size() != f.humans.size()) {
+    return false;
+  }
+  for (std::size_t i = 0; i < f.humans.size(); ++i) {
+    if (m.humans[i].position != f.humans[i].position || m.humans[i].radius != f.humans[i].radius)
+      return false;
+  }
+  return true;
+}
+
+void Assign(TrackerState* to, const TrackerState& from) {
+  to->tracks.assign(from.tracks.begin(), from.tracks.end());  // no allocation once grown
+  to->next_id = from.next_id;
+}
+
+}  // namespace
+
+void PersonSensor::TrackedBefore(const SenseInput& in, TrackerState* state) const {
+  const int first = in.step - static_cast<int>(in.past.size());  // the oldest frame's step
+  Memo* memo = FindMemo(this, in);
+  if (memo != nullptr && memo->pending_step >= first && memo->pending_step < in.step) {
+    // The past now holds the pending reading's step: its state counts if it sensed the same.
+    if (SameState(*memo, in.past[static_cast<std::size_t>(memo->pending_step - first)])) {
+      std::swap(memo->state, memo->pending);
+      memo->step = memo->pending_step;
+    }
+    memo->pending_step = -1;
+  }
+  int from = first;
+  state->tracks.clear();
+  state->next_id = 0;
+  if (memo != nullptr && memo->step >= first - 1 && memo->step < in.step) {
+    Assign(state, memo->state);
+    from = memo->step + 1;
+  }
+  thread_local std::vector<Detection> detections;
+  for (int k = from; k < in.step; ++k) {
+    const SensedFrame& f = in.past[static_cast<std::size_t>(k - first)];
+    const SenseInput then{f.robot, f.frame, f.humans, in.world, in.noise_seed, k, in.time_step};
+    Detect(then, &detections);
+    TrackStep(tracker_, k, &detections, state);
+  }
+  if (memo != nullptr && from < in.step) {
+    memo->step = in.step - 1;
+    Assign(&memo->state, *state);
+  }
+}
+
+void PersonSensor::KeepPending(const SenseInput& in, const TrackerState& state) const {
+  Memo* memo = FindMemo(this, in);
+  if (memo == nullptr) return;
+  memo->pending_step = in.step;
+  memo->frame = in.frame;
+  memo->humans.assign(in.humans.begin(), in.humans.end());
+  Assign(&memo->pending, state);
+}
+
+void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
+  // The reading is reused step after step: its people are overwritten in place (clearing and
+  // pushing every person cost more).
+  std::vector<PersonObservation>& people = out->people;
+  if (!(max_range_ > 0.0) && half_fov_cos_ < -1.5 && occlusion_ == Occlusion::kNone &&
+      detection_prob_ >= 1.0 && position_noise_ == 0.0 && false_detections_ == 0.0 &&
+      !estimate_velocity_ && !track_) {
+    // Unlimited: everybody, in the crowd's order.
+    people.resize(in.humans.size());
+    for (std::size_t i = 0; i < in.humans.size(); ++i) {
+      const AgentState& h = in.humans[i];
+      people[i] = PersonObservation{in.frame.PointToLocal(h.position),
+                                    in.frame.VectorToLocal(h.velocity), h.radius};
+    }
+    return;
+  }
+  thread_local std::vector<Detection> detections;
+  if (estimate_velocity_ || track_) {
+    // The tracker over the past, then this step.
+    thread_local TrackerState state;
+    TrackedBefore(in, &state);
+    Detect(in, &detections);
+    TrackStep(tracker_, in.step, &detections, &state);
+    // A real step's state is the next reading's past: kept, checked against it then.
+    if (!in.lookahead) KeepPending(in, state);
+    for (Detection& d : detections) {
+      if (estimate_velocity_) d.seen.velocity = in.frame.VectorToLocal(d.velocity);
+      if (track_) d.seen.track_id = d.track;
+    }
+  } else {
+    Detect(in, &detections);
+  }
+  // The detected ones only: those beyond the reading's last size are added (sizing it to the
+  // whole crowd would construct and drop the others every step).
+  const std::size_t n = detections.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k < people.size()) {
+      people[k] = detections[k].seen;
+    } else {
+      people.push_back(detections[k].seen);
+    }
   }
   people.resize(n);
 }

@@ -1,6 +1,7 @@
 // The people detector of CrowdNav: every human's position, velocity and radius in the
 // robot's frame, optionally limited to a detection range, a field of view and what the robot
-// can see past the map's rectangles and other people.
+// can see past the map's rectangles and other people, with false detections, tracked
+// identities and estimated velocities.
 #pragma once
 
 #include <cstddef>
@@ -8,6 +9,8 @@
 
 #include "crowdsim/params.h"
 #include "crowdsim/sensor.h"
+#include "false_detections.h"
+#include "person_tracker.h"
 
 namespace crowdsim::person {
 
@@ -18,8 +21,18 @@ class PersonSensor final : public Sensor {
  public:
   explicit PersonSensor(const Params& params);
   void Sense(const SenseInput& in, SensorReading* out) const override;
+  /// All the episode with the nearest-neighbour tracker, the last max_gap + 1 steps for
+  /// velocities estimated alone, else none.
+  int HistorySteps() const override;
 
  private:
+  /// This step's detections (in range, view and sight, not missed, noisy) and phantoms.
+  void Detect(const SenseInput& in, std::vector<Detection>* out) const;
+  /// The tracker's state after the last of `in.past` (replayed, or continued from this thread's
+  /// memo of the same history).
+  void TrackedBefore(const SenseInput& in, TrackerState* state) const;
+  /// Keeps `state`, the tracker's after this real (not lookahead) reading, for the next one.
+  void KeepPending(const SenseInput& in, const TrackerState& state) const;
   /// Whether human `i` lies within max_range and the field of view.
   bool InRangeAndView(const SenseInput& in, std::size_t i) const;
   /// Keeps the `candidates` a sight line from the robot's centre reaches (the centre or either
@@ -32,12 +45,17 @@ class PersonSensor final : public Sensor {
   double max_range_;     // m; 0 = unlimited
   double half_fov_cos_;  // cos of half the field of view; -1 = all around
   Occlusion occlusion_;
-  double detection_prob_;  // per step and human in view
-  double position_noise_;  // m, per axis
+  double detection_prob_;    // per step and human in view
+  double position_noise_;    // m, per axis
+  double false_detections_;  // expected phantoms a reading
+  SensedArea phantom_area_;
+  bool estimate_velocity_;
+  bool track_;  // nearest-neighbour tracker: report track ids
+  TrackerConfig tracker_;
 };
 
 /// The parameters person declares (max_range, fov_deg, occlusion, detection_prob,
-/// position_noise).
+/// position_noise, false_detections, velocity, tracker, track_gate, track_max_gap).
 ParamSchema Schema();
 
 }  // namespace crowdsim::person

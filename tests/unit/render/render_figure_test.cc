@@ -235,6 +235,41 @@ TEST(EpisodeFigure, APersonSensorsFieldOfViewIsDrawnAndUnseenPeopleAreGrey) {
   EXPECT_EQ(grey_humans(true, 360.0), 0);  // everybody detected
 }
 
+// A tracking person sensor: the first human with track id 3, and a false detection (id 4) 50 m
+// ahead, far from everybody; it notes the past and time step it was handed.
+class TrackingSensor final : public Sensor {
+ public:
+  void Sense(const SenseInput& in, SensorReading* out) const override {
+    out->people = {
+        PersonObservation{in.frame.PointToLocal(in.humans[0].position), Vec2::Zero(), 0.3, 3},
+        PersonObservation{Vec2(50.0, 0.0), Vec2::Zero(), 0.3, 4}};
+    past = in.past.size();
+    time_step = in.time_step;
+  }
+  int HistorySteps() const override { return -1; }
+  mutable std::size_t past = 0;
+  mutable double time_step = 0.0;
+};
+
+TEST(EpisodeFigure, PhantomsAreHollowDiscsAndTrackIdsAreLabelled) {
+  const Scenario sc = ScriptedScenario();
+  const EpisodeResult r = RunScripted(sc);
+  TrackingSensor sensor;
+  const std::vector<MountedSensor> sensors = {{"person", &sensor}};
+  EpisodeFigure fig = Figure(sc, r);
+  fig.sensors = TakeSensorSnapshot(sc, r, 8, sensors);
+  EXPECT_EQ(sensor.past, 8u);  // the frames of steps 0..7
+  EXPECT_DOUBLE_EQ(sensor.time_step, r.trajectory[1].time);
+  const Drawing d = DrawEpisode(fig);
+  EXPECT_EQ(d.Count("person-reading"), 2);   // a ring for each
+  EXPECT_EQ(d.Count("phantom-reading"), 1);  // and a hollow disc for the one near nobody
+  std::vector<std::string> ids;
+  for (const DrawItem& it : d.items) {
+    if (it.cls == "track-id") ids.push_back(it.text);
+  }
+  EXPECT_EQ(ids, (std::vector<std::string>{"3", "4"}));
+}
+
 // A sensor reporting other features (as the route sensor does: distance, waypoint x, y).
 struct ValuesSensor : Sensor {
   void Sense(const SenseInput&, SensorReading* out) const override {

@@ -20,6 +20,9 @@ struct CROWDSIM_SDK_API PersonObservation {
   Vec2 position = Vec2::Zero();
   Vec2 velocity = Vec2::Zero();
   double radius = 0.3;
+  /// A tracking sensor's identity of this detection, kept from step to step while the tracker
+  /// follows it; -1 when the sensor does not track.
+  int track_id = -1;
 };
 
 /// One sensor's output: `people` (person sensors); `ranges`, `angles` (sensor frame, rad),

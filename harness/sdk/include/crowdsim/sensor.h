@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "crowdsim/agent_state.h"
 #include "crowdsim/export.h"
@@ -13,6 +14,14 @@ namespace crowdsim {
 
 class CollisionWorld;
 
+/// One earlier step as the robot sensed it: its state (heading as sensed), its sensor frame and
+/// the humans.
+struct CROWDSIM_SDK_API SensedFrame {
+  AgentState robot;
+  Frame frame;
+  std::vector<AgentState> humans;
+};
+
 /// A read-only snapshot a sensor reads (the real state, or a lookahead's propagated state).
 struct CROWDSIM_SDK_API SenseInput {
   const AgentState& robot;
@@ -22,7 +31,17 @@ struct CROWDSIM_SDK_API SenseInput {
   /// The episode's stream for sensor noise: draw from (noise_seed, step, what) with no state, so
   /// a reading is the same on any thread and in a lookahead of the same step. 0: no episode.
   std::uint64_t noise_seed = 0;
-  int step = 0;  ///< the step sensed (a lookahead senses the next one)
+  int step = 0;            ///< the step sensed (a lookahead senses the next one)
+  double time_step = 0.0;  ///< s between steps; 0: unknown (no episode)
+  /// The steps before `step`, oldest first, when a sensor asks for them (Sensor::HistorySteps):
+  /// the frames of steps step - past.size() .. step - 1. A lookahead's past ends with the real
+  /// current step. Empty when no sensor of the robot asks.
+  std::span<const SensedFrame> past = {};
+  /// Names the history: readings with the same nonzero id share their past frames (one episode's,
+  /// only ever appended to), so a sensor may memoise what it derives from them. 0: no promise.
+  std::uint64_t history_id = 0;
+  /// A lookahead's reading of a predicted state (which the episode may never reach).
+  bool lookahead = false;
 };
 
 /// The noise of `item` (a person, a beam) at this reading's step: stateless, so the same draws on
@@ -38,6 +57,9 @@ class CROWDSIM_SDK_API Sensor {
   /// Fills `out` (the harness names it). Const, no hidden mutable state: lookahead calls it from
   /// any thread. Locked caches of pure results are fine.
   virtual void Sense(const SenseInput& in, SensorReading* out) const = 0;
+  /// How many earlier steps Sense reads from SenseInput::past: 0 (default) none, -1 all of the
+  /// episode. The harness keeps the episode's frames only when a sensor asks.
+  virtual int HistorySteps() const { return 0; }
 };
 
 }  // namespace crowdsim

@@ -148,9 +148,9 @@ class Episode {
 
  private:
   class StepLookahead;
-  /// The sensors' readings at step `step` (a lookahead's: the next one).
+  /// The sensors' readings at step `step` (a lookahead's: the next one, predicted).
   void Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
-             int step, std::vector<SensorReading>* out) const;
+             int step, std::vector<SensorReading>* out, bool lookahead = false) const;
   void DecideHumans();
   /// Every human moves with its decided velocity for one step.
   void MoveHumans();
@@ -164,12 +164,19 @@ class Episode {
   double RobotHeading(const AgentState& robot, double executed_heading) const;
   void Finish(EpisodeStatus status);
   void Record();
+  /// The frames before `step` the sensors read (the last history_steps_ of them, or all).
+  std::span<const SensedFrame> Past(int step) const;
 
   const Scenario& scenario_;
   SimConfig sim_;
   EpisodeAgents agents_;
   CollisionWorld world_;
   bool record_;
+  // The most earlier steps a sensor reads (-1: all; 0: none, and no frame is kept), the frames
+  // kept for them (one a step, from step 0) and the id that names this episode's history.
+  int history_steps_ = 0;
+  std::vector<SensedFrame> past_;
+  std::uint64_t history_id_ = 0;
   PolicyNeeds robot_needs_;
   std::vector<PolicyNeeds> human_needs_;
 
