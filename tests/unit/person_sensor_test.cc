@@ -256,12 +256,8 @@ TEST_F(PersonRealism, ARealisticDetectorGivesTheSameEpisodesOnAnyThreads) {
                 "robot: {sensors: [{type: person, fov_deg: 180, occlusion: obstacles+people, "
                 "detection_prob: 0.9, position_noise: 0.1}]}\n"
                 "rows:\n  - {label: orca, policy: orca}\n  - {label: sarl, policy: sarl}\n");
-  std::vector<std::string> texts;
-  for (const int jobs : {1, 2}) {
-    texts.push_back(
-        testing::RunSuiteFile(file, dir.path() / ("out" + std::to_string(jobs)), jobs).episodes);
-  }
-  EXPECT_EQ(texts[0], texts[1]);
+  const auto runs = testing::RunOnOneAndTwoThreads(file, dir.path());
+  EXPECT_EQ(runs[0].episodes, runs[1].episodes);
 }
 
 TEST_F(PersonRealism, BadValuesAreRefusedAndDefaultsStayOutOfTheHash) {
