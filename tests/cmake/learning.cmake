@@ -17,9 +17,14 @@ if(CROWDSIM_WITH_TORCH)
         SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/${test}.cc
         LIBS crowdsim_learning_test_util)
     endforeach()
-    # The weights test also checks the networks' tensor code directly.
-    target_link_libraries(value_rl_weights_test PRIVATE ${TORCH_LIBRARIES})
-    target_include_directories(value_rl_weights_test SYSTEM PRIVATE ${TORCH_INCLUDE_DIRS})
+    # These tests also check the networks' tensor code directly.
+    crowdsim_add_gtest(attention_weights_test unit
+      SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/attention_weights_test.cc
+      LIBS crowdsim_learning_test_util)
+    foreach(test value_rl_weights_test attention_weights_test)
+      target_link_libraries(${test} PRIVATE ${TORCH_LIBRARIES})
+      target_include_directories(${test} SYSTEM PRIVATE ${TORCH_INCLUDE_DIRS})
+    endforeach()
     # The trainer's internal pieces (value targets, replay memory, episode log, learning curve).
     crowdsim_add_gtest(value_targets_test unit
       SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/learning/value_targets_test.cc)

@@ -86,6 +86,25 @@ torch::Tensor ValueNetwork::WithRoutePrior(const torch::Tensor& value, const Sta
   return value + prior_weight_ * torch::exp(d * log_gamma);
 }
 
+/// CrowdNav's "masked softmax", exp(s) [s != 0] / sum, no max shift, padded rows masked too.
+/// Rows where exp under- or overflows (0/0, inf/inf: scores beyond about +-88, likeliest with
+/// one person seen) take the max-shifted softmax instead; the other rows keep CrowdNav's values.
+torch::Tensor AttentionWeights(const torch::Tensor& scores, const torch::Tensor& mask) {
+  const torch::Tensor valid = scores.ne(0).to(torch::kFloat) * mask;
+  torch::Tensor w = torch::exp(scores) * valid;
+  w = w / w.sum(1, /*keepdim=*/true);
+  if (torch::isfinite(w).all().item<bool>()) return w;
+  // Recomputed from scratch so that no inf or NaN stays in the graph (0 x inf in backward).
+  const torch::Tensor row_ok = torch::isfinite(w).all(1, /*keepdim=*/true).detach();
+  const torch::Tensor plain = torch::where(row_ok, scores, torch::zeros_like(scores));
+  torch::Tensor kept = torch::exp(plain) * valid;
+  kept = kept / torch::where(row_ok, kept.sum(1, true), torch::ones_like(row_ok, torch::kFloat));
+  const torch::Tensor shifted = scores.masked_fill(valid.eq(0), -1e30f);
+  torch::Tensor stable = torch::softmax(shifted, 1) * valid;
+  stable = stable / stable.sum(1, true).clamp_min(std::numeric_limits<float>::min());
+  return torch::where(row_ok, kept, stable);
+}
+
 namespace {
 
 /// The last layer of an Mlp (a Linear: Mlp's last layer has no ReLU after it).
@@ -165,9 +184,7 @@ class Sarl final : public ValueNetwork {
       torch::Tensor global = (e * m).sum(1) / m.sum(1).clamp_min(1.0);
       // Attention on cat({e, global}): the mean embedding is the per-state part.
       torch::Tensor scores = ForwardJoined(attention_, global, e, /*state_first=*/false).squeeze(2);
-      // CrowdNav's "masked softmax": exp(s) * [s != 0], no max shift; padded rows masked too.
-      torch::Tensor w = torch::exp(scores) * scores.ne(0).to(torch::kFloat) * m.squeeze(2);
-      w = w / w.sum(1, /*keepdim=*/true);
+      torch::Tensor w = AttentionWeights(scores, m.squeeze(2));
       torch::Tensor crowd = (w.unsqueeze(2) * h).sum(1);
       joint = torch::cat({joint, crowd}, 1);
     }

@@ -37,6 +37,10 @@ torch::nn::Sequential Mlp(int64_t in, std::initializer_list<int64_t> dims, bool 
 torch::Tensor ForwardJoined(torch::nn::Sequential& mlp, const torch::Tensor& state,
                             const torch::Tensor& rows, bool state_first);
 
+/// SARL's attention weights over people (B, N) from their scores and the mask of real rows:
+/// CrowdNav's masked softmax, max-shifted in rows where it would under- or overflow to NaN.
+torch::Tensor AttentionWeights(const torch::Tensor& scores, const torch::Tensor& mask);
+
 /// State value network: V(batch) -> (B), the route prior of its configuration included.
 class ValueNetwork : public torch::nn::Module {
  public:
