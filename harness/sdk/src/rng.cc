@@ -5,13 +5,6 @@
 
 namespace crowdsim {
 
-std::uint64_t SplitMix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
 std::uint64_t DeriveSeed(std::uint64_t suite_seed, std::string_view world_identity,
                          std::uint64_t episode_index) {
   // FNV-1a of the identity, then mixed with the seed and the index.
@@ -21,14 +14,6 @@ std::uint64_t DeriveSeed(std::uint64_t suite_seed, std::string_view world_identi
     h *= 0x100000001b3ULL;
   }
   return SplitMix64(SplitMix64(suite_seed ^ SplitMix64(h)) ^ SplitMix64(episode_index + 1));
-}
-
-Rng::Rng(std::uint64_t seed) {
-  std::uint64_t x = seed;
-  for (auto& s : s_) {
-    x = SplitMix64(x);
-    s = x;
-  }
 }
 
 std::uint64_t Rng::Below(std::uint64_t n) {

@@ -9,8 +9,14 @@
 
 namespace crowdsim {
 
-/// SplitMix64 step: mixes a 64-bit value into a well-distributed one.
-CROWDSIM_SDK_API std::uint64_t SplitMix64(std::uint64_t x);
+/// SplitMix64 step: mixes a 64-bit value into a well-distributed one. Inline: the person
+/// sensor derives a stream per person and step.
+constexpr std::uint64_t SplitMix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
 
 /// Episode seed from suite seed, world identity and episode index: all rows share episode k's
 /// scenario.
@@ -20,7 +26,13 @@ CROWDSIM_SDK_API std::uint64_t DeriveSeed(std::uint64_t suite_seed, std::string_
 /// xoshiro256** generator with portable uniform and normal draws.
 class CROWDSIM_SDK_API Rng {
  public:
-  explicit Rng(std::uint64_t seed);
+  explicit Rng(std::uint64_t seed) {
+    std::uint64_t x = seed;
+    for (auto& s : s_) {
+      x = SplitMix64(x);
+      s = x;
+    }
+  }
   /// The next 64 random bits; inline, as scenario set-up draws thousands of points.
   std::uint64_t NextU64() {
     const std::uint64_t result = Rotl(s_[1] * 5, 7) * 9;
