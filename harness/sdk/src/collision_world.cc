@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "beam_scan.h"
+#include "crowdsim/thread_scratch.h"
 
 namespace crowdsim {
 namespace {
@@ -29,11 +30,6 @@ struct Scratch {
   std::vector<RelDisc> discs;
   std::vector<Vec2> directions;  // the angle overload of CastRays
 };
-
-Scratch& ThreadScratch() {
-  thread_local Scratch scratch;
-  return scratch;
-}
 
 // Collects the rectangle index of every proxy the broadphase reports (its client object).
 struct IndexCollector final : btBroadphaseAabbCallback {
@@ -166,7 +162,7 @@ void CollisionWorld::QueryRects(const Rect& box, std::vector<int>* out) const {
 
 bool CollisionWorld::DiscOverlaps(const Vec2& center, double radius) const {
   if (!impl_) return false;
-  std::vector<int>& ids = ThreadScratch().ids;
+  std::vector<int>& ids = ThreadScratch<Scratch>().ids;
   ids.clear();
   impl_->Broadphase(Rect{center, center}.Inflated(radius), &ids);
   const auto& rects = map_->rectangles;
@@ -176,7 +172,7 @@ bool CollisionWorld::DiscOverlaps(const Vec2& center, double radius) const {
 
 SweepHit CollisionWorld::SweepDisc(const Vec2& a, const Vec2& b, double radius) const {
   if (!impl_) return SweepHit{};
-  std::vector<int>& ids = ThreadScratch().ids;
+  std::vector<int>& ids = ThreadScratch<Scratch>().ids;
   ids.clear();
   // The swept AABB holds every rectangle the disc can reach, so thin walls are never tunnelled.
   const Rect swept = Rect{a.cwiseMin(b), a.cwiseMax(b)}.Inflated(radius);
@@ -195,7 +191,7 @@ SweepHit CollisionWorld::SweepDisc(const Vec2& a, const Vec2& b, double radius) 
 
 double CollisionWorld::ClearanceAt(const Vec2& p, double search_radius) const {
   if (!impl_) return kInfinity;
-  std::vector<int>& ids = ThreadScratch().ids;
+  std::vector<int>& ids = ThreadScratch<Scratch>().ids;
   ids.clear();
   impl_->Broadphase(Rect{p, p}.Inflated(search_radius), &ids);
   double best = kInfinity;
@@ -207,7 +203,7 @@ double CollisionWorld::ClearanceAt(const Vec2& p, double search_radius) const {
 void CollisionWorld::CastRays(const Vec2& origin, std::span<const double> world_angles,
                               double max_range, std::span<const Circle> discs,
                               double* ranges) const {
-  std::vector<Vec2>& directions = ThreadScratch().directions;
+  std::vector<Vec2>& directions = ThreadScratch<Scratch>().directions;
   directions.clear();
   for (double a : world_angles) directions.emplace_back(std::cos(a), std::sin(a));
   CastRays(origin, directions, max_range, discs, ranges);
@@ -216,7 +212,7 @@ void CollisionWorld::CastRays(const Vec2& origin, std::span<const double> world_
 void CollisionWorld::CastRays(const Vec2& origin, std::span<const Vec2> world_directions,
                               double max_range, std::span<const Circle> discs,
                               double* ranges) const {
-  Scratch& s = ThreadScratch();
+  Scratch& s = ThreadScratch<Scratch>();
   s.ids.clear();
   s.rects.clear();
   s.discs.clear();

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "crowdsim/collision_world.h"
+#include "crowdsim/thread_scratch.h"
 
 namespace crowdsim::lidar2d {
 
@@ -98,8 +99,10 @@ Lidar2dSensor::Lidar2dSensor(const Params& params)
 void Lidar2dSensor::Sense(const SenseInput& in, SensorReading* out) const {
   // Per-thread buffers: Sense runs once per step and per lookahead candidate, on several
   // threads, and must stay const.
-  thread_local std::vector<Vec2> world_directions;
-  thread_local std::vector<Circle> discs;
+  struct Directions {};
+  struct Discs {};
+  std::vector<Vec2>& world_directions = ThreadScratch<std::vector<Vec2>, Directions>();
+  std::vector<Circle>& discs = ThreadScratch<std::vector<Circle>, Discs>();
   // The beam directions rotated by the heading: four products per beam instead of a sine and
   // a cosine (Frame carries the heading's cosine and sine).
   const double c = in.frame.cos_h;

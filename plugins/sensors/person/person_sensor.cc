@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 #include "crowdsim/collision_world.h"
 #include "crowdsim/rng.h"
+#include "crowdsim/thread_scratch.h"
 
 namespace crowdsim::person {
 
@@ -148,57 +150,95 @@ bool PersonSensor::InRangeAndView(const SenseInput& in, std::size_t i) const {
   return in.frame.VectorToLocal(to).x() >= half_fov_cos_ * std::sqrt(d2);
 }
 
+namespace {
+
+// One thread's scratch for a reading's sight lines.
+struct SightScratch {
+  std::vector<Vec2> directions, ends;
+  std::vector<double> lengths, ranges;
+  std::vector<std::size_t> line_of;  // the candidate of each cast line
+  std::vector<double> near;          // each person's nearest reach from the eye, m
+  std::vector<char> seen;            // per candidate
+};
+
+// The sight line from `eye` to `end`, `length` m long, joins the batch cast next.
+void AddLine(const Vec2& eye, const Vec2& end, std::size_t candidate, SightScratch* s) {
+  const double length = (end - eye).norm();
+  s->directions.push_back(length > 0.0 ? Vec2((end - eye) / length) : Vec2(1.0, 0.0));
+  s->lengths.push_back(length);
+  s->ends.push_back(end);
+  s->line_of.push_back(candidate);
+}
+
+}  // namespace
+
 void PersonSensor::Unoccluded(const SenseInput& in, std::vector<std::size_t>* candidates) const {
-  // Three sight lines a person (its centre, either edge of its disc), all cast in one scan: one
-  // broadphase query for the whole reading.
-  thread_local std::vector<Vec2> directions;
-  thread_local std::vector<double> lengths, ranges;
-  thread_local std::vector<Vec2> ends;
-  directions.clear();
-  lengths.clear();
-  ends.clear();
+  // Sight lines to a person's centre first, then to either edge of its disc for those whose
+  // centre is hidden; each set cast in one scan (one broadphase query).
+  SightScratch& s = ThreadScratch<SightScratch>();
   const Vec2& eye = in.frame.origin;
-  double farthest = 0.0;
-  for (const std::size_t i : *candidates) {
-    const AgentState& h = in.humans[i];
-    const Vec2 to = h.position - eye;
-    const double d = to.norm();
-    const Vec2 side = d > 0.0 ? Vec2(Vec2(-to.y(), to.x()) * (h.radius / d)) : Vec2::Zero();
-    for (const Vec2& end : {h.position, Vec2(h.position + side), Vec2(h.position - side)}) {
-      const double length = (end - eye).norm();
-      directions.push_back(length > 0.0 ? Vec2((end - eye) / length) : Vec2(1.0, 0.0));
-      lengths.push_back(length);
-      ends.push_back(end);
-      farthest = std::max(farthest, length);
+  if (occlusion_ == Occlusion::kObstaclesAndPeople) {
+    s.near.resize(in.humans.size());
+    for (std::size_t j = 0; j < in.humans.size(); ++j)
+      s.near[j] = (in.humans[j].position - eye).norm() - in.humans[j].radius;
+  }
+  std::vector<char>& seen = s.seen;
+  seen.assign(candidates->size(), 0);
+  for (int pass = 0; pass < 2; ++pass) {
+    s.directions.clear();
+    s.lengths.clear();
+    s.ends.clear();
+    s.line_of.clear();
+    for (std::size_t c = 0; c < candidates->size(); ++c) {
+      if (seen[c]) continue;
+      const AgentState& h = in.humans[(*candidates)[c]];
+      if (pass == 0) {
+        AddLine(eye, h.position, c, &s);
+        continue;
+      }
+      const Vec2 to = h.position - eye;
+      const double d = to.norm();
+      const Vec2 side = d > 0.0 ? Vec2(Vec2(-to.y(), to.x()) * (h.radius / d)) : Vec2::Zero();
+      AddLine(eye, Vec2(h.position + side), c, &s);
+      AddLine(eye, Vec2(h.position - side), c, &s);
+    }
+    if (s.directions.empty()) break;
+    const double farthest = *std::max_element(s.lengths.begin(), s.lengths.end());
+    s.ranges.resize(s.directions.size());
+    in.world.CastRays(eye, s.directions, farthest + 1.0, {}, s.ranges.data());
+    for (std::size_t k = 0; k < s.directions.size(); ++k) {
+      const std::size_t c = s.line_of[k];
+      const std::size_t i = (*candidates)[c];
+      if (seen[c]) continue;
+      // Touching: nothing lies between (the centre line's length is the distance).
+      if (pass == 0 && s.lengths[k] <= in.humans[i].radius) {
+        seen[c] = 1;
+        continue;
+      }
+      if (s.ranges[k] < s.lengths[k]) continue;  // a rectangle first
+      seen[c] = occlusion_ != Occlusion::kObstaclesAndPeople ||
+                !PersonInTheWay(in, s.ends[k], s.lengths[k], i, s.near);
     }
   }
-  ranges.resize(directions.size());
-  in.world.CastRays(eye, directions, farthest + 1.0, {}, ranges.data());
   std::size_t kept = 0;
   for (std::size_t c = 0; c < candidates->size(); ++c) {
-    const std::size_t i = (*candidates)[c];
-    bool seen = lengths[3 * c] <= in.humans[i].radius;  // touching: nothing lies between
-    for (std::size_t k = 3 * c; k < 3 * c + 3 && !seen; ++k) {
-      if (ranges[k] < lengths[k]) continue;  // a rectangle first
-      seen = occlusion_ != Occlusion::kObstaclesAndPeople ||
-             !PersonInTheWay(in, ends[k], lengths[k], i);
-    }
-    if (seen) (*candidates)[kept++] = i;
+    if (seen[c]) (*candidates)[kept++] = (*candidates)[c];
   }
   candidates->resize(kept);
 }
 
 bool PersonSensor::PersonInTheWay(const SenseInput& in, const Vec2& end, double length,
-                                  std::size_t target) const {
+                                  std::size_t target, std::span<const double> near) const {
+  // Branch-free over the few people of a reading: their outcomes are as good as random.
   const Vec2& eye = in.frame.origin;
+  bool hit = false;
   for (std::size_t j = 0; j < in.humans.size(); ++j) {
-    if (j == target) continue;
-    const AgentState& other = in.humans[j];
     // Only someone nearer than the line's end can stand on it.
-    if ((other.position - eye).norm() - other.radius >= length) continue;
-    if (SegmentMeetsDisc(eye, end, other.position, other.radius)) return true;
+    const AgentState& other = in.humans[j];
+    hit |= (j != target) & (near[j] < length) &
+           SegmentMeetsDisc(eye, end, other.position, other.radius);
   }
-  return false;
+  return hit;
 }
 
 void PersonSensor::Detect(const SenseInput& in, std::vector<Detection>* out) const {
@@ -207,7 +247,8 @@ void PersonSensor::Detect(const SenseInput& in, std::vector<Detection>* out) con
     return PersonObservation{in.frame.PointToLocal(h.position), in.frame.VectorToLocal(h.velocity),
                              h.radius};
   };
-  thread_local std::vector<std::size_t> detected;
+  struct Detected {};
+  std::vector<std::size_t>& detected = ThreadScratch<std::vector<std::size_t>, Detected>();
   detected.clear();
   for (std::size_t i = 0; i < in.humans.size(); ++i) {
     if (InRangeAndView(in, i)) detected.push_back(i);
@@ -312,7 +353,8 @@ void PersonSensor::TrackedBefore(const SenseInput& in, TrackerState* state) cons
     Assign(state, memo->state);
     from = memo->step + 1;
   }
-  thread_local std::vector<Detection> detections;
+  struct Past {};
+  std::vector<Detection>& detections = ThreadScratch<std::vector<Detection>, Past>();
   for (int k = from; k < in.step; ++k) {
     const SensedFrame& f = in.past[static_cast<std::size_t>(k - first)];
     const SenseInput then{f.robot, f.frame, f.humans, in.world, in.noise_seed, k, in.time_step};
@@ -350,10 +392,11 @@ void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
     }
     return;
   }
-  thread_local std::vector<Detection> detections;
+  struct Now {};
+  std::vector<Detection>& detections = ThreadScratch<std::vector<Detection>, Now>();
   if (estimate_velocity_ || track_) {
     // The tracker over the past, then this step.
-    thread_local TrackerState state;
+    TrackerState& state = ThreadScratch<TrackerState>();
     TrackedBefore(in, &state);
     Detect(in, &detections);
     TrackStep(tracker_, in.step, &detections, &state);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "crowdsim/params.h"
@@ -38,9 +39,10 @@ class PersonSensor final : public Sensor {
   /// Keeps the `candidates` a sight line from the robot's centre reaches (the centre or either
   /// edge of the disc), in order.
   void Unoccluded(const SenseInput& in, std::vector<std::size_t>* candidates) const;
-  /// Whether another person stands on the sight line to `end` (on human `target`), `length` m.
-  bool PersonInTheWay(const SenseInput& in, const Vec2& end, double length,
-                      std::size_t target) const;
+  /// Whether another person stands on the sight line to `end` (on human `target`), `length` m;
+  /// `near`: each person's distance from the robot's centre less its radius.
+  bool PersonInTheWay(const SenseInput& in, const Vec2& end, double length, std::size_t target,
+                      std::span<const double> near) const;
 
   double max_range_;     // m; 0 = unlimited
   double half_fov_cos_;  // cos of half the field of view; -1 = all around

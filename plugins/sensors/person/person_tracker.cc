@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "crowdsim/thread_scratch.h"
+
 namespace crowdsim::person {
 
 namespace {
@@ -34,7 +36,8 @@ void Continue(const TrackerConfig& config, int step, Track* t, Detection* d) {
 void TrackStep(const TrackerConfig& config, int step, std::vector<Detection>* detections,
                TrackerState* state) {
   std::vector<Track>& tracks = state->tracks;
-  thread_local std::vector<char> matched;
+  struct Matched {};
+  std::vector<char>& matched = ThreadScratch<std::vector<char>, Matched>();
   matched.assign(detections->size(), 0);
   if (config.association == Association::kIdentity) {
     for (std::size_t k = 0; k < detections->size(); ++k) {
@@ -50,7 +53,8 @@ void TrackStep(const TrackerConfig& config, int step, std::vector<Detection>* de
     }
   } else {
     // Every (track, detection) within the gate, nearest first; each side taken once.
-    thread_local std::vector<Pair> pairs;
+    struct Pairs {};
+    std::vector<Pair>& pairs = ThreadScratch<std::vector<Pair>, Pairs>();
     pairs.clear();
     const double gate2 = config.gate * config.gate;
     for (std::size_t t = 0; t < tracks.size(); ++t) {
@@ -60,7 +64,8 @@ void TrackStep(const TrackerConfig& config, int step, std::vector<Detection>* de
       }
     }
     std::sort(pairs.begin(), pairs.end());
-    thread_local std::vector<char> taken;
+    struct Taken {};
+    std::vector<char>& taken = ThreadScratch<std::vector<char>, Taken>();
     taken.assign(tracks.size(), 0);
     for (const Pair& p : pairs) {
       if (taken[p.track] || matched[p.detection]) continue;
