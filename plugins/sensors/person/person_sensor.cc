@@ -156,89 +156,67 @@ namespace {
 struct SightScratch {
   std::vector<Vec2> directions, ends;
   std::vector<double> lengths, ranges;
-  std::vector<std::size_t> line_of;  // the candidate of each cast line
-  std::vector<double> near;          // each person's nearest reach from the eye, m
-  std::vector<char> seen;            // per candidate
+  std::vector<double> near;  // each person's nearest reach from the eye, m
 };
 
-// The sight line from `eye` to `end`, `length` m long, joins the batch cast next.
-void AddLine(const Vec2& eye, const Vec2& end, std::size_t candidate, SightScratch* s) {
+// The sight line from `eye` to `end` joins the batch cast next.
+void AddLine(const Vec2& eye, const Vec2& end, SightScratch* s) {
   const double length = (end - eye).norm();
   s->directions.push_back(length > 0.0 ? Vec2((end - eye) / length) : Vec2(1.0, 0.0));
   s->lengths.push_back(length);
   s->ends.push_back(end);
-  s->line_of.push_back(candidate);
 }
 
 }  // namespace
 
 void PersonSensor::Unoccluded(const SenseInput& in, std::vector<std::size_t>* candidates) const {
-  // Sight lines to a person's centre first, then to either edge of its disc for those whose
-  // centre is hidden; each set cast in one scan (one broadphase query).
+  // Three sight lines a person (its centre, either edge of its disc), all cast in one scan: one
+  // broadphase query for the whole reading.
   SightScratch& s = ThreadScratch<SightScratch>();
+  s.directions.clear();
+  s.lengths.clear();
+  s.ends.clear();
   const Vec2& eye = in.frame.origin;
+  for (const std::size_t i : *candidates) {
+    const AgentState& h = in.humans[i];
+    const Vec2 to = h.position - eye;
+    const double d = to.norm();
+    const Vec2 side = d > 0.0 ? Vec2(Vec2(-to.y(), to.x()) * (h.radius / d)) : Vec2::Zero();
+    for (const Vec2& end : {h.position, Vec2(h.position + side), Vec2(h.position - side)})
+      AddLine(eye, end, &s);
+  }
   if (occlusion_ == Occlusion::kObstaclesAndPeople) {
     s.near.resize(in.humans.size());
     for (std::size_t j = 0; j < in.humans.size(); ++j)
       s.near[j] = (in.humans[j].position - eye).norm() - in.humans[j].radius;
   }
-  std::vector<char>& seen = s.seen;
-  seen.assign(candidates->size(), 0);
-  for (int pass = 0; pass < 2; ++pass) {
-    s.directions.clear();
-    s.lengths.clear();
-    s.ends.clear();
-    s.line_of.clear();
-    for (std::size_t c = 0; c < candidates->size(); ++c) {
-      if (seen[c]) continue;
-      const AgentState& h = in.humans[(*candidates)[c]];
-      if (pass == 0) {
-        AddLine(eye, h.position, c, &s);
-        continue;
-      }
-      const Vec2 to = h.position - eye;
-      const double d = to.norm();
-      const Vec2 side = d > 0.0 ? Vec2(Vec2(-to.y(), to.x()) * (h.radius / d)) : Vec2::Zero();
-      AddLine(eye, Vec2(h.position + side), c, &s);
-      AddLine(eye, Vec2(h.position - side), c, &s);
-    }
-    if (s.directions.empty()) break;
-    const double farthest = *std::max_element(s.lengths.begin(), s.lengths.end());
-    s.ranges.resize(s.directions.size());
-    in.world.CastRays(eye, s.directions, farthest + 1.0, {}, s.ranges.data());
-    for (std::size_t k = 0; k < s.directions.size(); ++k) {
-      const std::size_t c = s.line_of[k];
-      const std::size_t i = (*candidates)[c];
-      if (seen[c]) continue;
-      // Touching: nothing lies between (the centre line's length is the distance).
-      if (pass == 0 && s.lengths[k] <= in.humans[i].radius) {
-        seen[c] = 1;
-        continue;
-      }
-      if (s.ranges[k] < s.lengths[k]) continue;  // a rectangle first
-      seen[c] = occlusion_ != Occlusion::kObstaclesAndPeople ||
-                !PersonInTheWay(in, s.ends[k], s.lengths[k], i, s.near);
-    }
-  }
+  const double farthest = *std::max_element(s.lengths.begin(), s.lengths.end());
+  s.ranges.resize(s.directions.size());
+  in.world.CastRays(eye, s.directions, farthest + 1.0, {}, s.ranges.data());
   std::size_t kept = 0;
   for (std::size_t c = 0; c < candidates->size(); ++c) {
-    if (seen[c]) (*candidates)[kept++] = (*candidates)[c];
+    const std::size_t i = (*candidates)[c];
+    bool seen = s.lengths[3 * c] <= in.humans[i].radius;  // touching: nothing lies between
+    for (std::size_t k = 3 * c; k < 3 * c + 3 && !seen; ++k) {
+      if (s.ranges[k] < s.lengths[k]) continue;  // a rectangle first
+      seen = occlusion_ != Occlusion::kObstaclesAndPeople ||
+             !PersonInTheWay(in, s.ends[k], s.lengths[k], i, s.near);
+    }
+    if (seen) (*candidates)[kept++] = i;
   }
   candidates->resize(kept);
 }
 
 bool PersonSensor::PersonInTheWay(const SenseInput& in, const Vec2& end, double length,
                                   std::size_t target, std::span<const double> near) const {
-  // Branch-free over the few people of a reading: their outcomes are as good as random.
   const Vec2& eye = in.frame.origin;
-  bool hit = false;
   for (std::size_t j = 0; j < in.humans.size(); ++j) {
     // Only someone nearer than the line's end can stand on it.
+    if (j == target || near[j] >= length) continue;
     const AgentState& other = in.humans[j];
-    hit |= (j != target) & (near[j] < length) &
-           SegmentMeetsDisc(eye, end, other.position, other.radius);
+    if (SegmentMeetsDisc(eye, end, other.position, other.radius)) return true;
   }
-  return hit;
+  return false;
 }
 
 void PersonSensor::Detect(const SenseInput& in, std::vector<Detection>* out) const {
