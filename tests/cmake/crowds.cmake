@@ -1,0 +1,11 @@
+# Recorded crowds: the track reader (plugins/lib/crowd_tracks) and the importer's command line
+# (tools/crowds).
+if(CROWDSIM_BUILD_TESTS)
+  crowdsim_add_gtest(crowds_test unit
+    SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/crowds/tracks_test.cc
+    LIBS crowdsim_crowd_tracks)
+  crowdsim_add_gtest(crowds_cli_test integration
+    SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/unit/crowds/crowds_cli_test.cc
+    LIBS crowdsim_crowd_tracks)
+  add_dependencies(crowds_cli_test crowdsim-bench)
+endif()
