@@ -114,8 +114,7 @@ std::vector<HumanSpec> CrowdsWorld::PeopleOf(double start, double length,
 }
 
 Scenario CrowdsWorld::Make(const ScenarioRequest& request) const {
-  const auto count = static_cast<std::int64_t>(windows_.size());
-  const std::int64_t k = ((request.episode_index % count) + count) % count;
+  const std::int64_t k = FrozenLayoutIndex(request, static_cast<std::int64_t>(windows_.size()));
   Scenario s;
   s.map = map_;
   s.seed = request.seed;
