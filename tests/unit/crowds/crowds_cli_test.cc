@@ -53,5 +53,24 @@ TEST(CrowdsCli, ABadSceneIsNamedByFileAndLineAndNothingIsWritten) {
   EXPECT_NE(why.find("none.txt: not found"), std::string::npos) << why;
 }
 
+// A suite whose crowds world names a bad track file stops before its first episode, naming the
+// file and line, and writes nothing.
+TEST(CrowdsCli, ASuiteWithABadTrackFileRunsNothing) {
+  TempDir dir;
+  dir.Write("bad.tracks", "0 1 1 1\n1 1 2 2\n3 1 3 3\n");
+  const auto suite = dir.Write("s.yaml",
+                               "name: bad\nepisodes: 2\nseed: 1\n"
+                               "world: {source: crowds, file: bad.tracks}\n"
+                               "humans: {count: 5, policy: replay}\n"
+                               "rows:\n  - {label: linear, policy: linear}\n");
+  const auto bin = crowdsim::testing::BinaryDir() / "bin" / "crowdsim-bench";
+  const auto out = dir.path() / "out";
+  const auto [status, text] = Shell("cd " + dir.path().string() + " && " + bin.string() +
+                                    " run s.yaml --out " + out.string());
+  EXPECT_EQ(status, 2) << text;
+  EXPECT_NE(text.find("bad.tracks:3: person 1 jumps from frame 1 to 3"), std::string::npos) << text;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 }  // namespace
 }  // namespace crowdsim
