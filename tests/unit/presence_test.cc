@@ -67,6 +67,38 @@ TEST(Presence, APersonPresentWhenTheRobotPassesIsHit) {
   EXPECT_EQ(episode.result().collided_human, 0);
 }
 
+// Records how many agents each decision saw and whether self_index named the person itself.
+class NeighbourCheck final : public Policy {
+ public:
+  Action Decide(const Observation& obs) override {
+    seen.push_back(obs.agents->agents().size());
+    self_ok = self_ok && obs.agents->agents()[static_cast<std::size_t>(obs.self_index)].position ==
+                             obs.self.position;
+    return Action{};
+  }
+  std::vector<std::size_t> seen;
+  bool self_ok = true;
+};
+
+TEST(Presence, OtherPeopleSeeOnlyThePresentAndFindThemselves) {
+  GoStraightPolicy robot;
+  NeighbourCheck zero, one;
+  EpisodeAgents agents{&robot, {&zero, &one}, {}, {}};
+  Scenario s = Crossing(/*appear0=*/0.0, kInfinity);
+  s.robot_start = Vec2(-4, -4);  // clear of both people
+  s.robot_goal = Vec2(-4, 4);
+  Episode episode(s, SimConfig{}, agents);
+  for (int k = 0; k < 12; ++k) episode.Step();  // 3 s
+  // Person 0 decides every step, seeing person 1 only from 1 s to 2 s (steps 4..8).
+  ASSERT_EQ(zero.seen.size(), 12u);
+  for (std::size_t k = 0; k < zero.seen.size(); ++k) {
+    EXPECT_EQ(zero.seen[k], k >= 4 && k <= 8 ? 2u : 1u) << k;
+  }
+  EXPECT_EQ(one.seen.size(), 5u);  // person 1 decides only while present
+  EXPECT_TRUE(zero.self_ok);
+  EXPECT_TRUE(one.self_ok);
+}
+
 TEST(Presence, ACrowdAlwaysPresentIsHandedWhole) {
   GoStraightPolicy robot;
   ConstantVelocityPolicy still(Vec2::Zero());
