@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "crowds/crowds_command.h"
 #include "crowdsim/cli/args.h"
 #include "crowdsim/version.h"
 #include "floorplan/floorplan_command.h"
@@ -72,8 +73,10 @@ const std::vector<Command>& Commands() {
       mpirun or srun, rank r of R takes files r, r+R, ... (one training per rank); alone, it
       trains them one after another (scripts/train_all.sh -j N runs N at a time on one machine)
 )"},
-      // A tool registered as a command (tools/floorplan): its entry point and usage are its own.
+      // Tools registered as commands (tools/floorplan, tools/crowds): entry points and usages
+      // are their own.
       {"floorplan", crowdsim::floorplan::FloorplanCommand, crowdsim::floorplan::kFloorplanUsage},
+      {"crowds", crowdsim::crowds::CrowdsCommand, crowdsim::crowds::kCrowdsUsage},
       {"render", crowdsim::cli::RenderCommand,
        R"(  crowdsim-bench render SUITE.yaml --row R --episode K [--compare R2] [--sensors-at STEP]
                  [--animate] [--speed X] [--scale S] [--set KEY.PATH=VALUE]... --out FILE.{svg,png,pdf,gif,mp4}

@@ -1444,8 +1444,8 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   // The completion script knows every command and each command's options, and is valid bash.
   const auto [c, completion] = Shell(exe + " completion bash");
   EXPECT_EQ(c, 0);
-  EXPECT_NE(completion.find(
-                "run merge validate train train-all floorplan render report score list-plugins"),
+  EXPECT_NE(completion.find("run merge validate train train-all floorplan crowds render report "
+                            "score list-plugins"),
             std::string::npos)
       << completion;
   EXPECT_NE(completion.find("train) case $prev in --out|--seed|--set) COMPREPLY=($(compgen -f "
@@ -1477,6 +1477,8 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   EXPECT_EQ(complete("crowdsim-bench run s.yaml --out --", 4).find("--jobs"), std::string::npos);
   EXPECT_NE(complete("crowdsim-bench run s.yaml --", 3).find("--jobs"), std::string::npos);
   EXPECT_NE(completion.find("compgen -W \"import preview dataset --help\""), std::string::npos)
+      << completion;
+  EXPECT_NE(completion.find("compgen -W \"import dataset --help\""), std::string::npos)
       << completion;
   EXPECT_NE(completion.find("help) [[ $COMP_CWORD -eq 2 ]] && COMPREPLY=($(compgen -W \"run "),
             std::string::npos)

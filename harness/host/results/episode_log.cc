@@ -31,6 +31,7 @@ Json StateJson(const EpisodeFrame& f) {
   const AgentState& r = f.robot;
   Json people = Json::array();
   for (size_t i = 0; i < f.humans.size(); ++i) {
+    if (!f.Present(i)) continue;  // a recorded person before or after its track
     const AgentState& h = f.humans[i];
     people.push_back({{"id", i},
                       {"x", h.position.x()},

@@ -35,8 +35,8 @@ SocialMetricsAccumulator::SocialMetricsAccumulator(double dt, bool holonomic, do
       config_(config),
       min_ttc_(config.ttc_horizon) {}
 
-void SocialMetricsAccumulator::Observe(const AgentState& robot,
-                                       std::span<const AgentState> humans) {
+void SocialMetricsAccumulator::Observe(const AgentState& robot, std::span<const AgentState> humans,
+                                       std::span<const int> ids) {
   const Vec2& v = robot.velocity;
   const Vec2 to_goal = robot.goal - robot.position;
   const double speed_sq = v.squaredNorm();
@@ -68,15 +68,17 @@ void SocialMetricsAccumulator::Observe(const AgentState& robot,
     if (still && to_goal.squaredNorm() > goal_radius_ * goal_radius_) ++still_steps_;
   }
   // Proxemics between centres (squared); the zones count the steps after time 0.
-  inside_personal_.resize(humans.size(), 0);
+  const size_t people = ids.empty() ? humans.size() : static_cast<size_t>(ids.back()) + 1;
+  if (inside_personal_.size() < people) inside_personal_.resize(people, 0);
   const double personal_sq = config_.personal_radius * config_.personal_radius;
   double nearest_sq = kInf;
   for (size_t i = 0; i < humans.size(); ++i) {
     const double d_sq = (humans[i].position - robot.position).squaredNorm();
     nearest_sq = std::min(nearest_sq, d_sq);
     const bool inside = d_sq < personal_sq;
-    if (inside && !inside_personal_[i] && states_ > 0) ++intrusions_;
-    inside_personal_[i] = inside;
+    const size_t who = ids.empty() ? i : static_cast<size_t>(ids[i]);
+    if (inside && !inside_personal_[who] && states_ > 0) ++intrusions_;
+    inside_personal_[who] = inside;
     min_ttc_ = std::min(min_ttc_, TimeToCollision(robot, humans[i]));
   }
   if (states_ > 0) {

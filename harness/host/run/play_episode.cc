@@ -10,7 +10,7 @@ EpisodeOutcome PlayEpisode(Episode& episode, unsigned social_metrics) {
   if (!social_metrics) return episode.Run();
   const SimConfig& sim = episode.sim();
   SocialMetricsAccumulator social(sim.time_step, episode.kinematics().Holonomic(), sim.goal_radius);
-  social.Observe(episode.robot(), episode.humans());
+  social.Observe(episode.robot(), episode.present_humans(), episode.present_ids());
   const bool effect = social_metrics & kEffectMetrics;
   PeopleWalks walks(sim.time_step);
   if (effect) walks.Observe(episode.humans());
@@ -19,7 +19,7 @@ EpisodeOutcome PlayEpisode(Episode& episode, unsigned social_metrics) {
     episode.Step();
     // A policy error ends the step before anybody moves.
     if (episode.result().status != EpisodeStatus::kPolicyError) {
-      social.Observe(episode.robot(), episode.humans());
+      social.Observe(episode.robot(), episode.present_humans(), episode.present_ids());
       if (effect) walks.Observe(episode.humans());
     }
   }

@@ -51,10 +51,13 @@ class Episode::StepLookahead final : public Lookahead {
   explicit StepLookahead(const Episode& e) : e_(e) {}
 
   void Prepare() {
-    next_humans_.assign(e_.humans_.begin(), e_.humans_.end());
-    for (size_t i = 0; i < next_humans_.size(); ++i) {
-      next_humans_[i].velocity = e_.human_actions_[i].velocity;
-      next_humans_[i].position += e_.human_actions_[i].velocity * e_.sim_.time_step;
+    const std::span<const AgentState> present = e_.present_humans();
+    const std::span<const int> ids = e_.present_ids();
+    next_humans_.assign(present.begin(), present.end());
+    for (size_t k = 0; k < next_humans_.size(); ++k) {
+      const Vec2& v = e_.human_actions_[ids.empty() ? k : static_cast<size_t>(ids[k])].velocity;
+      next_humans_[k].velocity = v;
+      next_humans_[k].position += v * e_.sim_.time_step;
     }
   }
 
@@ -69,7 +72,7 @@ class Episode::StepLookahead final : public Lookahead {
       const ExecutedMove move = e_.Execute(actions[k]);
       const Vec2& v = move.velocity;
       const StepJudgement j =
-          JudgeRobotMove(e_.sim_, e_.world_, e_.robot_, v, e_.humans_, time_after);
+          JudgeRobotMove(e_.sim_, e_.world_, e_.robot_, v, e_.present_humans(), time_after);
       o.reward = j.reward;
       o.event = j.event;
       o.robot = e_.robot_;
@@ -77,7 +80,7 @@ class Episode::StepLookahead final : public Lookahead {
       o.robot.velocity = v;
       o.robot.heading = e_.RobotHeading(o.robot, move.heading);
       o.frame = Frame::Make(o.robot.position, o.robot.heading);
-      e_.Sense(o.robot, o.frame, next_humans_, e_.step_index_ + 1, &o.readings,
+      e_.Sense(o.robot, o.frame, next_humans_, e_.present_ids(), e_.step_index_ + 1, &o.readings,
                /*lookahead=*/true);
     }
   }
@@ -242,6 +245,8 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
   const bool any_unaware = std::any_of(scenario_.humans.begin(), scenario_.humans.end(),
                                        [](const HumanSpec& h) { return h.ignores_robot; });
   if (sim_.robot_visible && any_unaware) unaware_index_ = std::make_unique<AgentIndex>();
+  all_present_ = std::all_of(scenario_.humans.begin(), scenario_.humans.end(), AlwaysPresent);
+  UpdatePresence();
   human_goal_index_.assign(humans_.size(), 0);
   human_reached_.assign(humans_.size(), false);
   human_actions_.resize(humans_.size());
@@ -278,6 +283,7 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
       ctx.role = AgentRole::kHuman;
       ctx.agent_id = static_cast<int>(i) + 1;
       ctx.seed = SplitMix64(scenario_.seed + i + 1);
+      ctx.track = scenario_.humans[i].track;
       agents_.humans[i]->Reset(ctx);
     }
   } catch (const AbortRun&) {
@@ -294,13 +300,29 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
 
 Episode::~Episode() = default;
 
+void PresentPeople(const EpisodeFrame& f, std::vector<AgentState>* humans, std::vector<int>* ids) {
+  ids->clear();
+  if (f.present.empty()) {
+    humans->assign(f.humans.begin(), f.humans.end());
+    return;
+  }
+  humans->clear();
+  for (size_t i = 0; i < f.humans.size(); ++i) {
+    if (!f.present[i]) continue;
+    humans->push_back(f.humans[i]);
+    ids->push_back(static_cast<int>(i));
+  }
+}
+
 void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
-                    int step, std::vector<SensorReading>* out, bool lookahead) const {
+                    std::span<const int> human_ids, int step, std::vector<SensorReading>* out,
+                    bool lookahead) const {
   const std::span<const MountedSensor> sensors = agents_.sensors;
   out->resize(sensors.size());
   const SenseInput input{
-      robot, frame,          humans,     world_,      SensorNoiseSeed(scenario_.seed),
-      step,  sim_.time_step, Past(step), history_id_, lookahead};
+      robot,    frame,          humans,     world_,      SensorNoiseSeed(scenario_.seed),
+      step,     sim_.time_step, Past(step), history_id_, lookahead,
+      human_ids};
   for (size_t s = 0; s < sensors.size(); ++s) {
     SensorReading& r = (*out)[s];
     // Readings are reused step to step and most already carry the name: no copy.
@@ -319,18 +341,39 @@ void Episode::Sense(const AgentState& robot, const Frame& frame, std::span<const
 
 void Episode::DecideHumans() {
   // Humans see each other (and the robot when it is visible) through a neighbour index.
-  human_view_.assign(humans_.begin(), humans_.end());
+  const std::span<const AgentState> present = present_humans();
+  human_view_.assign(present.begin(), present.end());
   if (sim_.robot_visible) human_view_.push_back(robot_);
   human_index_.Rebuild(human_view_);
-  if (unaware_index_) unaware_index_->Rebuild(humans_);
+  if (unaware_index_) unaware_index_->Rebuild(present);
   human_obs_.time = time_;
   human_obs_.agents = &human_index_;
+  if (!all_present_) {
+    // Only the present decide; the absent stand still.
+    std::fill(human_actions_.begin(), human_actions_.end(), Action{});
+    const int count = static_cast<int>(present_ids_.size());
+    for (int k = 0; k < count; ++k) DecideHuman(present_ids_[k], k);
+    return;
+  }
   // The count read once: DecideHuman changes no size, but the compiler cannot know that.
   const int count = static_cast<int>(humans_.size());
-  for (int i = 0; i < count; ++i) DecideHuman(i);
+  for (int i = 0; i < count; ++i) DecideHuman(i, i);
 }
 
-void Episode::DecideHuman(int i) {
+void Episode::UpdatePresence() {
+  if (all_present_) return;
+  present_.resize(humans_.size());
+  present_humans_.clear();
+  present_ids_.clear();
+  for (size_t i = 0; i < humans_.size(); ++i) {
+    present_[i] = PresentAt(scenario_.humans[i], time_);
+    if (!present_[i]) continue;
+    present_humans_.push_back(humans_[i]);
+    present_ids_.push_back(static_cast<int>(i));
+  }
+}
+
+void Episode::DecideHuman(int i, int view) {
   // Next goal of a goal sequence once this one is reached.
   AgentState& h = humans_[i];
   const auto& goals = scenario_.humans[i].goals;
@@ -341,7 +384,7 @@ void Episode::DecideHuman(int i) {
   human_obs_.self = h;
   human_obs_.frame = human_needs_[i].heading_frame ? Frame::Make(h.position, HeadingToGoal(h))
                                                    : Frame{.origin = h.position};
-  human_obs_.self_index = i;
+  human_obs_.self_index = view;
   human_obs_.agents =
       unaware_index_ && scenario_.humans[i].ignores_robot ? unaware_index_.get() : &human_index_;
   human_actions_[i] = DecideNamed(*agents_.humans[i], human_obs_, i);
@@ -386,7 +429,8 @@ void Episode::FillRobotObservation() {
   robot_obs_.linear = robot_linear_;
   robot_obs_.angular = robot_angular_;
   robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
-  Sense(robot_, robot_obs_.frame, humans_, step_index_, &robot_obs_.readings);
+  Sense(robot_, robot_obs_.frame, present_humans(), present_ids_, step_index_,
+        &robot_obs_.readings);
   robot_obs_.lookahead = nullptr;
 }
 
@@ -444,11 +488,11 @@ StepInfo Episode::Step() {
   // Check (on the pre-move state, CrowdNav's order), then move everybody at once.
   const double time_after = (step_index_ + 1) * dt;
   const Vec2& v = move.velocity;
-  const StepJudgement j = JudgeRobotMove(sim_, world_, robot_, v, humans_, time_after);
+  const StepJudgement j = JudgeRobotMove(sim_, world_, robot_, v, present_humans(), time_after);
   info.event = j.event;
   info.reward = j.reward;
   info.min_human_distance = j.min_human_distance;
-  result_.collided_human = j.human;
+  result_.collided_human = j.human >= 0 && !all_present_ ? present_ids_[j.human] : j.human;
   result_.collided_rect = j.rect;
 
   robot_.position += v * dt;
@@ -469,6 +513,7 @@ StepInfo Episode::Step() {
   if (j.event == StepEvent::kDanger) ++result_.danger_steps;
   ++step_index_;
   time_ = step_index_ * dt;
+  UpdatePresence();
   Record();
   switch (j.event) {
     case StepEvent::kSuccess:
@@ -507,6 +552,7 @@ void Episode::StepPeopleOnly() {
   MoveHumans();
   ++step_index_;
   time_ = step_index_ * sim_.time_step;
+  UpdatePresence();
 }
 
 void Episode::Finish(EpisodeStatus status) {
@@ -517,7 +563,10 @@ void Episode::Finish(EpisodeStatus status) {
       step_index_ > 0 ? DecisionClock::Microseconds(decision_ticks_) / step_index_ : 0.0;
   int at_goal = 0;
   for (size_t i = 0; i < humans_.size(); ++i) {
-    if (human_reached_[i] || NormBelow(humans_[i].position - humans_[i].goal, humans_[i].radius)) {
+    // An absent person stands where it was (or will be) present: only a visit counts.
+    const bool here = all_present_ || present_[i];
+    if (human_reached_[i] ||
+        (here && NormBelow(humans_[i].position - humans_[i].goal, humans_[i].radius))) {
       ++at_goal;
     }
   }
@@ -540,10 +589,12 @@ void Episode::Record() {
     f.robot = robot_;
     f.robot.heading = RobotHeading(robot_, robot_.heading);
     f.frame = Frame::Make(f.robot.position, f.robot.heading);
-    f.humans.assign(humans_.begin(), humans_.end());
+    const std::span<const AgentState> present = present_humans();
+    f.humans.assign(present.begin(), present.end());
+    f.human_ids.assign(present_ids_.begin(), present_ids_.end());
   }
   if (!record_) return;
-  result_.trajectory.push_back(EpisodeFrame{time_, robot_, humans_});
+  result_.trajectory.push_back(EpisodeFrame{time_, robot_, humans_, present_});
   // A holonomic robot's heading is its goal's direction, set when it senses: set it now.
   AgentState& robot = result_.trajectory.back().robot;
   robot.heading = RobotHeading(robot, robot.heading);

@@ -229,9 +229,11 @@ void DrawHumanPaths(Drawing* d, const View& v, const EpisodeFigure& fig,
     std::vector<Vec2> pts;
     std::vector<double> times;
     for (size_t f = 0; f <= hlast; ++f) {
+      if (!hframes[f].Present(i)) continue;  // a recorded person before or after its track
       pts.push_back(hframes[f].humans[i].position);
       times.push_back(hframes[f].time);
     }
+    if (pts.empty()) continue;
     if (i < sc.humans.size()) {
       for (const Vec2& g : sc.humans[i].goals) {
         d->AddPolygon("goal human", Diamond(v.ToCanvas(g), 4.5), Stroke(c, 1.4));
@@ -290,6 +292,7 @@ void DrawDiscs(Drawing* d, const View& v, const EpisodeFigure& fig, std::optiona
   const EpisodeFrame& humans_now = hframes[LastFrame(hframes, frame)];
   DrawGroupLinks(d, v, humans_now.humans);
   for (size_t i = 0; i < hframes[0].humans.size(); ++i) {
+    if (!humans_now.Present(i)) continue;
     DrawDisc(d, v, humans_now.humans[i], disc + " human", palette::Human(static_cast<int>(i)),
              std::to_string(i + 1));
   }

@@ -27,8 +27,8 @@ bool Detected(const SensorSnapshot& s, const AgentState& h) {
 void DrawSensedAgents(Drawing* d, const View& v, const SensorSnapshot& s,
                       const Color& robot_color) {
   for (size_t i = 0; i < s.humans.size(); ++i) {
-    const Color c =
-        Detected(s, s.humans[i]) ? palette::Human(static_cast<int>(i)) : palette::kUnseen;
+    const int id = s.human_ids.empty() ? static_cast<int>(i) : s.human_ids[i];
+    const Color c = Detected(s, s.humans[i]) ? palette::Human(id) : palette::kUnseen;
     d->AddCircle("sensed human", v.ToCanvas(s.humans[i].position), v.Length(s.humans[i].radius),
                  Filled(c.WithAlpha(0.15), c, 1.0));
   }

@@ -23,18 +23,20 @@ SensorSnapshot TakeSensorSnapshot(const Scenario& scenario, const EpisodeResult&
   // The recorded heading is the one it senses with: its goal's (holonomic) or its body's.
   snap.robot = f.robot;
   snap.frame = Frame::Make(snap.robot.position, snap.robot.heading);
-  snap.humans = f.humans;
+  PresentPeople(f, &snap.humans, &snap.human_ids);
   const CollisionWorld world(scenario.map);
   // The frames before: a tracking sensor replays them (as in the episode, which held the same).
   std::vector<SensedFrame> past(static_cast<size_t>(step));
   for (size_t k = 0; k < past.size(); ++k) {
     const EpisodeFrame& e = result.trajectory[k];
-    past[k] = SensedFrame{e.robot, Frame::Make(e.robot.position, e.robot.heading), e.humans};
+    past[k] = SensedFrame{e.robot, Frame::Make(e.robot.position, e.robot.heading), {}, {}};
+    PresentPeople(e, &past[k].humans, &past[k].human_ids);
   }
   // Frames lie one time step apart (time = step x time_step).
   const double time_step = frames > 1 ? result.trajectory[1].time - result.trajectory[0].time : 0.0;
-  const SenseInput input{snap.robot, snap.frame, snap.humans, world, SensorNoiseSeed(scenario.seed),
-                         step,       time_step,  past};
+  SenseInput input{snap.robot, snap.frame, snap.humans, world, SensorNoiseSeed(scenario.seed),
+                   step,       time_step,  past};
+  input.human_ids = snap.human_ids;
   snap.readings.resize(sensors.size());
   for (size_t s = 0; s < sensors.size(); ++s) {
     snap.readings[s].sensor = sensors[s].name;

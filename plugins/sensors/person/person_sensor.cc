@@ -237,10 +237,10 @@ void PersonSensor::Detect(const SenseInput& in, std::vector<Detection>* out) con
     Detection d;
     d.seen = observe(in.humans[i]);
     d.world = in.humans[i].position;
-    d.person = static_cast<int>(i);
+    d.person = HumanId(in, i);
     if (noisy) {
       // One stream per (episode, step, human): the same draws on any thread and in a lookahead.
-      Rng rng = NoiseRng(in, i);
+      Rng rng = NoiseRng(in, static_cast<std::uint64_t>(d.person));
       if (rng.Uniform() >= detection_prob_) continue;  // missed this step
       if (position_noise_ > 0.0) {
         const Vec2 noise(rng.Normal(), rng.Normal());
@@ -335,7 +335,8 @@ void PersonSensor::TrackedBefore(const SenseInput& in, TrackerState* state) cons
   std::vector<Detection>& detections = ThreadScratch<std::vector<Detection>, Past>();
   for (int k = from; k < in.step; ++k) {
     const SensedFrame& f = in.past[static_cast<std::size_t>(k - first)];
-    const SenseInput then{f.robot, f.frame, f.humans, in.world, in.noise_seed, k, in.time_step};
+    SenseInput then{f.robot, f.frame, f.humans, in.world, in.noise_seed, k, in.time_step};
+    then.human_ids = f.human_ids;
     Detect(then, &detections);
     TrackStep(tracker_, k, &detections, state);
   }

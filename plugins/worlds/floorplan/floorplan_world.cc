@@ -79,8 +79,7 @@ std::string FloorplanWorld::Identity() const {
 }
 
 Scenario FloorplanWorld::Make(const ScenarioRequest& request) const {
-  const auto count = static_cast<std::int64_t>(pairs_.size());
-  const std::int64_t k = ((request.episode_index % count) + count) % count;
+  const std::int64_t k = FrozenLayoutIndex(request, static_cast<std::int64_t>(pairs_.size()));
   Scenario s;
   s.map = map_;
   s.robot_start = pairs_[static_cast<size_t>(k)].start;

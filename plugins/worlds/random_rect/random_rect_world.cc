@@ -169,8 +169,7 @@ void RandomRectWorld::BuildMaps(const std::vector<WorldFile>& layouts) {
 }
 
 Scenario RandomRectWorld::Make(const ScenarioRequest& request) const {
-  const auto n = static_cast<std::int64_t>(maps_.size());
-  const std::int64_t index = ((request.episode_index % n) + n) % n;
+  const std::int64_t index = FrozenLayoutIndex(request, static_cast<std::int64_t>(maps_.size()));
   const std::shared_ptr<const StaticMap>& map = maps_[static_cast<size_t>(index)];
 
   Scenario s;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "crowdsim/export.h"
 #include "crowdsim/kinematics.h"
 #include "crowdsim/observation.h"
+#include "crowdsim/scenario.h"
 #include "crowdsim/sim_config.h"
 #include "crowdsim/static_map.h"
 
@@ -49,6 +51,8 @@ struct CROWDSIM_SDK_API EpisodeContext {
   std::uint64_t seed = 0;      ///< this agent's own stream for the episode
   int agent_id = 0;            ///< 0 = robot, 1.. = humans
   RobotKinematics kinematics;  ///< robot only: its motion model and limits
+  /// Human only: its recorded track (HumanSpec::track), valid until the next Reset; empty: none.
+  std::span<const TrackPoint> track = {};
 };
 
 class CROWDSIM_SDK_API Policy {

@@ -20,6 +20,7 @@ struct CROWDSIM_SDK_API SensedFrame {
   AgentState robot;
   Frame frame;
   std::vector<AgentState> humans;
+  std::vector<int> human_ids;  ///< SenseInput::human_ids of that step
 };
 
 /// A read-only snapshot a sensor reads (the real state, or a lookahead's propagated state).
@@ -42,7 +43,15 @@ struct CROWDSIM_SDK_API SenseInput {
   std::uint64_t history_id = 0;
   /// A lookahead's reading of a predicted state (which the episode may never reach).
   bool lookahead = false;
+  /// The scenario index of each of `humans` when only the present people are handed over
+  /// (recorded crowds); empty: humans[i] is human i.
+  std::span<const int> human_ids = {};
 };
+
+/// The scenario index of in.humans[i]: a person's identity from step to step.
+inline int HumanId(const SenseInput& in, std::size_t i) {
+  return in.human_ids.empty() ? static_cast<int>(i) : in.human_ids[i];
+}
 
 /// The noise of `item` (a person, a beam) at this reading's step: stateless, so the same draws on
 /// any thread and in a lookahead of that step. `stream` keeps sensors' draws apart (person: 0).

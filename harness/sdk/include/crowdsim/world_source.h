@@ -35,6 +35,11 @@ struct CROWDSIM_SDK_API ScenarioRequest {
   std::vector<HumanAttributes> humans;
 };
 
+/// The frozen layout an episode plays among `count` (> 0): its index mod count, from 0.
+inline std::int64_t FrozenLayoutIndex(const ScenarioRequest& request, std::int64_t count) {
+  return ((request.episode_index % count) + count) % count;
+}
+
 /// Human i's attributes: request.humans[i], or sim's radius and v_pref when none are drawn.
 CROWDSIM_SDK_API HumanAttributes HumanAttributesOf(const ScenarioRequest& request, int i);
 /// The largest radius among the requested humans: the clearance of free space for any of them.

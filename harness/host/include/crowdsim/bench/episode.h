@@ -79,7 +79,14 @@ struct EpisodeFrame {
   double time = 0.0;
   AgentState robot;
   std::vector<AgentState> humans;
+  std::vector<char> present;  ///< per human, whether present (recorded crowds); empty: everybody
+  /// Whether human i is present in this frame.
+  bool Present(std::size_t i) const { return present.empty() || present[i] != 0; }
 };
+
+/// The people present in `f` and their scenario indices (`ids` empty when everybody is): what
+/// the sensors were handed at that step.
+void PresentPeople(const EpisodeFrame& f, std::vector<AgentState>* humans, std::vector<int>* ids);
 
 /// An episode's status and metrics: what episodes.csv stores and rows aggregate (kEpisodeColumns).
 struct EpisodeOutcome {
@@ -133,7 +140,15 @@ class Episode {
   const EpisodeResult& result() const { return result_; }
   double time() const { return time_; }
   const AgentState& robot() const { return robot_; }
+  /// Every human of the scenario, present or not (indices are the scenario's).
   std::span<const AgentState> humans() const { return humans_; }
+  /// The humans present now: what the sensors, the judgement and the other people see. Every
+  /// human unless the scenario's people appear and leave (HumanSpec::appear, leave).
+  std::span<const AgentState> present_humans() const {
+    return all_present_ ? std::span<const AgentState>(humans_) : present_humans_;
+  }
+  /// The scenario index of each of present_humans(); empty when everybody is always present.
+  std::span<const int> present_ids() const { return present_ids_; }
   const CollisionWorld& world() const { return world_; }
   const Scenario& scenario() const { return scenario_; }
   const SimConfig& sim() const { return sim_; }
@@ -150,12 +165,16 @@ class Episode {
   class StepLookahead;
   /// The sensors' readings at step `step` (a lookahead's: the next one, predicted).
   void Sense(const AgentState& robot, const Frame& frame, std::span<const AgentState> humans,
-             int step, std::vector<SensorReading>* out, bool lookahead = false) const;
+             std::span<const int> human_ids, int step, std::vector<SensorReading>* out,
+             bool lookahead = false) const;
   void DecideHumans();
+  /// Who is present at time_ (present_humans_, present_ids_); nothing when all always are.
+  void UpdatePresence();
   /// Every human moves with its decided velocity for one step.
   void MoveHumans();
-  /// Human i's decision into human_actions_[i] (throws what its policy or the checks throw).
-  void DecideHuman(int i);
+  /// Human i's decision into human_actions_[i], `view` its index among the present (throws what
+  /// its policy or the checks throw).
+  void DecideHuman(int i, int view);
   void FillRobotObservation();
   /// What `action` does from the robot's current motion (throws for a form the robot refuses).
   ExecutedMove Execute(const Action& action) const;
@@ -186,6 +205,12 @@ class Episode {
   double robot_linear_ = 0.0;   ///< non-holonomic: executed last step, m/s
   double robot_angular_ = 0.0;  ///< non-holonomic: executed last step, rad/s
   std::vector<AgentState> humans_;
+  // Presence: all_present_ unless a human appears or leaves; then the present ones' states and
+  // scenario indices, refreshed after every move.
+  bool all_present_ = true;
+  std::vector<char> present_;
+  std::vector<AgentState> present_humans_;
+  std::vector<int> present_ids_;
   std::vector<std::size_t> human_goal_index_;
   std::vector<bool> human_reached_;
   std::vector<Action> human_actions_;

@@ -66,7 +66,10 @@ class SocialMetricsAccumulator {
   SocialMetricsAccumulator(double dt, bool holonomic, double goal_radius,
                            SocialMetricsConfig config = {});
 
-  void Observe(const AgentState& robot, std::span<const AgentState> humans);
+  /// `ids`: each of `humans`' scenario index when only the present are given (empty: humans[i]
+  /// is human i), so a person's zone state follows the person.
+  void Observe(const AgentState& robot, std::span<const AgentState> humans,
+               std::span<const int> ids = {});
 
   /// The metrics; `shortest_path` as ShortestFreePath gives it.
   SocialMetrics Finish(bool success, double shortest_path) const;

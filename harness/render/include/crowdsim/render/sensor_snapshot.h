@@ -11,11 +11,12 @@ namespace crowdsim::render {
 
 /// What the robot's sensors read at one trajectory frame.
 struct SensorSnapshot {
-  int step = 0;       ///< trajectory frame index
-  double time = 0.0;  ///< s
-  AgentState robot;   ///< with the heading the episode senses with (goal's or body's)
-  Frame frame;        ///< the sensor frame the readings are relative to
-  std::vector<AgentState> humans;
+  int step = 0;                    ///< trajectory frame index
+  double time = 0.0;               ///< s
+  AgentState robot;                ///< with the heading the episode senses with (goal's or body's)
+  Frame frame;                     ///< the sensor frame the readings are relative to
+  std::vector<AgentState> humans;  ///< the people present
+  std::vector<int> human_ids;      ///< their scenario indices; empty: humans[i] is human i
   std::vector<SensorReading> readings;  ///< one per mounted sensor, in order
   /// Per reading: the person sensor's field of view in degrees (360: all around; filled from the
   /// row's parameters by the caller), and its range (m, 0: unlimited).
