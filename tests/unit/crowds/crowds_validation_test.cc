@@ -90,6 +90,24 @@ TEST_F(SceneValidationTest, ReplayAndAStraightWalkerHaveNoError) {
   }
 }
 
+// On a recorded scene, replay walking each person itself stays within the interpolation
+// tolerance: the path sampled at 0.25 s steps cuts the corners of the 0.4 s track, by at most
+// about half a step's walk (0.19 m at 1.5 m/s) where a person turns sharply.
+TEST_F(SceneValidationTest, ReplayOnARecordedSceneIsWithinInterpolationTolerance) {
+  const SceneValidation scene(registry_, testing::SourceDir() / "worlds/crowds/zara1.tracks",
+                              ValidationSettings{});
+  const auto replay = Plugin("replay");
+  const std::vector<PersonValidation> people = scene.Run(*replay);
+  ASSERT_EQ(people.size(), 88u);  // results/crowds_validation/table.md
+  for (const PersonValidation& p : people) {
+    EXPECT_LT(p.comparison.ade, 0.1) << p.split << " window " << p.window << " person " << p.person;
+    EXPECT_LT(p.comparison.fde, 0.1) << p.split << " window " << p.window << " person " << p.person;
+  }
+  const ValidationRow row = Summarise(scene.scene(), "replay", people);
+  EXPECT_LT(row.ade, 0.005);
+  EXPECT_LT(row.fde, 0.005);
+}
+
 TEST_F(SceneValidationTest, TwoRunsGiveTheSameTable) {
   const SceneValidation scene(registry_, testing::WriteSyntheticTracks(dir_.path()),
                               ValidationSettings{});
