@@ -1478,7 +1478,7 @@ TEST_F(RunSuiteTest, CommandLineHelpVersionAndCompletion) {
   EXPECT_NE(complete("crowdsim-bench run s.yaml --", 3).find("--jobs"), std::string::npos);
   EXPECT_NE(completion.find("compgen -W \"import preview dataset --help\""), std::string::npos)
       << completion;
-  EXPECT_NE(completion.find("compgen -W \"import dataset --help\""), std::string::npos)
+  EXPECT_NE(completion.find("compgen -W \"import dataset validate --help\""), std::string::npos)
       << completion;
   EXPECT_NE(completion.find("help) [[ $COMP_CWORD -eq 2 ]] && COMPREPLY=($(compgen -W \"run "),
             std::string::npos)

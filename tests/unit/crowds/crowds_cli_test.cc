@@ -72,5 +72,27 @@ TEST(CrowdsCli, ASuiteWithABadTrackFileRunsNothing) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// `crowds validate` refuses an unknown model and a missing track file by name, running nothing;
+// on a good scene it writes the table.
+TEST(CrowdsCli, ValidateNamesABadModelOrFileAndRunsNothing) {
+  TempDir dir;
+  const auto tracks = testing::WriteSyntheticTracks(dir.path());
+  const auto out = dir.path() / "out";
+  const auto [status, text] =
+      Crowds("validate " + tracks.string() + " --models orca,sfm --out " + out.string());
+  EXPECT_EQ(status, 2) << text;
+  EXPECT_NE(text.find("unknown human model 'sfm'"), std::string::npos) << text;
+  const auto none = dir.path() / "none.tracks";
+  const auto [missing, why] = Crowds("validate " + none.string() + " --out " + out.string());
+  EXPECT_EQ(missing, 2) << why;
+  EXPECT_NE(why.find(none.string() + " does not exist"), std::string::npos) << why;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const auto [ok, table] =
+      Crowds("validate " + tracks.string() + " --models linear,replay --out " + out.string());
+  EXPECT_EQ(ok, 0) << table;
+  EXPECT_NE(table.find("| synthetic | replay | 2 | 0.000 | 0.000 |"), std::string::npos) << table;
+  EXPECT_TRUE(std::filesystem::exists(out / "table.csv"));
+}
+
 }  // namespace
 }  // namespace crowdsim
