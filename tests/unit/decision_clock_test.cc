@@ -19,19 +19,30 @@ namespace {
 using Steady = std::chrono::steady_clock;
 
 /// DecisionClock's measure of a span over steady_clock's (1 when they agree); the span is
-/// slept when long, spun when short.
+/// slept when long, spun when short. Each DecisionClock read is bracketed by two steady_clock
+/// reads, so that a preemption beside a read (a loaded machine) widens steady_clock's bounds
+/// on the span instead of reading as a rate error; the ratio is to the nearer bound, 1 inside.
 double Ratio(std::chrono::microseconds span) {
-  const auto s0 = Steady::now();
+  const auto a0 = Steady::now();
   const std::uint64_t t0 = DecisionClock::Now();
+  const auto b0 = Steady::now();
   if (span >= std::chrono::milliseconds(1)) {
     std::this_thread::sleep_for(span);
   } else {
-    while (Steady::now() - s0 < span) {
+    while (Steady::now() - a0 < span) {
     }
   }
+  const auto a1 = Steady::now();
   const std::uint64_t t1 = DecisionClock::Now();
-  const double steady_us = std::chrono::duration<double, std::micro>(Steady::now() - s0).count();
-  return DecisionClock::Microseconds(t1 - t0) / steady_us;
+  const auto b1 = Steady::now();
+  const auto us = [](Steady::duration d) {
+    return std::chrono::duration<double, std::micro>(d).count();
+  };
+  const double measured = DecisionClock::Microseconds(t1 - t0);
+  const double shortest = us(a1 - b0), longest = us(b1 - a0);
+  if (measured < shortest) return measured / shortest;
+  if (measured > longest) return measured / longest;
+  return 1.0;
 }
 
 TEST(DecisionClock, MeasuresWhatSteadyClockMeasures) {
