@@ -227,30 +227,43 @@ class Training(unittest.TestCase):
         os.path.dirname(os.path.dirname(os.path.abspath(CLI or "."))), "plugins",
         "crowdsim_torchscript.so")), "CROWDSIM_BENCH names no CLI with the torchscript plugin")
     def test_the_plugin_plays_the_python_policys_episodes(self):
-        out = self.out("p")
-        trainer = train(tiny(total_steps=64, checkpoint_interval=1), out)
-        policy = os.path.join(out, "policy.pt")
-        with open(QUICK) as f:
-            head = f.read().split("\nrows:")[0]
-        suite = self.out("suite.yaml")
-        with open(suite, "w") as f:
-            f.write(head + "\nrows:\n  - {label: ppo, policy: torchscript, weights: " + policy +
-                    ", params: {sensors: lidar+person}}\n")
-        p = subprocess.run([CLI, "run", suite, "--episodes", "4", "--jobs", "1", "--out",
-                            self.out("cli")], capture_output=True, text=True)
-        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        # With the route sensor too: the model reads `route`, which the plugin passes when
+        # `route: true`.
+        sensors = "[person, {type: lidar2d, beams: 45, fov_deg: 180, max_range: 5}"
+        for route in (False, True):
+            name = "r" if route else "p"
+            out = self.out(name)
+            changes = {"total_steps": 64, "checkpoint_interval": 1}
+            if route:
+                changes["set"] = TINY["set"] + [f"robot.sensors={sensors}, route]"]
+            trainer = train(tiny(**changes), out)
+            self.assertEqual(trainer.layout["uses_route"], route)
+            policy = os.path.join(out, "policy.pt")
+            with open(QUICK) as f:
+                head = f.read().split("\nrows:")[0]
+            if route:
+                head = head.replace(f"sensors: {sensors}]", f"sensors: {sensors}, route]")
+            suite = self.out(f"{name}_suite.yaml")
+            with open(suite, "w") as f:
+                f.write(head + "\nrows:\n  - {label: ppo, policy: torchscript, weights: " + policy +
+                        ", params: {sensors: lidar+person" + (", route: true" if route else "") +
+                        "}}\n")
+            p = subprocess.run([CLI, "run", suite, "--episodes", "4", "--jobs", "1", "--out",
+                                self.out(f"{name}_cli")], capture_output=True, text=True)
+            self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
 
-        def act(obs):
-            with torch.no_grad():
-                t = {k: torch.from_numpy(np.asarray(v)).unsqueeze(0) for k, v in obs.items()}
-                return trainer.model.greedy(t)[0].numpy()
-        cb.evaluate(act, suite, row="ppo", label="ppo", out=self.out("py"), episodes=4)
+            def act(obs):
+                with torch.no_grad():
+                    t = {k: torch.from_numpy(np.asarray(v)).unsqueeze(0) for k, v in obs.items()}
+                    return trainer.model.greedy(t)[0].numpy()
+            cb.evaluate(act, suite, row="ppo", label="ppo", out=self.out(f"{name}_py"), episodes=4)
 
-        def episodes(folder):
-            with open(os.path.join(folder, "episodes.csv"), newline="") as f:
-                return [(e["episode"], e["status"], e["steps"], e["path_length"])
-                        for e in csv.DictReader(f)]
-        self.assertEqual(sorted(episodes(self.out("cli"))), sorted(episodes(self.out("py"))))
+            def episodes(folder):
+                with open(os.path.join(folder, "episodes.csv"), newline="") as f:
+                    return [(e["episode"], e["status"], e["steps"], e["path_length"])
+                            for e in csv.DictReader(f)]
+            self.assertEqual(sorted(episodes(self.out(f"{name}_cli"))),
+                             sorted(episodes(self.out(f"{name}_py"))), route)
 
 
 if __name__ == "__main__":

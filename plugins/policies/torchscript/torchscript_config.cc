@@ -92,6 +92,15 @@ ParamSchema Schema() {
        "commands (R rotations linspace(-45, 45) degrees per step x speeds) for a unicycle or "
        "diff_drive robot",
        /*hashed_at_default=*/false},
+      {"route",
+       ParamType::kBool,
+       false,
+       0,
+       1,
+       {},
+       "true: the route sensor's reading as `route` (3,): path distance (m), waypoint x, y "
+       "(robot frame), as crowdsim_bench's observations (the row must configure `route`)",
+       /*hashed_at_default=*/false},
       {"torch_threads",
        ParamType::kInt,
        std::int64_t{1},
@@ -129,6 +138,7 @@ TorchScriptConfig ConfigFromParams(const Params& params) {
   c.stop_action = params.GetBool("stop_action");
   c.unicycle_actions = params.GetString("action_space") == "unicycle";
   c.torch_threads = static_cast<int>(params.GetInt("torch_threads"));
+  c.route = params.GetBool("route");
   return c;
 }
 
@@ -136,6 +146,7 @@ std::vector<std::string> SensorPlugins(const TorchScriptConfig& config) {
   std::vector<std::string> names;
   if (config.UsesLidar()) names.push_back("lidar2d");
   if (config.UsesPerson()) names.push_back("person");
+  if (config.route) names.push_back("route");
   return names;
 }
 

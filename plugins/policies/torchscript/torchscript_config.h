@@ -37,6 +37,7 @@ struct TorchScriptConfig {
   /// CrowdNav's unicycle commands (value_rl's BuildUnicycleActionSpace) instead of velocities.
   bool unicycle_actions = false;
   int torch_threads = 1;  ///< libtorch intra-op threads
+  bool route = false;     ///< the route sensor's reading as `route` (3,)
 
   bool UsesPerson() const { return sensors != "lidar"; }
   bool UsesLidar() const { return sensors != "person"; }

@@ -91,9 +91,9 @@ struct TorchScriptPolicy::Impl {
     }
     const std::vector<Action>& candidates = ActionsAt(obs.self.v_pref);
     obs.lookahead->Evaluate(candidates, &outcomes);
-    const std::vector<double> next =
-        ValuesFromOutput(Forward(MakeLookaheadDict(outcomes, obs.time + time_step, config.humans)),
-                         config.ActionCount(), config.weights);
+    const std::vector<double> next = ValuesFromOutput(
+        Forward(MakeLookaheadDict(outcomes, obs.time + time_step, config.humans, config.route)),
+        config.ActionCount(), config.weights);
     const double discount = std::pow(gamma, time_step * obs.self.v_pref);
     std::vector<float> values(next.size());
     for (size_t k = 0; k < next.size(); ++k) {
@@ -114,9 +114,10 @@ TorchScriptPolicy::TorchScriptPolicy(const TorchScriptConfig& config)
   // The output is checked once on a stand-in observation: a module that returns the wrong
   // thing is refused before the first episode, naming the file and what `output` expects.
   const int beams = config.UsesLidar() ? config.lidar_beams : 0;
-  const ObservationDict probe = config.UsesLookahead()
-                                    ? ProbeLookaheadDict(config.ActionCount(), config.humans, beams)
-                                    : ProbeObservationDict(config.humans, beams);
+  const ObservationDict probe =
+      config.UsesLookahead()
+          ? ProbeLookaheadDict(config.ActionCount(), config.humans, beams, config.route)
+          : ProbeObservationDict(config.humans, beams, config.route);
   CheckOutput(impl_->Forward(probe), config.output, config.ActionCount(), config.weights);
 }
 
@@ -147,7 +148,8 @@ void TorchScriptPolicy::Reset(const EpisodeContext& ctx) {
 Action TorchScriptPolicy::Decide(const Observation& obs) {
   impl_->CheckLidar(obs);
   if (impl_->config.UsesLookahead()) return impl_->DecideByValues(obs);
-  const c10::IValue out = impl_->Forward(MakeObservationDict(obs, impl_->config.humans));
+  const c10::IValue out =
+      impl_->Forward(MakeObservationDict(obs, impl_->config.humans, impl_->config.route));
   return ActionFromOutput(out, impl_->config.output, impl_->ActionsAt(obs.self.v_pref),
                           impl_->config.weights);
 }

@@ -118,8 +118,8 @@ class ActorCritic(nn.Module):
         if self.uses_route:
             if "route" not in obs:
                 raise RuntimeError("crowdsim_bench.ppo: the model reads the route sensor, but the "
-                                   "observation has no `route` (give the row the route sensor; "
-                                   "the torchscript plugin passes no route yet)")
+                                   "observation has no `route` (give the row the route sensor, "
+                                   "and the torchscript plugin `route: true`)")
             route = obs["route"].float()
             parts.append(torch.stack([route[:, 0] * self.distance_scale, route[:, 1], route[:, 2]], 1))
         return self.trunk(torch.cat(parts, 1))

@@ -128,6 +128,8 @@ def plugin_row(layout: Dict[str, Any], weights: str) -> str:
     params = f"sensors: {sensors}, humans: {layout['humans']}"
     if layout["beams"]:
         params += f", lidar_beams: {layout['beams']}"
+    if layout["uses_route"]:
+        params += ", route: true"
     return f"{{label: ppo, policy: torchscript, weights: {weights}, params: {{{params}}}}}"
 
 
@@ -484,11 +486,7 @@ class Trainer:
         self._say(f"done: {self.steps:,} steps, {self.episodes} episodes, success of the last "
                   f"{len(self.outcomes)} {summary['last_episodes'].get('success', float('nan')):.3f}"
                   f" -> {os.path.join(self.out, 'policy.pt')}")
-        if self.layout["uses_route"]:
-            self._say("the model reads the route sensor, which the torchscript plugin does not "
-                      "pass yet: test it with `python3 -m crowdsim_bench.ppo evaluate`")
-        else:
-            self._say(f"as a suite row: {summary['plugin_row']}")
+        self._say(f"as a suite row: {summary['plugin_row']}")
         return summary
 
     def close(self) -> None:
