@@ -5,6 +5,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,7 +69,9 @@ struct RowAgents {
 /// (untimed) with the next one when an episode ends or reaches `restart_after` seconds, so that
 /// every measured step is one of an episode's first steps, while the crowd is still crossing;
 /// the robot is visible to the humans. Counters: per_agent_step (CPU time of a step over
-/// `agents_per_step`, the agents that decide each step) and steps_per_s.
+/// `agents_per_step`, the agents that decide each step), steps_per_s, present (the mean number
+/// of humans present at a step: all of them, unless a recorded crowd's people appear and leave)
+/// and per_present_step (CPU time of a step over the humans present).
 ///
 /// Give every episode its own scenario, as a suite does: an episode replayed over and over is
 /// learned by the processor's branch predictor when it is short. On the 2-core AMD EPYC (Zen 4)
@@ -85,6 +89,7 @@ void TimeSteps(benchmark::State& state, MakeScenario make_scenario, const Episod
   Scenario scenario = make_scenario(0);
   auto episode = std::make_unique<Episode>(scenario, sim, agents);
   int episodes = 1;
+  double present = 0.0;  // humans present, summed over the measured steps
   for (auto _ : state) {
     if (episode->done() || episode->time() >= restart_after) {
       state.PauseTiming();
@@ -93,6 +98,7 @@ void TimeSteps(benchmark::State& state, MakeScenario make_scenario, const Episod
       ++episodes;
       state.ResumeTiming();
     }
+    present += static_cast<double>(episode->present_humans().size());
     episode->Step();
   }
   // Steps per measured episode: at most restart_after / time_step, fewer when episodes end.
@@ -104,6 +110,10 @@ void TimeSteps(benchmark::State& state, MakeScenario make_scenario, const Episod
       agents_per_step, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["steps_per_s"] =
       benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+  const double per_step = present / static_cast<double>(std::max<int64_t>(state.iterations(), 1));
+  state.counters["present"] = per_step;
+  state.counters["per_present_step"] = benchmark::Counter(
+      per_step, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 }  // namespace crowdsim::bench

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <numeric>
 #include <stdexcept>
 
 #include "crowdsim/rng.h"
@@ -350,7 +351,6 @@ void Episode::DecideHumans() {
   human_obs_.agents = &human_index_;
   if (!all_present_) {
     // Only the present decide; the absent stand still.
-    std::fill(human_actions_.begin(), human_actions_.end(), Action{});
     const int count = static_cast<int>(present_ids_.size());
     for (int k = 0; k < count; ++k) DecideHuman(present_ids_[k], k);
     return;
@@ -362,15 +362,32 @@ void Episode::DecideHumans() {
 
 void Episode::UpdatePresence() {
   if (all_present_) return;
-  present_.resize(humans_.size());
-  present_humans_.clear();
-  present_ids_.clear();
-  for (size_t i = 0; i < humans_.size(); ++i) {
-    present_[i] = PresentAt(scenario_.humans[i], time_);
-    if (!present_[i]) continue;
-    present_humans_.push_back(humans_[i]);
-    present_ids_.push_back(static_cast<int>(i));
+  if (by_appear_.empty()) {
+    // People come in order of `appear` (then index) and each stays until its `leave`, so a
+    // step looks at the present and the next to come only: its cost is O(people present).
+    present_.assign(humans_.size(), 0);
+    by_appear_.resize(humans_.size());
+    std::iota(by_appear_.begin(), by_appear_.end(), 0);
+    std::stable_sort(by_appear_.begin(), by_appear_.end(), [&](int a, int b) {
+      return scenario_.humans[a].appear < scenario_.humans[b].appear;
+    });
   }
+  std::erase_if(present_ids_, [&](int i) {
+    if (PresentAt(scenario_.humans[i], time_)) return false;
+    present_[i] = 0;
+    left_.push_back(i);
+    return true;
+  });
+  while (next_to_appear_ < by_appear_.size() &&
+         time_ >= scenario_.humans[by_appear_[next_to_appear_]].appear - kPresenceTolerance) {
+    const int i = by_appear_[next_to_appear_++];
+    if (!PresentAt(scenario_.humans[i], time_)) continue;  // its stay fell between two steps
+    present_[i] = 1;
+    // The present stay in scenario order, what sensors and neighbour queries see.
+    present_ids_.insert(std::upper_bound(present_ids_.begin(), present_ids_.end(), i), i);
+  }
+  present_humans_.resize(present_ids_.size());
+  for (size_t k = 0; k < present_ids_.size(); ++k) present_humans_[k] = humans_[present_ids_[k]];
 }
 
 void Episode::DecideHuman(int i, int view) {
@@ -541,6 +558,16 @@ const EpisodeResult& Episode::Run() {
 
 void Episode::MoveHumans() {
   const double dt = sim_.time_step;
+  if (!all_present_) {
+    // The absent stand still: those who left at the last step stop now.
+    for (const int i : present_ids_) {
+      humans_[i].velocity = human_actions_[i].velocity;
+      humans_[i].position += human_actions_[i].velocity * dt;
+    }
+    for (const int i : left_) humans_[i].velocity = Vec2::Zero();
+    left_.clear();
+    return;
+  }
   for (size_t i = 0; i < humans_.size(); ++i) {
     humans_[i].velocity = human_actions_[i].velocity;
     humans_[i].position += human_actions_[i].velocity * dt;

@@ -210,7 +210,10 @@ class Episode {
   bool all_present_ = true;
   std::vector<char> present_;
   std::vector<AgentState> present_humans_;
-  std::vector<int> present_ids_;
+  std::vector<int> present_ids_;    // increasing
+  std::vector<int> by_appear_;      // every human, in order of appear (then index)
+  std::size_t next_to_appear_ = 0;  // by_appear_'s first not yet come
+  std::vector<int> left_;           // left at the last presence update: they stop at the next move
   std::vector<std::size_t> human_goal_index_;
   std::vector<bool> human_reached_;
   std::vector<Action> human_actions_;
