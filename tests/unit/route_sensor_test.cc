@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "crowdsim/bench/plugin_registry.h"
 #include "crowdsim/collision_world.h"
@@ -169,6 +171,27 @@ TEST_F(RoutePlugin, CachedFieldsBelongToTheirWorld) {
       EXPECT_GT(d, 7.5);
     } else {
       EXPECT_NEAR(d, 4.0, 1e-9);
+    }
+  }
+}
+
+TEST_F(RoutePlugin, ThirtyTwoEpisodesInTurnKeepTheirOwnFields) {
+  // Thirty-two worlds read in turn, more than the cache keeps: each reading is its world's in
+  // every round, fields evicted and rebuilt.
+  std::vector<std::unique_ptr<CollisionWorld>> worlds;
+  for (int k = 0; k < 32; ++k) {
+    worlds.push_back(std::make_unique<CollisionWorld>(Room(k % 2 ? 3.0 : -4.0)));
+  }
+  for (int round = 0; round < 3; ++round) {
+    for (int k = 0; k < 32; ++k) {
+      if (k % 2) {
+        EXPECT_GT(Sense(*worlds[k], Vec2(-2.0, 0.0), Vec2(2.0, 0.0))[0], 7.5) << k;
+      } else {
+        // Each open room's own start: a field of another world would give another distance.
+        const double y = 0.1 * k;
+        EXPECT_NEAR(Sense(*worlds[k], Vec2(-2.0, y), Vec2(2.0, 0.0))[0], std::hypot(4.0, y), 1e-9)
+            << k;
+      }
     }
   }
 }

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <queue>
 #include <utility>
 
 namespace crowdsim {
@@ -72,37 +70,59 @@ RouteField::RouteField(const StaticMap& map, const Vec2& goal, double clearance,
 
   // Seeds: the free cells next to the goal (or, for a goal closer to a wall than the
   // clearance, those within the clearance band), at their straight distance.
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  // Dijkstra over buckets of half a cell: a move is at least a cell long, so a cell's
+  // expansion only reaches buckets two or more ahead, and a bucket's cells are final when it
+  // is reached. Every order of expansion that sees final values gives these same values:
+  // each cell's is the least over its neighbours of (neighbour + move), in the same sums.
+  const double bucket_width = 0.5 * resolution;
+  std::vector<std::vector<std::pair<double, int>>> buckets;
+  const auto push = [&](double d, int i) {
+    const size_t b = static_cast<size_t>(d / bucket_width);
+    if (b >= buckets.size()) buckets.resize(b + 1);
+    buckets[b].emplace_back(d, i);
+  };
   for (const double reach : {1.5 * resolution, clearance + 1.5 * resolution}) {
     const int k = static_cast<int>(std::ceil(reach / resolution)) + 1;
     const int gr = static_cast<int>(std::floor((goal.y() - origin_.y()) / resolution));
     const int gc = static_cast<int>(std::floor((goal.x() - origin_.x()) / resolution));
+    bool seeded = false;
     for (int row = std::max(0, gr - k); row <= std::min(rows_ - 1, gr + k); ++row) {
       for (int col = std::max(0, gc - k); col <= std::min(cols_ - 1, gc + k); ++col) {
         const double d = (Centre(row, col) - goal).norm();
         if (!Free(row, col) || d > reach) continue;
         value_[Index(row, col)] = d;
-        open.emplace(d, Index(row, col));
+        push(d, Index(row, col));
+        seeded = true;
       }
     }
-    if (!open.empty()) break;
+    if (seeded) break;
   }
 
-  while (!open.empty()) {
-    const auto [d, i] = open.top();
-    open.pop();
-    if (d > value_[i]) continue;
-    const int row = i / cols_, col = i % cols_;
-    for (const RouteField::Move& m : kMoves) {
-      if (!CanMove(row, col, m)) continue;
-      const double nd = d + m.length * resolution;
-      const int j = Index(row + m.dr, col + m.dc);
-      if (nd < value_[j]) {
-        value_[j] = nd;
-        open.emplace(nd, j);
+  // Each move's length (m) and index offset; cells two or more from the edge reach all 16.
+  double step[16];
+  int offset[16];
+  for (int m = 0; m < 16; ++m) {
+    step[m] = kMoves[m].length * resolution;
+    offset[m] = kMoves[m].dr * cols_ + kMoves[m].dc;
+  }
+  for (size_t b = 0; b < buckets.size(); ++b) {
+    // By index: pushes (to later buckets) may move the bucket vectors.
+    for (size_t k = 0; k < buckets[b].size(); ++k) {
+      const auto [d, i] = buckets[b][k];
+      if (d > value_[i]) continue;  // lowered since, and expanded then
+      const int row = i / cols_, col = i % cols_;
+      const bool inside = row >= 2 && row < rows_ - 2 && col >= 2 && col < cols_ - 2;
+      for (int m = 0; m < 16; ++m) {
+        if (inside ? free_[i + offset[m]] == 0 : !CanMove(row, col, kMoves[m])) continue;
+        const double nd = d + step[m];
+        const int j = i + offset[m];
+        if (nd < value_[j]) {
+          value_[j] = nd;
+          push(nd, j);
+        }
       }
     }
+    std::vector<std::pair<double, int>>().swap(buckets[b]);
   }
 }
 
