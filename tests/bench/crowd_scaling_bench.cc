@@ -65,14 +65,7 @@ void BM_FloorplanCrowdStep(benchmark::State& state) {
   bench::RowAgents row(RobotKind::kOrcaLidarPerson, humans);
   const auto world = row.MakeWorld(
       "floorplan", {{"file", (testing::SourceDir() / "worlds" / "gibson" / "hard.yaml").string()}});
-  auto make_scenario = [&](int episode) {
-    ScenarioRequest request;
-    request.seed = 14 + static_cast<std::uint64_t>(episode);
-    request.episode_index = episode;
-    request.num_humans = humans;
-    return world->Make(request);
-  };
-  bench::TimeSteps(state, make_scenario, row.agents, humans + 1);
+  bench::TimeSteps(state, bench::SuiteScenarios(*world, 14, humans), row.agents, humans + 1);
 }
 BENCHMARK(BM_FloorplanCrowdStep)
     ->ArgName("humans")

@@ -65,6 +65,18 @@ struct RowAgents {
   }
 };
 
+/// Episode k's scenario of `world` as a suite asks for it: seed `first_seed` + k, episode index
+/// k, `humans` humans (for TimeSteps).
+inline auto SuiteScenarios(const WorldSource& world, std::uint64_t first_seed, int humans) {
+  return [&world, first_seed, humans](int episode) {
+    ScenarioRequest request;
+    request.seed = first_seed + static_cast<std::uint64_t>(episode);
+    request.episode_index = episode;
+    request.num_humans = humans;
+    return world.Make(request);
+  };
+}
+
 /// Times Episode::Step on the episodes `make_scenario(k)` gives for k = 0, 1, ..., restarting
 /// (untimed) with the next one when an episode ends or reaches `restart_after` seconds, so that
 /// every measured step is one of an episode's first steps, while the crowd is still crossing;

@@ -9,7 +9,6 @@
 // against /slots:120.
 #include <benchmark/benchmark.h>
 
-#include <cstdint>
 #include <string>
 
 #include "episode_bench.h"
@@ -23,15 +22,8 @@ void BM_ReplayStep(benchmark::State& state, const char* scene) {
   const std::string file =
       (testing::SourceDir() / "worlds" / "crowds" / (std::string(scene) + ".tracks")).string();
   const auto world = row.MakeWorld("crowds", {{"file", file}, {"split", std::string("test")}});
-  auto make_scenario = [&](int episode) {
-    ScenarioRequest request;
-    request.seed = 2026 + static_cast<std::uint64_t>(episode);
-    request.episode_index = episode;
-    request.num_humans = slots;
-    return world->Make(request);
-  };
   // A window lasts 25 s: each measured episode is one whole window but its last 5 s.
-  bench::TimeSteps(state, make_scenario, row.agents, slots);
+  bench::TimeSteps(state, bench::SuiteScenarios(*world, 2026, slots), row.agents, slots);
 }
 
 void Slots(benchmark::internal::Benchmark* b) {
