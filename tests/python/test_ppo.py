@@ -172,6 +172,21 @@ class Training(unittest.TestCase):
             self.assertTrue(os.path.isfile(os.path.join(self.out("r"), name)), name)
         self.assertEqual([f for f in os.listdir(self.out("r")) if ".tmp" in f], [])
 
+    def test_the_collision_penalty_rises_over_its_warmup(self):
+        trainer = Trainer(tiny(collision_penalty=2.0, collision_penalty_warmup=1000),
+                          self.out("w"), quiet=True)
+        try:
+            seen = []
+            for steps in (0, 250, 1000, 5000):
+                trainer.steps = steps
+                seen.append(trainer._collision_penalty())
+        finally:
+            trainer.close()
+        self.assertEqual(seen, [0.0, 0.5, 2.0, 2.0])
+        full = Trainer(tiny(collision_penalty=2.0), self.out("f"), quiet=True)
+        full.close()
+        self.assertEqual(full._collision_penalty(), 2.0)
+
     def test_checkpoints_that_cannot_be_resumed_are_refused_naming_the_file(self):
         out = self.out("c")
         train(tiny(total_steps=2 * 64), out)

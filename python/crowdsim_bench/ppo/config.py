@@ -75,6 +75,9 @@ KEYS: Dict[str, Key] = {
     "collision_penalty": Key(0.0, "float", 0.0, 100.0,
                              source="ours: subtracted from the reward of a collision, beside "
                              "the environment's -0.25"),
+    "collision_penalty_warmup": Key(0, "int", 0, 10**12,
+                                    source="ours: environment steps over which the collision "
+                                    "penalty rises linearly from 0 (0: in full from the start)"),
     "hidden": Key(128, "int", 8, 4096, source="ours: width of the two trunk layers"),
     "init_log_std": Key(-0.5, "float", -10.0, 2.0, source="ours (continuous only)"),
     "checkpoint_interval": Key(20, "int", 1, 10**6,

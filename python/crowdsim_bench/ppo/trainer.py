@@ -277,12 +277,22 @@ class Trainer:
         e = dist.entropy()
         return e if self.config["discrete"] else e.sum(-1)
 
+    def _collision_penalty(self) -> float:
+        """The collision penalty of the coming rollout: its full value, or a share of it
+        rising linearly with the steps trained over `collision_penalty_warmup`."""
+        c = self.config
+        warmup = c["collision_penalty_warmup"]
+        if not warmup:
+            return c["collision_penalty"]
+        return c["collision_penalty"] * min(1.0, self.steps / warmup)
+
     def _rollout(self, obs, ended, episode_return):
         c = self.config
         n, horizon = c["num_envs"], c["steps_per_rollout"]
         stored: List[Dict[str, torch.Tensor]] = []
         actions, log_probs, values, rewards, dones, valids = [], [], [], [], [], []
         phi = potential(obs)
+        penalty = self._collision_penalty()
         for _ in range(horizon):
             t_obs = tensors(obs)
             with torch.no_grad():
@@ -297,8 +307,8 @@ class Trainer:
             valid = ~ended  # a step right after an episode's end only resets that environment
             new_phi = potential(obs)
             shaped = reward + c["progress_reward"] * (phi - new_phi)
-            if c["collision_penalty"]:
-                shaped = shaped - c["collision_penalty"] * self._collision[info["status"]]
+            if penalty:
+                shaped = shaped - penalty * self._collision[info["status"]]
             shaped = np.where(valid, shaped, 0.0)
             phi = new_phi
             episode_return += np.where(valid, reward, 0.0)
