@@ -87,6 +87,25 @@ class Config(unittest.TestCase):
         self.assertError({"row": "orca"}, "'suite' is required")
         self.assertError([1, 2], "a YAML mapping")
 
+    def test_committed_models_match_their_training_files(self):
+        # results/models/ppo_NAME/training.yaml is the file it trained from: suites/ppo/NAME.yaml
+        # as it is now (a changed file would no longer describe the committed model).
+        import glob
+        import json
+        folders = sorted(glob.glob("results/models/ppo_*"))
+        self.assertTrue(folders)
+        for folder in folders:
+            with open(os.path.join(folder, "summary.json")) as f:
+                summary = json.load(f)
+            with open(os.path.join(folder, "training.yaml")) as f:
+                trained = parse(yaml.safe_load(f), folder)
+            with open(os.path.join("suites/ppo", summary["name"] + ".yaml")) as f:
+                shipped = parse(yaml.safe_load(f), summary["name"])
+            self.assertEqual(trained, shipped, folder)
+            self.assertEqual(summary["seed"], trained["seed"], folder)
+            self.assertGreaterEqual(summary["steps"], trained["total_steps"], folder)
+            self.assertTrue(os.path.isfile(os.path.join(folder, "policy.pt")), folder)
+
     def test_defaults_are_filled_in(self):
         c = parse({"suite": QUICK, "row": "orca"}, "suites/ppo/x.yaml")
         self.assertEqual((c["clip"], c["gamma"], c["gae_lambda"], c["learning_rate"]),
