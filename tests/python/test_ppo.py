@@ -88,8 +88,9 @@ class Config(unittest.TestCase):
         self.assertError([1, 2], "a YAML mapping")
 
     def test_committed_models_match_their_training_files(self):
-        # results/models/ppo_NAME/training.yaml is the file it trained from: suites/ppo/NAME.yaml
-        # as it is now (a changed file would no longer describe the committed model).
+        # results/models/ppo_NAME[_seedN]/training.yaml is the file it trained from (with
+        # --seed N): suites/ppo/NAME.yaml as it is now (a changed file would no longer describe
+        # the committed model).
         import glob
         import json
         folders = sorted(glob.glob("results/models/ppo_*"))
@@ -102,7 +103,8 @@ class Config(unittest.TestCase):
             with open(os.path.join("suites/ppo", summary["name"] + ".yaml")) as f:
                 shipped = parse(yaml.safe_load(f), summary["name"])
             self.assertEqual(trained, shipped, folder)
-            self.assertEqual(summary["seed"], trained["seed"], folder)
+            _, reseeded, seed = os.path.basename(folder).rpartition("_seed")
+            self.assertEqual(summary["seed"], int(seed) if reseeded else trained["seed"], folder)
             self.assertGreaterEqual(summary["steps"], trained["total_steps"], folder)
             self.assertTrue(os.path.isfile(os.path.join(folder, "policy.pt")), folder)
 
