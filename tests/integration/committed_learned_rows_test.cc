@@ -53,6 +53,15 @@ TEST_F(CommittedLearnedRowsTest, CadrlRowOfTable1With3ObstaclesRerunsIdentically
   ExpectRowReruns("table1_3obs", "line04_cadrl_pp_lidar_rect1_nohumans");
 }
 
+// A PPO row: a TorchScript module, whose tanh and softmax run in ATen's own SIMD kernels (its
+// AVX2 and AVX-512 kernels give the same episodes; docs/reproducibility.md).
+TEST_F(CommittedLearnedRowsTest, PpoRowRerunsIdentically) {
+  if (!fs::exists(testing::PluginDir() / "crowdsim_torchscript.so")) {
+    GTEST_SKIP() << "no torchscript plugin in this build";
+  }
+  ExpectRowReruns("ppo", "ppo_s1");
+}
+
 // An OPENBLAS_CORETYPE set before the harness runs (a user's, or an environment that avoids a
 // kernel known to fail on its processor) is left as it is.
 TEST(PinBlasKernel, LeavesAChoiceMadeOutsideAlone) {
