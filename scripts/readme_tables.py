@@ -22,7 +22,7 @@ BLOCK = re.compile(r"(<!-- table:(?P<name>[\w.-]+)(?P<form>(?::compact|:social|:
 # The pages that hold blocks, and the suites whose full table one of them must hold.
 PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
 REQUIRED = ["table1", "table1_3obs", "table2", "table1_route", "table2_route", "human_models",
-            "kinematics", "perception", "people", "ppo"]
+            "kinematics", "perception", "people", "ppo", "ppo_floorplans"]
 # The social navigation metrics a `:social` block shows (table.csv headers, docs/metrics.md).
 SOCIAL = ["SPL", "accel. mean", "jerk mean", "path irregularity", "freezing time", "personal share",
           "personal intrusions", "min. TTC"]
