@@ -26,7 +26,7 @@ except ImportError as e:
 if torch is not None:
     import crowdsim_bench as cb
     from crowdsim_bench import ppo
-    from crowdsim_bench.ppo.config import PPOError, parse
+    from crowdsim_bench.ppo.config import PPOError, canonical, load, parse, resolved_text
     from crowdsim_bench.ppo.trainer import Trainer, observation_layout
     torch.set_num_threads(1)
 
@@ -41,6 +41,11 @@ CLI = os.environ.get("CROWDSIM_BENCH", "")
 def tiny(**changes):
     data = dict(TINY, **changes)
     return parse(data, "tiny.yaml")
+
+
+def course(config):
+    """What decides a training and what it was run for (canonical keys and total_steps)."""
+    return dict(canonical(config), total_steps=config["total_steps"])
 
 
 def weights(trainer):
@@ -89,8 +94,8 @@ class Config(unittest.TestCase):
 
     def test_committed_models_match_their_training_files(self):
         # results/models/ppo_NAME[_seedN]/training.yaml is the file it trained from (with
-        # --seed N): suites/ppo/NAME.yaml as it is now (a changed file would no longer describe
-        # the committed model).
+        # --seed N, its base resolved): every key that steers a training is as suites/ppo/NAME.yaml
+        # gives it now (a changed file would no longer describe the committed model).
         import glob
         import json
         folders = sorted(glob.glob("results/models/ppo_*"))
@@ -100,9 +105,8 @@ class Config(unittest.TestCase):
                 summary = json.load(f)
             with open(os.path.join(folder, "training.yaml")) as f:
                 trained = parse(yaml.safe_load(f), folder)
-            with open(os.path.join("suites/ppo", summary["name"] + ".yaml")) as f:
-                shipped = parse(yaml.safe_load(f), summary["name"])
-            self.assertEqual(trained, shipped, folder)
+            shipped = load(os.path.join("suites/ppo", summary["name"] + ".yaml"))
+            self.assertEqual(course(trained), course(shipped), folder)
             _, reseeded, seed = os.path.basename(folder).rpartition("_seed")
             self.assertEqual(summary["seed"], int(seed) if reseeded else trained["seed"], folder)
             self.assertGreaterEqual(summary["steps"], trained["total_steps"], folder)
@@ -143,6 +147,38 @@ class Config(unittest.TestCase):
             with self.assertRaises(PPOError) as c:
                 load(path, ["clip=3"])
             self.assertIn("clip = 3.0 is out of range", str(c.exception))
+
+    def test_a_base_lends_its_keys_and_the_file_replaces_them(self):
+        with tempfile.TemporaryDirectory() as d:
+            os.makedirs(os.path.join(d, "sub"))
+            with open(os.path.join(d, "base.yaml"), "w") as f:
+                f.write(f"name: b\ndescription: the base\nsuite: {os.path.abspath(QUICK)}\n"
+                        "row: orca\nclip: 0.1\ngamma: 0.9\nset: [world.split=train]\n")
+            path = os.path.join(d, "sub", "child.yaml")
+            with open(path, "w") as f:
+                f.write("base: ../base.yaml\ngamma: 0.95\n")
+            c = load(path)
+            self.assertEqual((c["clip"], c["gamma"], c["row"], c["set"]),
+                             (0.1, 0.95, "orca", ["world.split=train"]))
+            self.assertEqual((c["name"], c["description"]), ("child", ""))
+            self.assertEqual(os.path.abspath(c["suite"]), os.path.abspath(QUICK))
+            # The record of a training is a file of its own with the same values.
+            again = parse(yaml.safe_load(resolved_text(c, path)), "training.yaml")
+            self.assertEqual(again, dict(c, base=""))
+
+    def test_a_missing_or_circular_base_is_named(self):
+        with tempfile.TemporaryDirectory() as d:
+            a, b = os.path.join(d, "a.yaml"), os.path.join(d, "b.yaml")
+            with open(a, "w") as f:
+                f.write("base: b.yaml\n")
+            with self.assertRaises(PPOError) as c:
+                load(a)
+            self.assertIn(f"{b} (the base of {a}): cannot read", str(c.exception))
+            with open(b, "w") as f:
+                f.write("base: a.yaml\nrow: orca\n")
+            with self.assertRaises(PPOError) as c:
+                load(a)
+            self.assertIn(f"leads back to itself ({a} -> {b} -> {a})", str(c.exception))
 
     def test_a_row_whose_observation_the_encoder_cannot_take(self):
         class Space:
@@ -192,6 +228,18 @@ class Training(unittest.TestCase):
         for name in ("policy.pt", "checkpoint.pt", "learning_curve.svg", "summary.json"):
             self.assertTrue(os.path.isfile(os.path.join(self.out("r"), name)), name)
         self.assertEqual([f for f in os.listdir(self.out("r")) if ".tmp" in f], [])
+
+    def test_the_command_line_records_every_key_it_trained_with(self):
+        path = self.out("tiny.yaml")
+        with open(path, "w") as f:
+            yaml.safe_dump(dict(TINY, suite=os.path.abspath(QUICK), total_steps=64), f)
+        out = self.out("cli")
+        p = subprocess.run([sys.executable, "-m", "crowdsim_bench.ppo", "train", path, "--seed",
+                            "9", "--set", "clip=0.3", "--out", out], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        with open(os.path.join(out, "training.yaml")) as f:
+            recorded = parse(yaml.safe_load(f), "training.yaml")
+        self.assertEqual(recorded, dict(load(path, ["clip=0.3"]), seed=9))
 
     def test_the_collision_penalty_rises_over_its_warmup(self):
         trainer = Trainer(tiny(collision_penalty=2.0, collision_penalty_warmup=1000),

@@ -13,7 +13,7 @@ from typing import List, Optional
 
 
 def _train(args) -> int:
-    from .config import load
+    from .config import load, resolved_text
     from .trainer import Trainer
     config = load(args.config, args.set or [])
     if args.seed is not None:
@@ -25,6 +25,8 @@ def _train(args) -> int:
         "results", "train", f"ppo_{config['name']}"
         + (f"_seed{args.seed}" if args.seed is not None else ""))
     trainer = Trainer(config, out, resume=args.resume)
+    with open(os.path.join(out, "training.yaml"), "w", encoding="utf-8") as f:
+        f.write(resolved_text(config, args.config))
     try:
         trainer.train()
     finally:

@@ -42,6 +42,9 @@ REQUIRED = object()
 KEYS: Dict[str, Key] = {
     "name": Key("", "str", source="the file's name without .yaml"),
     "description": Key("", "str", source="free text", fixed=False),
+    "base": Key("", "str", source="a training file whose keys this one takes, except name and "
+                "description (relative to this file's folder); this file's keys replace them",
+                fixed=False),
     "suite": Key(REQUIRED, "str", source="required; relative to this file's folder, else the "
                  "working folder"),
     "row": Key(REQUIRED, "row", source="required; a row label or 1-based index"),
@@ -176,13 +179,7 @@ def load(path: str, overrides: Sequence[str] = ()) -> Dict[str, Any]:
         import yaml
     except ImportError as e:  # pragma: no cover - Debian's python3-yaml
         raise PPOError("reading a PPO training file needs PyYAML (apt install python3-yaml)") from e
-    try:
-        with open(path, encoding="utf-8") as f:
-            data = yaml.safe_load(f)
-    except OSError as e:
-        raise PPOError(f"{path}: cannot read the training file ({e.strerror})") from None
-    except yaml.YAMLError as e:
-        raise PPOError(f"{path}: not valid YAML ({str(e).splitlines()[0]})") from None
+    data = _read_with_bases(path, yaml, [])
     for override in overrides:
         key, sep, text = override.partition("=")
         if not sep or not key:
@@ -198,12 +195,51 @@ def load(path: str, overrides: Sequence[str] = ()) -> Dict[str, Any]:
     return config
 
 
+def _read_with_bases(path: str, yaml: Any, chain: List[str]) -> Any:
+    """The file's mapping over its `base:` chain's (a key replaces the base's whole value, a
+    list too); a base's suite becomes an absolute path, the same file wherever this one lies."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            data = yaml.safe_load(f)
+    except OSError as e:
+        via = f" (the base of {chain[-1]})" if chain else ""
+        raise PPOError(f"{path}{via}: cannot read the training file ({e.strerror})") from None
+    except yaml.YAMLError as e:
+        raise PPOError(f"{path}: not valid YAML ({str(e).splitlines()[0]})") from None
+    if not isinstance(data, dict) or not data.get("base"):
+        return data
+    base = data["base"]
+    if not isinstance(base, str):
+        raise PPOError(f"{path}: base must be the path of a training file, got {base!r}")
+    base_path = os.path.normpath(os.path.join(os.path.dirname(path), base))
+    chain = chain + [os.path.normpath(path)]
+    if base_path in chain:
+        raise PPOError(f"{path}: base: {base} leads back to itself "
+                       f"({' -> '.join(chain + [base_path])})")
+    inherited = _read_with_bases(base_path, yaml, chain)
+    if not isinstance(inherited, dict):
+        parse(inherited, base_path)  # names what the base is instead of a mapping
+    merged = {k: v for k, v in inherited.items() if k not in ("name", "description", "base")}
+    if isinstance(merged.get("suite"), str) and "suite" not in data:
+        merged["suite"] = os.path.abspath(resolve_suite(merged["suite"], base_path))
+    merged.update(data)
+    return merged
+
+
 def resolve_suite(suite: str, config_path: str) -> str:
     here = os.path.join(os.path.dirname(os.path.abspath(config_path)), suite)
     for candidate in (here, suite):
         if os.path.isfile(candidate):
             return os.path.relpath(candidate) if not os.path.isabs(suite) else candidate
     raise PPOError(f"{config_path}: suite: no file {here} (nor {suite} in the working folder)")
+
+
+def resolved_text(config: Dict[str, Any], source: str) -> str:
+    """Every key's value as a training file of its own (no base), the record of what trained."""
+    import yaml
+    keys = {k: config[k] for k in KEYS if k != "base"}
+    return (f"# {source} with its base and any --seed / --set resolved: every key's value.\n"
+            + yaml.safe_dump(keys, sort_keys=False, width=100))
 
 
 def canonical(config: Dict[str, Any]) -> Dict[str, Any]:
