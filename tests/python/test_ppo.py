@@ -152,7 +152,9 @@ class Config(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             os.makedirs(os.path.join(d, "sub"))
             with open(os.path.join(d, "base.yaml"), "w") as f:
-                f.write(f"name: b\ndescription: the base\nsuite: {os.path.abspath(QUICK)}\n"
+                # The base's suite relative to the base's folder, not the extending file's.
+                suite = os.path.relpath(os.path.abspath(QUICK), d)
+                f.write(f"name: b\ndescription: the base\nsuite: {suite}\n"
                         "row: orca\nclip: 0.1\ngamma: 0.9\nset: [world.split=train]\n")
             path = os.path.join(d, "sub", "child.yaml")
             with open(path, "w") as f:
@@ -194,10 +196,40 @@ class Config(unittest.TestCase):
         self.assertIn("'sonar'", str(c.exception))
         self.assertIn("suite.yaml, row 'x'", str(c.exception))
 
+    def test_the_route_frame_needs_the_route_sensor(self):
+        with tempfile.TemporaryDirectory() as d, self.assertRaises(PPOError) as c:
+            Trainer(tiny(frame="route"), os.path.join(d, "out"), quiet=True)
+        self.assertIn("row 'orca': frame: route needs the route sensor", str(c.exception))
+
     def test_an_unknown_row_is_named(self):
         with tempfile.TemporaryDirectory() as d, self.assertRaises(PPOError) as c:
             Trainer(tiny(row="no_such_row"), os.path.join(d, "out"), quiet=True)
         self.assertIn("no_such_row", str(c.exception))
+
+
+@unittest.skipIf(torch is None, _MISSING if torch is None else "")
+class Frames(unittest.TestCase):
+    def test_the_route_frame_turns_actions_and_people_towards_the_waypoint(self):
+        from crowdsim_bench.ppo.model import ActorCritic
+        # The robot at the origin, its goal 10 m along x (heading 0), the waypoint 2 m to its
+        # left; one person at (1, 1).
+        obs = {"robot": torch.tensor([[0.0, 0, 0, 0, 10, 0, 0.3, 1.0, 0]]),
+               "humans": torch.tensor([[[1.0, 1, 0.5, 0, 0.3]]]),
+               "humans_mask": torch.tensor([[True]]), "time": torch.tensor([0.0]),
+               "route": torch.tensor([[12.0, 0, 2]])}
+        for frame, want in (("goal", (1.0, 0.0)), ("route", (0.0, 1.0))):
+            model = ActorCritic(0, 5.0, True, 25.0, False, hidden=16, frame=frame)
+            with torch.no_grad():
+                model.policy_head.weight.zero_()
+                model.policy_head.bias.copy_(torch.tensor([1.0, 0.0]))  # "straight ahead"
+                got = model.greedy(obs)[0]
+            self.assertTrue(torch.allclose(got, torch.tensor(want, dtype=torch.float64),
+                                           atol=1e-6), (frame, got))
+        # x along the waypoint (world +y): the person at (1, 1) lies 1 m ahead, 1 m right; its
+        # velocity (0.5, 0) points right.
+        turned = model._turned(obs["humans"], obs)[0, 0]
+        self.assertTrue(torch.allclose(turned, torch.tensor([1.0, -1, 0, -0.5, 0.3]), atol=1e-6),
+                        turned)
 
 
 @unittest.skipIf(torch is None, _MISSING if torch is None else "")
@@ -314,10 +346,10 @@ class Training(unittest.TestCase):
         # With the route sensor too: the model reads `route`, which the plugin passes when
         # `route: true`.
         sensors = "[person, {type: lidar2d, beams: 45, fov_deg: 180, max_range: 5}"
-        for route in (False, True):
-            name = "r" if route else "p"
+        for route, frame in ((False, "goal"), (True, "goal"), (True, "route")):
+            name = ("r" if route else "p") + frame
             out = self.out(name)
-            changes = {"total_steps": 64, "checkpoint_interval": 1}
+            changes = {"total_steps": 64, "checkpoint_interval": 1, "frame": frame}
             if route:
                 changes["set"] = TINY["set"] + [f"robot.sensors={sensors}, route]"]
             trainer = train(tiny(**changes), out)

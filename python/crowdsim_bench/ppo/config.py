@@ -81,6 +81,9 @@ KEYS: Dict[str, Key] = {
     "collision_penalty_warmup": Key(0, "int", 0, 10**12,
                                     source="ours: environment steps over which the collision "
                                     "penalty rises linearly from 0 (0: in full from the start)"),
+    "frame": Key("goal", "choice", choices=("goal", "route"),
+                 source="ours: the frame of the policy's inputs and actions, x towards the goal "
+                 "(CrowdNav's rotate()) or towards the route sensor's waypoint"),
     "hidden": Key(128, "int", 8, 4096, source="ours: width of the two trunk layers"),
     "init_log_std": Key(-0.5, "float", -10.0, 2.0, source="ours (continuous only)"),
     "checkpoint_interval": Key(20, "int", 1, 10**6,
@@ -197,7 +200,7 @@ def load(path: str, overrides: Sequence[str] = ()) -> Dict[str, Any]:
 
 def _read_with_bases(path: str, yaml: Any, chain: List[str]) -> Any:
     """The file's mapping over its `base:` chain's (a key replaces the base's whole value, a
-    list too); a base's suite becomes an absolute path, the same file wherever this one lies."""
+    list too); a base's suite is rewritten relative to this file's folder, the same file."""
     try:
         with open(path, encoding="utf-8") as f:
             data = yaml.safe_load(f)
@@ -221,7 +224,9 @@ def _read_with_bases(path: str, yaml: Any, chain: List[str]) -> Any:
         parse(inherited, base_path)  # names what the base is instead of a mapping
     merged = {k: v for k, v in inherited.items() if k not in ("name", "description", "base")}
     if isinstance(merged.get("suite"), str) and "suite" not in data:
-        merged["suite"] = os.path.abspath(resolve_suite(merged["suite"], base_path))
+        suite = resolve_suite(merged["suite"], base_path)
+        merged["suite"] = suite if os.path.isabs(suite) else os.path.relpath(
+            suite, os.path.dirname(os.path.abspath(path)))
     merged.update(data)
     return merged
 

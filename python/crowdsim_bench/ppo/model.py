@@ -3,8 +3,10 @@ attention as SARL does, the route when the row has one) with a policy head and a
 the TorchScript module exported for the `torchscript` policy plugin.
 
 Everything is computed in the goal frame: x from the robot towards its goal, as the `humans`
-rows of the observation already are. The policy's actions are velocities in that frame, turned
-into world-frame velocities (what `VectorEnv.step` and the plugin take) by `to_world`.
+rows of the observation already are; or, with `frame: route`, in the route frame: x towards
+the route sensor's waypoint (the goal frame in open space). The policy's actions are velocities
+in that frame, turned into world-frame velocities (what `VectorEnv.step` and the plugin take)
+by `to_world`.
 """
 from __future__ import annotations
 
@@ -23,6 +25,9 @@ HUMAN_FEATURES = 8
 # to the goal direction (cos, sin), elapsed fraction of the time limit.
 ROBOT_FEATURES = 8
 ROUTE_FEATURES = 3
+# Route frame: path distance, waypoint distance, the goal's direction in the frame (cos, sin).
+ROUTE_FRAME_FEATURES = 4
+FRAMES = ("goal", "route")
 
 
 def holonomic_velocities(speeds: int = 5, rotations: int = 16) -> Tensor:
@@ -57,8 +62,11 @@ class ActorCritic(nn.Module):
 
     def __init__(self, beams: int, max_range: float, uses_route: bool, time_limit: float,
                  discrete: bool, hidden: int = 128, human_embedding: int = 64,
-                 init_log_std: float = -0.5):
+                 init_log_std: float = -0.5, frame: str = "goal"):
         super().__init__()
+        if frame == "route" and not uses_route:
+            raise ValueError("frame: route needs the route sensor in the row's observation")
+        self.route_frame = frame == "route"
         self.uses_lidar = beams > 0
         self.beams = beams
         self.uses_route = uses_route
@@ -75,7 +83,8 @@ class ActorCritic(nn.Module):
         self.pair = _mlp([ROBOT_FEATURES + HUMAN_FEATURES, human_embedding, human_embedding], True)
         self.pair_value = _mlp([human_embedding, 32], True)
         self.attention = _mlp([2 * human_embedding, 64, 1], False)
-        trunk_in = ROBOT_FEATURES + lidar_out + 32 + (ROUTE_FEATURES if uses_route else 0)
+        route_in = ROUTE_FRAME_FEATURES if self.route_frame else ROUTE_FEATURES
+        trunk_in = ROBOT_FEATURES + lidar_out + 32 + (route_in if uses_route else 0)
         self.trunk = nn.Sequential(nn.Linear(trunk_in, hidden), nn.Tanh(),
                                    nn.Linear(hidden, hidden), nn.Tanh())
         outputs = 81 if discrete else 2
@@ -91,19 +100,32 @@ class ActorCritic(nn.Module):
         nn.init.orthogonal_(self.policy_head.weight, 0.01)
         nn.init.orthogonal_(self.value_head.weight, 1.0)
 
-    def goal_frame(self, robot: Tensor) -> Tuple[Tensor, Tensor, Tensor]:
-        """(cos, sin) of the goal direction and the distance to the goal, per row."""
+    def route_turn(self, obs: Dict[str, Tensor]) -> Tensor:
+        """The waypoint's bearing in the sensor frame (the heading's; holonomic: the goal
+        frame), the turn from it to the route frame: 0 where the waypoint is the robot itself."""
+        route = obs["route"].float()
+        wx, wy = route[:, 1], route[:, 2]
+        away = wx * wx + wy * wy > 1e-12
+        return torch.where(away, torch.atan2(wy, wx), torch.zeros_like(wx))
+
+    def frame(self, obs: Dict[str, Tensor]) -> Tuple[Tensor, Tensor, Tensor, Tensor]:
+        """The policy frame's x axis in the world (angle, cos, sin) and the distance to the
+        goal: the goal frame, or the heading turned towards the waypoint (frame: route)."""
+        robot = obs["robot"].float()
         dx = robot[:, 4] - robot[:, 0]
         dy = robot[:, 5] - robot[:, 1]
         dist = torch.sqrt(dx * dx + dy * dy)
-        theta = torch.atan2(dy, dx)
-        return torch.cos(theta), torch.sin(theta), dist
+        if self.route_frame:
+            theta = robot[:, 8] + self.route_turn(obs)
+        else:
+            theta = torch.atan2(dy, dx)
+        return theta, torch.cos(theta), torch.sin(theta), dist
 
     def encode(self, obs: Dict[str, Tensor]) -> Tensor:
         robot = obs["robot"].float()
-        c, s, dist = self.goal_frame(robot)
+        theta, c, s, dist = self.frame(obs)
         vx, vy = robot[:, 2], robot[:, 3]
-        rel = robot[:, 8] - torch.atan2(robot[:, 5] - robot[:, 1], robot[:, 4] - robot[:, 0])
+        rel = robot[:, 8] - theta
         self_state = torch.stack([
             dist * self.distance_scale, robot[:, 7], robot[:, 6], c * vx + s * vy, -s * vx + c * vy,
             torch.cos(rel), torch.sin(rel), obs["time"].float().reshape(-1) * self.time_scale], 1)
@@ -114,15 +136,36 @@ class ActorCritic(nn.Module):
                 raise RuntimeError("crowdsim_bench.ppo: the lidar has another beam count than "
                                    "the model was trained with")
             parts.append(self.lidar(torch.clamp(lidar * self.lidar_scale, 0.0, 1.0)))
-        parts.append(self._people(self_state, obs["humans"].float(), obs["humans_mask"], robot))
+        humans = obs["humans"].float()
+        if self.route_frame:
+            humans = self._turned(humans, obs)
+        parts.append(self._people(self_state, humans, obs["humans_mask"], robot))
         if self.uses_route:
             if "route" not in obs:
                 raise RuntimeError("crowdsim_bench.ppo: the model reads the route sensor, but the "
                                    "observation has no `route` (give the row the route sensor, "
                                    "and the torchscript plugin `route: true`)")
             route = obs["route"].float()
-            parts.append(torch.stack([route[:, 0] * self.distance_scale, route[:, 1], route[:, 2]], 1))
+            if self.route_frame:
+                goal = torch.atan2(robot[:, 5] - robot[:, 1], robot[:, 4] - robot[:, 0])
+                bearing = goal - theta
+                waypoint = torch.sqrt(route[:, 1] * route[:, 1] + route[:, 2] * route[:, 2])
+                parts.append(torch.stack([route[:, 0] * self.distance_scale, waypoint,
+                                          torch.cos(bearing), torch.sin(bearing)], 1))
+            else:
+                parts.append(torch.stack([route[:, 0] * self.distance_scale, route[:, 1],
+                                          route[:, 2]], 1))
         return self.trunk(torch.cat(parts, 1))
+
+    def _turned(self, humans: Tensor, obs: Dict[str, Tensor]) -> Tensor:
+        """The people's rows (sensor frame) in the route frame: positions and velocities turned
+        back by the waypoint's bearing."""
+        turn = self.route_turn(obs).unsqueeze(1)
+        tc, ts = torch.cos(turn), torch.sin(turn)
+        x, y, vx, vy = humans[:, :, 0], humans[:, :, 1], humans[:, :, 2], humans[:, :, 3]
+        return torch.cat([torch.stack([tc * x + ts * y, -ts * x + tc * y,
+                                       tc * vx + ts * vy, -ts * vx + tc * vy], 2),
+                          humans[:, :, 4:]], 2)
 
     def _people(self, self_state: Tensor, humans: Tensor, mask: Tensor, robot: Tensor) -> Tensor:
         b = humans.size(0)
@@ -146,9 +189,9 @@ class ActorCritic(nn.Module):
         h = self.encode(obs)
         return self.policy_head(h), self.value_head(h).squeeze(1)
 
-    def to_world(self, local: Tensor, robot: Tensor) -> Tensor:
-        """Goal-frame velocities (B, 2) -> world-frame velocities (B, 2), float64."""
-        c, s, _ = self.goal_frame(robot.float())
+    def to_world(self, local: Tensor, obs: Dict[str, Tensor]) -> Tensor:
+        """Policy-frame velocities (B, 2) -> world-frame velocities (B, 2), float64."""
+        _, c, s, _ = self.frame(obs)
         vx = c * local[:, 0] - s * local[:, 1]
         vy = s * local[:, 0] + c * local[:, 1]
         return torch.stack([vx, vy], 1).double()
@@ -169,7 +212,7 @@ class ActorCritic(nn.Module):
             action = torch.argmax(out, 1)
         else:
             action = out
-        return self.to_world(self.local_velocity(action, obs["robot"]), obs["robot"])
+        return self.to_world(self.local_velocity(action, obs["robot"]), obs)
 
 
 class ExportedPolicy(nn.Module):

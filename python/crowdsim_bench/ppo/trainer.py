@@ -101,7 +101,7 @@ def observation_layout(env: VectorEnv, where: str) -> Dict[str, Any]:
 def build_model(config: Dict[str, Any], layout: Dict[str, Any]) -> ActorCritic:
     return ActorCritic(layout["beams"], layout["max_range"], layout["uses_route"],
                        layout["time_limit"], config["discrete"], hidden=config["hidden"],
-                       init_log_std=config["init_log_std"])
+                       init_log_std=config["init_log_std"], frame=config["frame"])
 
 
 def tensors(obs: Dict[str, np.ndarray]) -> Dict[str, torch.Tensor]:
@@ -161,7 +161,11 @@ class Trainer:
         if resume and checkpoint is None:
             self._say(f"{out}: no checkpoint to resume; starting the training")
         self.env = make_env(config)
-        self.layout = observation_layout(self.env, f"{config['suite']}, row {config['row']!r}")
+        where = f"{config['suite']}, row {config['row']!r}"
+        self.layout = observation_layout(self.env, where)
+        if config["frame"] == "route" and not self.layout["uses_route"]:
+            raise PPOError(f"{where}: frame: route needs the route sensor in the row's sensors "
+                           "(e.g. suites/table2_route.yaml's rows); frame: goal does without")
         torch.manual_seed(config["seed"])
         self.model = build_model(config, self.layout)
         self.optimizer = torch.optim.Adam(self.model.parameters(), lr=config["learning_rate"],
@@ -301,7 +305,7 @@ class Trainer:
                 action = dist.sample()
                 log_prob = self._log_prob(dist, action)
                 velocity = self.model.to_world(self.model.local_velocity(action, t_obs["robot"]),
-                                               t_obs["robot"]).numpy()
+                                               t_obs).numpy()
             obs, reward, terminated, truncated, info = self.env.step(velocity)
             done = terminated | truncated
             valid = ~ended  # a step right after an episode's end only resets that environment
