@@ -4,9 +4,9 @@
 #
 #   scripts/make_gallery.sh [--bin PATH] [--out DIR]
 #
-# One figure per kind the gallery promises: success, human collision, obstacle collision,
-# timeout, floor-plan episode, lidar and person readings, two policies in one episode. The
-# episode of each is the first one of its row with that outcome in results/<suite>/episodes.csv.
+# One figure per kind the gallery promises: success, human collision, obstacle collision, timeout,
+# floor plan, lidar and person readings, two policies in one episode, PPO at a floor plan's wall.
+# The episode of each is the first of its row with that outcome in results/<suite>/episodes.csv.
 set -euo pipefail
 
 bin="build/bin/crowdsim-bench"
@@ -62,6 +62,15 @@ e=$(first_pair table1 line16_sarl_pp_lidar_person_rect1 line11_cadrl_pp_lidar_pe
 render compare "$t1" --row line16_sarl_pp_lidar_person_rect1 --compare line11_cadrl_pp_lidar_person_rect3 --episode "$e"
 e=$(first_episode gibson_baselines ompl_planner_hard success)
 render floorplan suites/gibson_baselines.yaml --row ompl_planner_hard --episode "$e"
+
+# PPO beside the route follower on the hard plan: the first trip where PPO hits a wall and the
+# follower arrives, with PPO's readings two steps before the collision.
+e=$(first_pair ppo_floorplans ppo_hard_route_s1 hard_route_follower collision_obstacle success)
+[[ "$e" -ge 0 ]] || { echo "make_gallery: no ppo_floorplans trip where PPO hits a wall and the follower arrives" >&2; exit 1; }
+k=$(awk -F, -v e="$e" '$1 == "ppo_hard_route_s1" && $2 == e { print ($7 > 2 ? $7 - 2 : 0); exit }' \
+  results/ppo_floorplans/episodes.csv)
+render ppo_wall suites/ppo_floorplans.yaml --row ppo_hard_route_s1 --compare hard_route_follower \
+  --episode "$e" --sensors-at "$k"
 
 # The named interaction scenarios (suites/social.yaml): episode 0 of the OMPL planner's row of
 # each, rows 25-32 in the scenarios' order.

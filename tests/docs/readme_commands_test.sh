@@ -98,7 +98,7 @@ if ! out=$(cd "$src" && timeout 300 bash scripts/make_gallery.sh --bin "$build/b
 fi
 ran=$((ran + 1))
 for f in episode.png gallery/success.png gallery/collision_human.png gallery/collision_obstacle.png \
-         gallery/timeout.png gallery/floorplan.png gallery/lidar.png gallery/compare.png; do
+         gallery/timeout.png gallery/floorplan.png gallery/lidar.png gallery/compare.png gallery/ppo_wall.png; do
   [[ -s "$work/docs/$f" ]] || { echo "FAIL: make_gallery.sh wrote no docs/$f"; failed=$((failed + 1)); }
 done
 echo "$ran commands of ${#pages[@]} pages run, $failed failed"
