@@ -206,6 +206,22 @@ class Config(unittest.TestCase):
             Trainer(tiny(frame="route"), os.path.join(d, "out"), quiet=True)
         self.assertIn("row 'orca': frame: route needs the route sensor", str(c.exception))
 
+    def test_the_wall_penalty_needs_a_lidar(self):
+        sensors = "robot.sensors=[person]"
+        with tempfile.TemporaryDirectory() as d, self.assertRaises(PPOError) as c:
+            Trainer(tiny(wall_penalty=0.1, set=TINY["set"] + [sensors]), os.path.join(d, "out"),
+                    quiet=True)
+        self.assertIn("wall_penalty needs a lidar", str(c.exception))
+
+    def test_the_wall_penalty_falls_linearly_to_zero_at_its_distance(self):
+        from crowdsim_bench.ppo.trainer import wall_penalty
+        # Radius 0.3: surfaces 0 (touching), 0.1, 0.3 and 1.0 m from the nearest return.
+        lidar = np.array([[5.0, 0.3, 4.0], [0.4, 5.0, 5.0], [0.6, 0.7, 5.0], [1.3, 5.0, 2.0]])
+        robot = np.zeros((4, 9))
+        robot[:, 6] = 0.3
+        got = wall_penalty({"lidar": lidar, "robot": robot}, 0.06, 0.3)
+        np.testing.assert_allclose(got, [0.06, 0.04, 0.0, 0.0], atol=1e-12)
+
     def test_an_unknown_row_is_named(self):
         with tempfile.TemporaryDirectory() as d, self.assertRaises(PPOError) as c:
             Trainer(tiny(row="no_such_row"), os.path.join(d, "out"), quiet=True)

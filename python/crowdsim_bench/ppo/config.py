@@ -81,6 +81,13 @@ KEYS: Dict[str, Key] = {
     "collision_penalty_warmup": Key(0, "int", 0, 10**12,
                                     source="ours: environment steps over which the collision "
                                     "penalty rises linearly from 0 (0: in full from the start)"),
+    "wall_penalty": Key(0.0, "float", 0.0, 10.0,
+                        source="ours: subtracted per step at contact with a wall the lidar sees, "
+                        "falling linearly to 0 at wall_distance (as CrowdNav's discomfort "
+                        "penalty near people)"),
+    "wall_distance": Key(0.2, "float", 0.0, 5.0, low_open=True,
+                         source="m; the robot's surface to the nearest lidar return below which "
+                         "wall_penalty applies (CrowdNav's discomfort_dist, 0.2 m)"),
     "frame": Key("goal", "choice", choices=("goal", "route"),
                  source="ours: the frame of the policy's inputs and actions, x towards the goal "
                  "(CrowdNav's rotate()) or towards the route sensor's waypoint"),

@@ -116,6 +116,13 @@ def potential(obs: Dict[str, np.ndarray]) -> np.ndarray:
     return np.hypot(robot[:, 4] - robot[:, 0], robot[:, 5] - robot[:, 1])
 
 
+def wall_penalty(obs: Dict[str, np.ndarray], penalty: float, distance: float) -> np.ndarray:
+    """Per environment: `penalty` at contact with what the lidar sees, falling linearly to 0
+    where the robot's surface is `distance` from the nearest return."""
+    gap = np.asarray(obs["lidar"]).min(axis=1) - np.asarray(obs["robot"])[:, 6]
+    return penalty * np.clip(1.0 - gap / distance, 0.0, 1.0)
+
+
 def export(model: ActorCritic, path: str) -> None:
     """The greedy policy as a TorchScript module for the `torchscript` plugin, written
     atomically."""
@@ -166,6 +173,9 @@ class Trainer:
         if config["frame"] == "route" and not self.layout["uses_route"]:
             raise PPOError(f"{where}: frame: route needs the route sensor in the row's sensors "
                            "(e.g. suites/table2_route.yaml's rows); frame: goal does without")
+        if config["wall_penalty"] and not self.layout["beams"]:
+            raise PPOError(f"{where}: wall_penalty needs a lidar in the row's sensors (it reads "
+                           "the nearest return); set wall_penalty: 0 or add the lidar")
         torch.manual_seed(config["seed"])
         self.model = build_model(config, self.layout)
         self.optimizer = torch.optim.Adam(self.model.parameters(), lr=config["learning_rate"],
@@ -313,6 +323,8 @@ class Trainer:
             shaped = reward + c["progress_reward"] * (phi - new_phi)
             if penalty:
                 shaped = shaped - penalty * self._collision[info["status"]]
+            if c["wall_penalty"]:
+                shaped = shaped - wall_penalty(obs, c["wall_penalty"], c["wall_distance"])
             shaped = np.where(valid, shaped, 0.0)
             phi = new_phi
             episode_return += np.where(valid, reward, 0.0)
