@@ -27,7 +27,6 @@ ROBOT_FEATURES = 8
 ROUTE_FEATURES = 3
 # Route frame: path distance, waypoint distance, the goal's direction in the frame (cos, sin).
 ROUTE_FRAME_FEATURES = 4
-FRAMES = ("goal", "route")
 
 
 def holonomic_velocities(speeds: int = 5, rotations: int = 16) -> Tensor:
