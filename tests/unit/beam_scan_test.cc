@@ -149,6 +149,40 @@ TEST_F(BeamScanTest, AxisBeamsEdgesInsidesAndGrazesGiveTheSameBits) {
   ExpectSameBits({{}, rects, discs}, 5.0, "no beams");
 }
 
+// The sight lines' cull keeps exactly the rectangles a closed-box test keeps, in order, in
+// either kernel: shared edges and corners touch, a gap of one ulp does not.
+TEST_F(BeamScanTest, CullKeepsTheTouchingRectanglesInOrder) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> pos(-6.0, 6.0), size(0.0, 3.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<RelRect> rects;
+    const double bx = pos(rng), by = pos(rng);
+    const RelRect box{bx, by, bx + size(rng), by + size(rng)};
+    for (int i = 0; i < 1 + trial % 40; ++i) {
+      const double x = pos(rng), y = pos(rng);
+      RelRect r{x, y, x + size(rng), y + size(rng)};
+      if (i % 6 == 1) r.x1 = box.x0;                             // touching the box's left edge
+      if (i % 6 == 2) r.y0 = std::nextafter(box.y1, kInfinity);  // one ulp above it
+      if (i % 6 == 3) r = box;
+      rects.push_back(r);
+    }
+    std::vector<RelRect> expected;
+    for (const RelRect& r : rects) {
+      if (r.x0 <= box.x1 && box.x0 <= r.x1 && r.y0 <= box.y1 && box.y0 <= r.y1)
+        expected.push_back(r);
+    }
+    for (const auto cull : {&RectsTouchingScalar, &RectsTouchingAvx2, &RectsTouching}) {
+      std::vector<RelRect> out(rects.size());
+      const std::size_t kept = cull(rects, box, out.data());
+      ASSERT_EQ(kept, expected.size()) << "trial " << trial;
+      for (std::size_t k = 0; k < kept; ++k) {
+        EXPECT_EQ(out[k].x0, expected[k].x0);
+        EXPECT_EQ(out[k].y1, expected[k].y1);
+      }
+    }
+  }
+}
+
 TEST(BeamScanDispatch, TheChosenKernelGivesTheScalarBits) {
   Scene s{Fan(45, -0.5 * std::numbers::pi, 0.5 * std::numbers::pi),
           {{1, -2, 1.5, 2}, {-2, 1, 2, 1.2}},

@@ -119,6 +119,54 @@ TEST(CollisionWorld, SweepMatchesBruteForce) {
   }
 }
 
+// The sight-line query decides as a ray cast along each line would, axis-aligned, grazing and
+// zero-length lines included, whatever lines share its groups of four; among few rectangles
+// (one scan of every line) and many (culled in fours).
+TEST(CollisionWorld, SightLinesMatchRayCasts) {
+  for (const int rect_count : {5, 40}) {
+    std::mt19937_64 rng(12);
+    std::uniform_real_distribution<double> pos(-8.0, 8.0);
+    std::uniform_real_distribution<double> size(0.001, rect_count < 10 ? 5.0 : 2.0);
+    std::vector<Rect> rects;
+    for (int i = 0; i < rect_count; ++i) {
+      const double x = pos(rng), y = pos(rng);
+      rects.push_back(Rect::FromCorners(x, y, x + size(rng), y + size(rng)));
+    }
+    CollisionWorld world(MakeMap(rects));
+    int blocked_lines = 0, clear_lines = 0;
+    for (int trial = 0; trial < 500; ++trial) {
+      const Vec2 eye(pos(rng), pos(rng));
+      std::vector<Vec2> ends;
+      const int n = 1 + trial % 13;
+      for (int k = 0; k < n; ++k) {
+        const Rect& r = rects[static_cast<std::size_t>(k % rect_count)];
+        Vec2 end(pos(rng), pos(rng));
+        if (k % 5 == 1) end.x() = eye.x();    // axis-aligned
+        if (k % 5 == 2) end.y() = r.max.y();  // along a rectangle's edge
+        if (k % 7 == 3) end = r.min;          // ending on a corner
+        if (k % 11 == 4) end = eye;           // zero length
+        ends.push_back(end);
+      }
+      std::vector<std::uint8_t> blocked(ends.size(), 2);
+      std::vector<double> lengths(ends.size(), -1.0);
+      world.SightLines(eye, ends, lengths.data(), blocked.data());
+      for (std::size_t k = 0; k < ends.size(); ++k) {
+        const double length = (ends[k] - eye).norm();
+        const Vec2 dir = length > 0.0 ? Vec2((ends[k] - eye) / length) : Vec2(1.0, 0.0);
+        double range = 0.0;
+        world.CastRays(eye, std::span<const Vec2>(&dir, 1), 30.0, {}, &range);
+        const std::uint8_t expected = range < length ? 1 : 0;
+        EXPECT_EQ(lengths[k], length);
+        EXPECT_EQ(blocked[k], expected) << rect_count << " rectangles, trial " << trial;
+        (expected ? blocked_lines : clear_lines) += 1;
+      }
+    }
+    // Both outcomes occur often enough to test either.
+    EXPECT_GT(blocked_lines, 300) << rect_count;
+    EXPECT_GT(clear_lines, 300) << rect_count;
+  }
+}
+
 TEST(CollisionWorld, ClearanceAt) {
   CollisionWorld world(Room());
   EXPECT_NEAR(world.ClearanceAt(Vec2(0.0, 2.0), 2.0), 1.0, 1e-12);  // box face

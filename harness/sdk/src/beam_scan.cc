@@ -134,6 +134,45 @@ void ScanBeamsAvx2(std::span<const Vec2> directions, double max_range,
 
 #endif
 
+std::size_t RectsTouchingScalar(std::span<const RelRect> rects, const RelRect& box, RelRect* out) {
+  // Every rectangle is written, the next one over it unless it touches: no branch.
+  std::size_t kept = 0;
+  for (const RelRect& r : rects) {
+    out[kept] = r;
+    kept += static_cast<std::size_t>((r.x0 <= box.x1) & (box.x0 <= r.x1) & (r.y0 <= box.y1) &
+                                     (box.y0 <= r.y1));
+  }
+  return kept;
+}
+
+#ifdef CROWDSIM_AVX2_LANES
+[[gnu::target("avx2")]] std::size_t RectsTouchingAvx2(std::span<const RelRect> rects,
+                                                      const RelRect& box, RelRect* out) {
+  // One rectangle a register: (x0, y0, -x1, -y1) <= (box x1, y1, -x0, -y0) in all four lanes.
+  const __m256d sign = _mm256_set_pd(-1.0, -1.0, 1.0, 1.0);
+  const __m256d limit = _mm256_set_pd(-box.y0, -box.x0, box.y1, box.x1);
+  std::size_t kept = 0;
+  for (const RelRect& r : rects) {
+    const __m256d v = _mm256_loadu_pd(&r.x0);
+    _mm256_storeu_pd(&out[kept].x0, v);
+    const int lanes = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_mul_pd(v, sign), limit, _CMP_LE_OQ));
+    kept += static_cast<std::size_t>(lanes == 0xF);
+  }
+  _mm256_zeroupper();
+  return kept;
+}
+#else
+std::size_t RectsTouchingAvx2(std::span<const RelRect> rects, const RelRect& box, RelRect* out) {
+  return RectsTouchingScalar(rects, box, out);
+}
+#endif
+
+std::size_t RectsTouching(std::span<const RelRect> rects, const RelRect& box, RelRect* out) {
+  using CullFn = std::size_t(std::span<const RelRect>, const RelRect&, RelRect*);
+  static CullFn* const fastest = UseAvx2() ? &RectsTouchingAvx2 : &RectsTouchingScalar;
+  return fastest(rects, box, out);
+}
+
 void ScanBeams(std::span<const Vec2> directions, double max_range, std::span<const RelRect> rects,
                std::span<const RelDisc> discs, double* ranges) {
   // Chosen at the first call, then called through.

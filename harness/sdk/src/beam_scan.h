@@ -2,6 +2,7 @@
 // per AVX2 step, bit-identical.
 #pragma once
 
+#include <cstddef>
 #include <span>
 
 #include "crowdsim/geometry.h"
@@ -12,6 +13,7 @@ namespace crowdsim {
 struct RelRect {
   double x0, y0, x1, y1;
 };
+static_assert(sizeof(RelRect) == 4 * sizeof(double), "one AVX2 register a rectangle");
 
 /// A candidate disc of one scan, relative to the scan's origin; c = |centre|^2 - radius^2.
 struct RelDisc {
@@ -31,5 +33,12 @@ void ScanBeamsScalar(std::span<const Vec2> directions, double max_range,
 /// Four beams per AVX2 step (a short last group padded with its last beam). Needs HaveAvx2().
 void ScanBeamsAvx2(std::span<const Vec2> directions, double max_range,
                    std::span<const RelRect> rects, std::span<const RelDisc> discs, double* ranges);
+
+/// Copies to `out` the rectangles touching `box` (closed boxes), in order; returns how many.
+/// `out` holds rects.size(). Dispatches to the fastest kernel, all alike.
+std::size_t RectsTouching(std::span<const RelRect> rects, const RelRect& box, RelRect* out);
+std::size_t RectsTouchingScalar(std::span<const RelRect> rects, const RelRect& box, RelRect* out);
+/// One rectangle an AVX2 compare. Needs HaveAvx2().
+std::size_t RectsTouchingAvx2(std::span<const RelRect> rects, const RelRect& box, RelRect* out);
 
 }  // namespace crowdsim

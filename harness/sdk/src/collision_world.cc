@@ -29,7 +29,16 @@ struct Scratch {
   std::vector<RelRect> rects;
   std::vector<RelDisc> discs;
   std::vector<Vec2> directions;  // the angle overload of CastRays
+  std::vector<RelRect> group;    // the rectangles near four sight lines
+  std::vector<double> ranges;    // along the sight lines
 };
+
+// Sight lines' boxes grow by this (m): a rectangle beyond it cannot meet a line before its end,
+// whatever the rounding.
+constexpr double kSightPad = 1e-6;
+
+// Sight lines are culled in fours by their box from this many rectangles near the robot.
+constexpr std::size_t kSightCullFrom = 8;
 
 // Collects the rectangle index of every proxy the broadphase reports (its client object).
 struct IndexCollector final : btBroadphaseAabbCallback {
@@ -234,6 +243,59 @@ void CollisionWorld::CastRays(const Vec2& origin, std::span<const Vec2> world_di
   }
 
   ScanBeams(world_directions, max_range, s.rects, s.discs, ranges);
+}
+
+void CollisionWorld::SightLines(const Vec2& origin, std::span<const Vec2> ends, double* lengths,
+                                std::uint8_t* blocked) const {
+  Scratch& s = ThreadScratch<Scratch>();
+  s.directions.clear();
+  Rect box{origin, origin};
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const Vec2 to = ends[k] - origin;
+    lengths[k] = to.norm();
+    s.directions.push_back(lengths[k] > 0.0 ? Vec2(to / lengths[k]) : Vec2(1.0, 0.0));
+    box.min = box.min.cwiseMin(ends[k]);
+    box.max = box.max.cwiseMax(ends[k]);
+  }
+  s.ids.clear();
+  s.rects.clear();
+  if (impl_) impl_->Broadphase(box.Inflated(kSightPad), &s.ids);
+  for (int i : s.ids) {
+    const Rect& r = map_->rectangles[i];
+    s.rects.push_back({r.min.x() - origin.x(), r.min.y() - origin.y(), r.max.x() - origin.x(),
+                       r.max.y() - origin.y()});
+  }
+  const std::span<const Vec2> directions = s.directions;
+  // Few rectangles: one scan of every line (culling would cost more than it saves).
+  const bool cull = s.rects.size() > kSightCullFrom;
+  const std::size_t group_size = cull ? 4 : ends.size();
+  s.group.resize(s.rects.size());
+  s.ranges.resize(ends.size());
+  for (std::size_t first = 0; first < ends.size(); first += group_size) {
+    const std::size_t count = std::min(group_size, ends.size() - first);
+    std::span<const RelRect> near_rects = s.rects;
+    double farthest = 0.0;
+    for (std::size_t k = first; k < first + count; ++k) farthest = std::max(farthest, lengths[k]);
+    if (cull) {
+      // The four lines' box, relative to the origin, padded: only rectangles touching it can
+      // meet them before their ends.
+      RelRect near{-kSightPad, -kSightPad, kSightPad, kSightPad};
+      for (std::size_t k = first; k < first + count; ++k) {
+        const Vec2 e = ends[k] - origin;
+        near = {std::min(near.x0, e.x() - kSightPad), std::min(near.y0, e.y() - kSightPad),
+                std::max(near.x1, e.x() + kSightPad), std::max(near.y1, e.y() + kSightPad)};
+      }
+      near_rects = {s.group.data(), RectsTouching(s.rects, near, s.group.data())};
+    }
+    double* ranges = s.ranges.data() + first;
+    if (near_rects.empty()) {
+      std::fill(ranges, ranges + count, kInfinity);
+    } else {
+      ScanBeams(directions.subspan(first, count), farthest + 1.0, near_rects, {}, ranges);
+    }
+    for (std::size_t k = first; k < first + count; ++k)
+      blocked[k] = s.ranges[k] < lengths[k] ? 1 : 0;
+  }
 }
 
 void CollisionWorld::CastRaysBullet(const Vec2& origin, std::span<const double> world_angles,

@@ -154,27 +154,18 @@ namespace {
 
 // One thread's scratch for a reading's sight lines.
 struct SightScratch {
-  std::vector<Vec2> directions, ends;
-  std::vector<double> lengths, ranges;
-  std::vector<double> near;  // each person's nearest reach from the eye, m
+  std::vector<Vec2> ends;
+  std::vector<double> lengths;
+  std::vector<std::uint8_t> blocked;  // by a rectangle
+  std::vector<double> near;           // each person's nearest reach from the eye, m
 };
-
-// The sight line from `eye` to `end` joins the batch cast next.
-void AddLine(const Vec2& eye, const Vec2& end, SightScratch* s) {
-  const double length = (end - eye).norm();
-  s->directions.push_back(length > 0.0 ? Vec2((end - eye) / length) : Vec2(1.0, 0.0));
-  s->lengths.push_back(length);
-  s->ends.push_back(end);
-}
 
 }  // namespace
 
 void PersonSensor::Unoccluded(const SenseInput& in, std::vector<std::size_t>* candidates) const {
-  // Three sight lines a person (its centre, either edge of its disc), all cast in one scan: one
-  // broadphase query for the whole reading.
+  // Three sight lines a person (its centre, either edge of its disc), all tested in one query:
+  // one broadphase query for the whole reading.
   SightScratch& s = ThreadScratch<SightScratch>();
-  s.directions.clear();
-  s.lengths.clear();
   s.ends.clear();
   const Vec2& eye = in.frame.origin;
   for (const std::size_t i : *candidates) {
@@ -183,22 +174,22 @@ void PersonSensor::Unoccluded(const SenseInput& in, std::vector<std::size_t>* ca
     const double d = to.norm();
     const Vec2 side = d > 0.0 ? Vec2(Vec2(-to.y(), to.x()) * (h.radius / d)) : Vec2::Zero();
     for (const Vec2& end : {h.position, Vec2(h.position + side), Vec2(h.position - side)})
-      AddLine(eye, end, &s);
+      s.ends.push_back(end);
   }
   if (occlusion_ == Occlusion::kObstaclesAndPeople) {
     s.near.resize(in.humans.size());
     for (std::size_t j = 0; j < in.humans.size(); ++j)
       s.near[j] = (in.humans[j].position - eye).norm() - in.humans[j].radius;
   }
-  const double farthest = *std::max_element(s.lengths.begin(), s.lengths.end());
-  s.ranges.resize(s.directions.size());
-  in.world.CastRays(eye, s.directions, farthest + 1.0, {}, s.ranges.data());
+  s.lengths.resize(s.ends.size());
+  s.blocked.resize(s.ends.size());
+  in.world.SightLines(eye, s.ends, s.lengths.data(), s.blocked.data());
   std::size_t kept = 0;
   for (std::size_t c = 0; c < candidates->size(); ++c) {
     const std::size_t i = (*candidates)[c];
     bool seen = s.lengths[3 * c] <= in.humans[i].radius;  // touching: nothing lies between
     for (std::size_t k = 3 * c; k < 3 * c + 3 && !seen; ++k) {
-      if (s.ranges[k] < s.lengths[k]) continue;  // a rectangle first
+      if (s.blocked[k]) continue;  // a rectangle first
       seen = occlusion_ != Occlusion::kObstaclesAndPeople ||
              !PersonInTheWay(in, s.ends[k], s.lengths[k], i, s.near);
     }

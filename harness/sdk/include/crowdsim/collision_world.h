@@ -52,6 +52,12 @@ class CROWDSIM_SDK_API CollisionWorld {
   void CastRays(const Vec2& origin, std::span<const Vec2> world_directions, double max_range,
                 std::span<const Circle> discs, double* ranges) const;
 
+  /// Sight lines from `origin` to each of `ends`: lengths[k] = |ends[k] - origin|, blocked[k] = 1
+  /// when a rectangle meets the line nearer than its end (as CastRays along it finds), else 0.
+  /// Lines are culled four at a time by their bounding box: list neighbouring ones together.
+  void SightLines(const Vec2& origin, std::span<const Vec2> ends, double* lengths,
+                  std::uint8_t* blocked) const;
+
   /// Reference scan: btCollisionWorld::rayTest per beam, boxes only (slow; tests and benchmarks).
   /// Its first call builds Bullet's full world.
   void CastRaysBullet(const Vec2& origin, std::span<const double> world_angles, double max_range,
