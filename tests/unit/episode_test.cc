@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "scripted.h"
 
@@ -347,6 +348,60 @@ TEST(Episode, AHumanPolicyWithoutHeadingFrameGetsTheWorldAlignedFrame) {
   EXPECT_EQ(world.frame.sin_h, 0.0);
   EXPECT_EQ(world.frame.origin, world.position);
   EXPECT_EQ(turned.frame.origin, turned.position);
+}
+
+/// Moves at a fixed velocity and logs the frame and heading of every observation.
+class FrameLog final : public Policy {
+ public:
+  explicit FrameLog(Vec2 v) : v_(v) {}
+  Action Decide(const Observation& obs) override {
+    frames.push_back(obs.frame);
+    headings.push_back(obs.self.heading);
+    return Action{v_};
+  }
+  std::vector<Frame> frames;
+  std::vector<double> headings;
+
+ private:
+  Vec2 v_;
+};
+
+/// Asks for the whole history (the episode then keeps a frame a step) and reads nothing.
+class HistorySensor final : public Sensor {
+ public:
+  void Sense(const SenseInput&, SensorReading*) const override {}
+  int HistorySteps() const override { return -1; }
+};
+
+// The robot's frames come from the history's record when one is kept: the very frames and
+// headings of an episode that keeps none, step after step, over two episodes of a thread (the
+// second reuses the first's frames).
+TEST(Episode, KeepingAHistoryChangesNoFrameTheRobotSees) {
+  const Scenario sc =
+      MakeScenario(MakeMap({}), Vec2(0, -4), Vec2(0, 4), {{Vec2(-3, 0), Vec2(-3, 3)}});
+  const HistorySensor history;
+  std::vector<FrameLog> logs;
+  for (const int episode : {0, 1, 2}) {
+    FrameLog robot(Vec2(0.4, 0.5));  // off the goal's line: the heading turns every step
+    ConstantVelocityPolicy human(Vec2(0, 0.5));
+    EpisodeAgents agents{&robot, {&human}, {}, {}};
+    if (episode > 0) agents.sensors.push_back(MountedSensor{"history", &history});
+    Episode(sc, SimConfig{}, agents).Run();
+    logs.push_back(robot);
+  }
+  ASSERT_GT(logs[0].frames.size(), 5u);
+  for (const int episode : {1, 2}) {
+    const FrameLog& kept = logs[static_cast<std::size_t>(episode)];
+    ASSERT_EQ(kept.frames.size(), logs[0].frames.size());
+    for (std::size_t k = 0; k < kept.frames.size(); ++k) {
+      EXPECT_EQ(kept.frames[k].origin, logs[0].frames[k].origin) << k;
+      EXPECT_EQ(kept.frames[k].heading, logs[0].frames[k].heading) << k;
+      EXPECT_EQ(kept.frames[k].cos_h, logs[0].frames[k].cos_h) << k;
+      EXPECT_EQ(kept.frames[k].sin_h, logs[0].frames[k].sin_h) << k;
+      EXPECT_EQ(kept.headings[k], logs[0].headings[k]) << k;
+    }
+  }
+  EXPECT_NE(logs[0].frames.front().heading, logs[0].frames.back().heading);
 }
 
 TEST(Episode, MeaninglessScenariosAreRefusedWithTheReason) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "crowdsim/rng.h"
+#include "crowdsim/thread_scratch.h"
 #include "sim/decision_clock.h"
 
 namespace crowdsim {
@@ -16,6 +17,11 @@ namespace crowdsim {
 namespace {
 // Each episode's history id (SenseInput::history_id): unique in the process, never 0.
 std::atomic<std::uint64_t> next_history_id{1};
+
+// Finished episodes' history frames, this thread's: a new history reuses their vectors' memory
+// instead of allocating a frame a step. At most kSpareFrames kept.
+constexpr std::size_t kSpareFrames = 256;
+std::vector<SensedFrame>& SpareFrames() { return ThreadScratch<std::vector<SensedFrame>>(); }
 
 // A non-std::exception throw (`throw 42;`) is a policy_error too, not std::terminate.
 constexpr const char* kNonStandardException =
@@ -299,7 +305,13 @@ Episode::Episode(const Scenario& scenario, const SimConfig& sim, const EpisodeAg
   Record();
 }
 
-Episode::~Episode() = default;
+Episode::~Episode() {
+  std::vector<SensedFrame>& spare = SpareFrames();
+  for (SensedFrame& f : past_) {
+    if (spare.size() >= kSpareFrames) break;
+    spare.push_back(std::move(f));
+  }
+}
 
 void PresentPeople(const EpisodeFrame& f, std::vector<AgentState>* humans, std::vector<int>* ids) {
   ids->clear();
@@ -440,12 +452,18 @@ ExecutedMove Episode::Execute(const Action& action) const {
 }
 
 void Episode::FillRobotObservation() {
-  robot_.heading = RobotHeading(robot_, robot_.heading);
+  if (past_.size() == static_cast<std::size_t>(step_index_) + 1) {
+    // Record() derived this step's heading and frame from this very state: no second atan2.
+    robot_.heading = past_.back().robot.heading;
+    robot_obs_.frame = past_.back().frame;
+  } else {
+    robot_.heading = RobotHeading(robot_, robot_.heading);
+    robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
+  }
   robot_obs_.time = time_;
   robot_obs_.self = robot_;
   robot_obs_.linear = robot_linear_;
   robot_obs_.angular = robot_angular_;
-  robot_obs_.frame = Frame::Make(robot_.position, robot_.heading);
   Sense(robot_, robot_obs_.frame, present_humans(), present_ids_, step_index_,
         &robot_obs_.readings);
   robot_obs_.lookahead = nullptr;
@@ -612,7 +630,14 @@ std::span<const SensedFrame> Episode::Past(int step) const {
 void Episode::Record() {
   if (history_steps_ != 0) {
     // The state as the robot senses it at this step (FillRobotObservation's heading and frame).
-    SensedFrame& f = past_.emplace_back();
+    std::vector<SensedFrame>& spare = SpareFrames();
+    if (spare.empty()) {
+      past_.emplace_back();
+    } else {
+      past_.push_back(std::move(spare.back()));
+      spare.pop_back();
+    }
+    SensedFrame& f = past_.back();
     f.robot = robot_;
     f.robot.heading = RobotHeading(robot_, robot_.heading);
     f.frame = Frame::Make(f.robot.position, f.robot.heading);

@@ -152,20 +152,42 @@ bool PersonSensor::InRangeAndView(const SenseInput& in, std::size_t i) const {
 
 namespace {
 
-// One thread's scratch for a reading's sight lines.
-struct SightScratch {
-  std::vector<Vec2> ends;
-  std::vector<double> lengths;
-  std::vector<std::uint8_t> blocked;  // by a rectangle
-  std::vector<double> near;           // each person's nearest reach from the eye, m
+// The tracker's state after step k is a pure function of the episode's seed and frames 0..k:
+// this thread keeps the last one per (sensor, history), so that a reading replays only the
+// frames added since instead of the whole episode. The result is the same.
+struct Memo {
+  const void* sensor = nullptr;
+  std::uint64_t history_id = 0;
+  std::uint64_t noise_seed = 0;
+  int step = -1;  // the last past step folded into `state` (-1: before step 0, no tracks)
+  TrackerState state;
+  // The last real reading's state after its own step, with what it sensed: it becomes `state`
+  // once a past shows the same at that step (-1: none).
+  int pending_step = -1;
+  Frame frame;
+  std::vector<AgentState> humans;
+  TrackerState pending;
 };
 
 }  // namespace
 
-void PersonSensor::Unoccluded(const SenseInput& in, std::vector<std::size_t>* candidates) const {
+// One thread's buffers and tracker memos: one thread-local lookup a reading.
+struct PersonSensor::Scratch {
+  std::vector<std::size_t> detected;  // candidates, then the seen
+  std::vector<Vec2> ends;             // of the sight lines
+  std::vector<double> lengths;
+  std::vector<std::uint8_t> blocked;  // by a rectangle
+  std::vector<double> near;           // each person's nearest reach from the eye, m
+  std::vector<Detection> now, past;   // this step's detections, a replayed step's
+  TrackerState state;
+  std::array<Memo, 4> memos;
+  std::size_t next_memo = 0;
+};
+
+void PersonSensor::Unoccluded(const SenseInput& in, Scratch& s) const {
   // Three sight lines a person (its centre, either edge of its disc), all tested in one query:
   // one broadphase query for the whole reading.
-  SightScratch& s = ThreadScratch<SightScratch>();
+  std::vector<std::size_t>* candidates = &s.detected;
   s.ends.clear();
   const Vec2& eye = in.frame.origin;
   for (const std::size_t i : *candidates) {
@@ -210,19 +232,18 @@ bool PersonSensor::PersonInTheWay(const SenseInput& in, const Vec2& end, double 
   return false;
 }
 
-void PersonSensor::Detect(const SenseInput& in, std::vector<Detection>* out) const {
+void PersonSensor::Detect(const SenseInput& in, Scratch& s, std::vector<Detection>* out) const {
   out->clear();
   const auto observe = [&in](const AgentState& h) {
     return PersonObservation{in.frame.PointToLocal(h.position), in.frame.VectorToLocal(h.velocity),
                              h.radius};
   };
-  struct Detected {};
-  std::vector<std::size_t>& detected = ThreadScratch<std::vector<std::size_t>, Detected>();
+  std::vector<std::size_t>& detected = s.detected;
   detected.clear();
   for (std::size_t i = 0; i < in.humans.size(); ++i) {
     if (InRangeAndView(in, i)) detected.push_back(i);
   }
-  if (occlusion_ != Occlusion::kNone && !detected.empty()) Unoccluded(in, &detected);
+  if (occlusion_ != Occlusion::kNone && !detected.empty()) Unoccluded(in, s);
   const bool noisy = detection_prob_ < 1.0 || position_noise_ > 0.0;
   for (const std::size_t i : detected) {
     Detection d;
@@ -246,26 +267,8 @@ void PersonSensor::Detect(const SenseInput& in, std::vector<Detection>* out) con
 
 namespace {
 
-// The tracker's state after step k is a pure function of the episode's seed and frames 0..k:
-// this thread keeps the last one per (sensor, history), so that a reading replays only the
-// frames added since instead of the whole episode. The result is the same.
-struct Memo {
-  const void* sensor = nullptr;
-  std::uint64_t history_id = 0;
-  std::uint64_t noise_seed = 0;
-  int step = -1;  // the last past step folded into `state` (-1: before step 0, no tracks)
-  TrackerState state;
-  // The last real reading's state after its own step, with what it sensed: it becomes `state`
-  // once a past shows the same at that step (-1: none).
-  int pending_step = -1;
-  Frame frame;
-  std::vector<AgentState> humans;
-  TrackerState pending;
-};
-
-Memo* FindMemo(const void* sensor, const SenseInput& in) {
-  thread_local std::array<Memo, 4> memos;
-  thread_local std::size_t next = 0;
+Memo* FindMemo(std::array<Memo, 4>& memos, std::size_t& next, const void* sensor,
+               const SenseInput& in) {
   if (in.history_id == 0) return nullptr;
   for (Memo& m : memos) {
     if (m.sensor == sensor && m.history_id == in.history_id && m.noise_seed == in.noise_seed) {
@@ -277,8 +280,9 @@ Memo* FindMemo(const void* sensor, const SenseInput& in) {
   m.sensor = sensor;
   m.history_id = in.history_id;
   m.noise_seed = in.noise_seed;
-  m.step = -1;  // the state before step 0: no tracks
-  m.state = TrackerState{};
+  m.step = -1;  // the state before step 0: no tracks (cleared, keeping the vector's memory)
+  m.state.tracks.clear();
+  m.state.next_id = 0;
   m.pending_step = -1;
   return &m;
 }
@@ -304,9 +308,10 @@ void Assign(TrackerState* to, const TrackerState& from) {
 
 }  // namespace
 
-void PersonSensor::TrackedBefore(const SenseInput& in, TrackerState* state) const {
+void PersonSensor::TrackedBefore(const SenseInput& in, Scratch& s) const {
+  TrackerState* state = &s.state;
   const int first = in.step - static_cast<int>(in.past.size());  // the oldest frame's step
-  Memo* memo = FindMemo(this, in);
+  Memo* memo = FindMemo(s.memos, s.next_memo, this, in);
   if (memo != nullptr && memo->pending_step >= first && memo->pending_step < in.step) {
     // The past now holds the pending reading's step: its state counts if it sensed the same.
     if (SameState(*memo, in.past[static_cast<std::size_t>(memo->pending_step - first)])) {
@@ -322,13 +327,12 @@ void PersonSensor::TrackedBefore(const SenseInput& in, TrackerState* state) cons
     Assign(state, memo->state);
     from = memo->step + 1;
   }
-  struct Past {};
-  std::vector<Detection>& detections = ThreadScratch<std::vector<Detection>, Past>();
+  std::vector<Detection>& detections = s.past;
   for (int k = from; k < in.step; ++k) {
     const SensedFrame& f = in.past[static_cast<std::size_t>(k - first)];
     SenseInput then{f.robot, f.frame, f.humans, in.world, in.noise_seed, k, in.time_step};
     then.human_ids = f.human_ids;
-    Detect(then, &detections);
+    Detect(then, s, &detections);
     TrackStep(tracker_, k, &detections, state);
   }
   if (memo != nullptr && from < in.step) {
@@ -337,8 +341,9 @@ void PersonSensor::TrackedBefore(const SenseInput& in, TrackerState* state) cons
   }
 }
 
-void PersonSensor::KeepPending(const SenseInput& in, const TrackerState& state) const {
-  Memo* memo = FindMemo(this, in);
+void PersonSensor::KeepPending(const SenseInput& in, Scratch& s) const {
+  const TrackerState& state = s.state;
+  Memo* memo = FindMemo(s.memos, s.next_memo, this, in);
   if (memo == nullptr) return;
   memo->pending_step = in.step;
   memo->frame = in.frame;
@@ -362,22 +367,21 @@ void PersonSensor::Sense(const SenseInput& in, SensorReading* out) const {
     }
     return;
   }
-  struct Now {};
-  std::vector<Detection>& detections = ThreadScratch<std::vector<Detection>, Now>();
+  Scratch& s = ThreadScratch<Scratch>();
+  std::vector<Detection>& detections = s.now;
   if (estimate_velocity_ || track_) {
     // The tracker over the past, then this step.
-    TrackerState& state = ThreadScratch<TrackerState>();
-    TrackedBefore(in, &state);
-    Detect(in, &detections);
-    TrackStep(tracker_, in.step, &detections, &state);
+    TrackedBefore(in, s);
+    Detect(in, s, &detections);
+    TrackStep(tracker_, in.step, &detections, &s.state);
     // A real step's state is the next reading's past: kept, checked against it then.
-    if (!in.lookahead) KeepPending(in, state);
+    if (!in.lookahead) KeepPending(in, s);
     for (Detection& d : detections) {
       if (estimate_velocity_) d.seen.velocity = in.frame.VectorToLocal(d.velocity);
       if (track_) d.seen.track_id = d.track;
     }
   } else {
-    Detect(in, &detections);
+    Detect(in, s, &detections);
   }
   // The detected ones only: those beyond the reading's last size are added (sizing it to the
   // whole crowd would construct and drop the others every step).

@@ -27,18 +27,20 @@ class PersonSensor final : public Sensor {
   int HistorySteps() const override;
 
  private:
+  struct Scratch;  // one thread's buffers and tracker memos (person_sensor.cc)
+
   /// This step's detections (in range, view and sight, not missed, noisy) and phantoms.
-  void Detect(const SenseInput& in, std::vector<Detection>* out) const;
-  /// The tracker's state after the last of `in.past` (replayed, or continued from this thread's
-  /// memo of the same history).
-  void TrackedBefore(const SenseInput& in, TrackerState* state) const;
-  /// Keeps `state`, the tracker's after this real (not lookahead) reading, for the next one.
-  void KeepPending(const SenseInput& in, const TrackerState& state) const;
+  void Detect(const SenseInput& in, Scratch& s, std::vector<Detection>* out) const;
+  /// s.state: the tracker's state after the last of `in.past` (replayed, or continued from this
+  /// thread's memo of the same history).
+  void TrackedBefore(const SenseInput& in, Scratch& s) const;
+  /// Keeps s.state, the tracker's after this real (not lookahead) reading, for the next one.
+  void KeepPending(const SenseInput& in, Scratch& s) const;
   /// Whether human `i` lies within max_range and the field of view.
   bool InRangeAndView(const SenseInput& in, std::size_t i) const;
-  /// Keeps the `candidates` a sight line from the robot's centre reaches (the centre or either
-  /// edge of the disc), in order.
-  void Unoccluded(const SenseInput& in, std::vector<std::size_t>* candidates) const;
+  /// Keeps the candidates (s.detected) a sight line from the robot's centre reaches (the centre
+  /// or either edge of the disc), in order.
+  void Unoccluded(const SenseInput& in, Scratch& s) const;
   /// Whether another person stands on the sight line to `end` (on human `target`), `length` m;
   /// `near`: each person's distance from the robot's centre less its radius.
   bool PersonInTheWay(const SenseInput& in, const Vec2& end, double length, std::size_t target,

@@ -20,6 +20,13 @@ struct Pair {
   }
 };
 
+// One thread's buffers for a step's association.
+struct Scratch {
+  std::vector<char> matched;  // per detection
+  std::vector<char> taken;    // per track
+  std::vector<Pair> pairs;
+};
+
 void Continue(const TrackerConfig& config, int step, Track* t, Detection* d) {
   if (!(config.time_step > 0.0)) {
     throw std::invalid_argument(
@@ -36,8 +43,8 @@ void Continue(const TrackerConfig& config, int step, Track* t, Detection* d) {
 void TrackStep(const TrackerConfig& config, int step, std::vector<Detection>* detections,
                TrackerState* state) {
   std::vector<Track>& tracks = state->tracks;
-  struct Matched {};
-  std::vector<char>& matched = ThreadScratch<std::vector<char>, Matched>();
+  Scratch& scratch = ThreadScratch<Scratch>();  // one lookup for the three buffers
+  std::vector<char>& matched = scratch.matched;
   matched.assign(detections->size(), 0);
   if (config.association == Association::kIdentity) {
     for (std::size_t k = 0; k < detections->size(); ++k) {
@@ -53,8 +60,7 @@ void TrackStep(const TrackerConfig& config, int step, std::vector<Detection>* de
     }
   } else {
     // Every (track, detection) within the gate, nearest first; each side taken once.
-    struct Pairs {};
-    std::vector<Pair>& pairs = ThreadScratch<std::vector<Pair>, Pairs>();
+    std::vector<Pair>& pairs = scratch.pairs;
     pairs.clear();
     const double gate2 = config.gate * config.gate;
     for (std::size_t t = 0; t < tracks.size(); ++t) {
@@ -64,8 +70,7 @@ void TrackStep(const TrackerConfig& config, int step, std::vector<Detection>* de
       }
     }
     std::sort(pairs.begin(), pairs.end());
-    struct Taken {};
-    std::vector<char>& taken = ThreadScratch<std::vector<char>, Taken>();
+    std::vector<char>& taken = scratch.taken;
     taken.assign(tracks.size(), 0);
     for (const Pair& p : pairs) {
       if (taken[p.track] || matched[p.detection]) continue;
