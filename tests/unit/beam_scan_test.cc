@@ -149,7 +149,7 @@ TEST_F(BeamScanTest, AxisBeamsEdgesInsidesAndGrazesGiveTheSameBits) {
   ExpectSameBits({{}, rects, discs}, 5.0, "no beams");
 }
 
-// The sight lines' cull keeps exactly the rectangles a closed-box test keeps, in order, in
+// The culls keep exactly the rectangles (or their indices) a closed-box test keeps, in order, in
 // either kernel: shared edges and corners touch, a gap of one ulp does not.
 TEST_F(BeamScanTest, CullKeepsTheTouchingRectanglesInOrder) {
   std::mt19937_64 rng(5);
@@ -167,9 +167,13 @@ TEST_F(BeamScanTest, CullKeepsTheTouchingRectanglesInOrder) {
       rects.push_back(r);
     }
     std::vector<RelRect> expected;
-    for (const RelRect& r : rects) {
-      if (r.x0 <= box.x1 && box.x0 <= r.x1 && r.y0 <= box.y1 && box.y0 <= r.y1)
+    std::vector<int> expected_ids;
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+      const RelRect& r = rects[i];
+      if (r.x0 <= box.x1 && box.x0 <= r.x1 && r.y0 <= box.y1 && box.y0 <= r.y1) {
         expected.push_back(r);
+        expected_ids.push_back(static_cast<int>(i));
+      }
     }
     for (const auto cull : {&RectsTouchingScalar, &RectsTouchingAvx2, &RectsTouching}) {
       std::vector<RelRect> out(rects.size());
@@ -180,7 +184,55 @@ TEST_F(BeamScanTest, CullKeepsTheTouchingRectanglesInOrder) {
         EXPECT_EQ(out[k].y1, expected[k].y1);
       }
     }
+    for (const auto cull : {&RectIdsTouchingScalar, &RectIdsTouchingAvx2, &RectIdsTouching}) {
+      std::vector<int> ids(rects.size());
+      ids.resize(cull(rects, box, ids.data()));
+      EXPECT_EQ(ids, expected_ids) << "trial " << trial;
+    }
   }
+}
+
+// The sight lines' query, culled in fours (many rectangles) or not (few), in either kernel pair
+// and dispatched, blocks exactly the lines a one-beam scan along each finds blocked before
+// their end; lines along an axis, ending on a corner and of zero length included.
+TEST_F(BeamScanTest, SightLinesBlockWhereAOneBeamScanHitsFirst) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> pos(-6.0, 6.0), size(0.0, 2.0);
+  int blocked_lines = 0, clear_lines = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<RelRect> rects;
+    for (int i = 0; i < 1 + trial % 20; ++i) {
+      const double x = pos(rng), y = pos(rng);
+      rects.push_back({x, y, x + size(rng), y + size(rng)});
+    }
+    std::vector<Vec2> offsets, directions;
+    std::vector<double> lengths;
+    for (int k = 0; k < 1 + trial % 23; ++k) {
+      Vec2 end(pos(rng), pos(rng));
+      if (k % 5 == 1) end.x() = 0.0;  // along the y axis
+      if (k % 7 == 2) end = Vec2(rects[0].x0, rects[0].y1);
+      if (k % 11 == 3) end = Vec2::Zero();
+      offsets.push_back(end);
+      lengths.push_back(end.norm());
+      directions.push_back(lengths.back() > 0.0 ? Vec2(end / lengths.back()) : Vec2(1.0, 0.0));
+    }
+    std::vector<std::uint8_t> expected(offsets.size());
+    for (std::size_t k = 0; k < offsets.size(); ++k) {
+      double range = 0.0;
+      ScanBeamsScalar(std::span<const Vec2>(&directions[k], 1), lengths[k] + 1.0, rects, {},
+                      &range);
+      expected[k] = range < lengths[k] ? 1 : 0;
+      (expected[k] ? blocked_lines : clear_lines) += 1;
+    }
+    for (const auto scan : {&ScanSightLinesScalar, &ScanSightLinesAvx2, &ScanSightLines}) {
+      std::vector<RelRect> near(rects.size());
+      std::vector<std::uint8_t> blocked(offsets.size(), 2);
+      scan(offsets, directions, lengths.data(), rects, near.data(), blocked.data());
+      EXPECT_EQ(blocked, expected) << "trial " << trial << ", " << rects.size() << " rectangles";
+    }
+  }
+  EXPECT_GT(blocked_lines, 300);
+  EXPECT_GT(clear_lines, 300);
 }
 
 TEST(BeamScanDispatch, TheChosenKernelGivesTheScalarBits) {

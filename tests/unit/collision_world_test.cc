@@ -94,39 +94,76 @@ TEST(CollisionWorld, SweepFreeMotionAndStartOverlap) {
   EXPECT_EQ(still.rect, -1);
 }
 
-// The broadphase cull never drops a contact: compare with a sweep over every rectangle.
-TEST(CollisionWorld, SweepMatchesBruteForce) {
-  std::mt19937_64 rng(11);
+std::vector<Rect> RandomRects(int count, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> pos(-8.0, 8.0);
   std::uniform_real_distribution<double> size(0.001, 2.0);
   std::vector<Rect> rects;
-  for (int i = 0; i < 40; ++i) {
+  for (int i = 0; i < count; ++i) {
     const double x = pos(rng), y = pos(rng);
     rects.push_back(Rect::FromCorners(x, y, x + size(rng), y + size(rng)));
   }
-  const auto map = MakeMap(rects);
-  CollisionWorld world(map);
-  for (int trial = 0; trial < 2000; ++trial) {
-    const Vec2 a(pos(rng), pos(rng));
-    const Vec2 b = a + Vec2(pos(rng), pos(rng)) * 0.5;
-    double best = kInfinity;
-    for (const Rect& r : rects) best = std::min(best, SweptDiscRectTime(a, b, 0.3, r));
-    const SweepHit hit = world.SweepDisc(a, b, 0.3);
-    EXPECT_EQ(hit.fraction, best) << trial;
-    if (best != kInfinity) {
-      EXPECT_EQ(SweptDiscRectTime(a, b, 0.3, rects[hit.rect]), best);
+  return rects;
+}
+
+// The broadphase cull never drops a contact: compare with a sweep over every rectangle, on maps
+// culled by testing every box (40) and by Bullet's tree (300).
+TEST(CollisionWorld, SweepMatchesBruteForce) {
+  for (const int rect_count : {40, 300}) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> pos(-8.0, 8.0);
+    const std::vector<Rect> rects = RandomRects(rect_count, rng);
+    CollisionWorld world(MakeMap(rects));
+    for (int trial = 0; trial < 2000; ++trial) {
+      const Vec2 a(pos(rng), pos(rng));
+      const Vec2 b = a + Vec2(pos(rng), pos(rng)) * 0.5;
+      double best = kInfinity;
+      for (const Rect& r : rects) best = std::min(best, SweptDiscRectTime(a, b, 0.3, r));
+      const SweepHit hit = world.SweepDisc(a, b, 0.3);
+      EXPECT_EQ(hit.fraction, best) << rect_count << " rectangles, trial " << trial;
+      if (best != kInfinity) {
+        EXPECT_EQ(SweptDiscRectTime(a, b, 0.3, rects[hit.rect]), best);
+      }
+    }
+  }
+}
+
+// Either cull (every box on small maps, Bullet's tree on large ones) finds exactly the touching
+// rectangles, on both sides of the size where the cull changes.
+TEST(CollisionWorld, QueryRectsMatchesBruteForceOnSmallAndLargeMaps) {
+  for (const int rect_count : {1, 64, 65, 300}) {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> pos(-9.0, 9.0);
+    std::uniform_real_distribution<double> size(0.0, 3.0);
+    const std::vector<Rect> rects = RandomRects(rect_count, rng);
+    CollisionWorld world(MakeMap(rects));
+    std::vector<int> ids;
+    for (int trial = 0; trial < 500; ++trial) {
+      const double x = pos(rng), y = pos(rng);
+      Rect box = Rect::FromCorners(x, y, x + size(rng), y + size(rng));
+      if (trial % 4 == 1) box.min.x() = box.max.x() = rects[trial % rect_count].max.x();  // edge
+      std::vector<int> expected;
+      for (int i = 0; i < rect_count; ++i) {
+        const Rect& r = rects[static_cast<std::size_t>(i)];
+        if (r.min.x() <= box.max.x() && box.min.x() <= r.max.x() && r.min.y() <= box.max.y() &&
+            box.min.y() <= r.max.y())
+          expected.push_back(i);
+      }
+      world.QueryRects(box, &ids);
+      EXPECT_EQ(ids, expected) << rect_count << " rectangles, trial " << trial;
     }
   }
 }
 
 // The sight-line query decides as a ray cast along each line would, axis-aligned, grazing and
 // zero-length lines included, whatever lines share its groups of four; among few rectangles
-// (one scan of every line) and many (culled in fours).
+// (one scan of every line) and many (culled in fours), with either broadphase.
 TEST(CollisionWorld, SightLinesMatchRayCasts) {
-  for (const int rect_count : {5, 40}) {
+  for (const int rect_count : {5, 40, 300}) {
     std::mt19937_64 rng(12);
     std::uniform_real_distribution<double> pos(-8.0, 8.0);
-    std::uniform_real_distribution<double> size(0.001, rect_count < 10 ? 5.0 : 2.0);
+    std::uniform_real_distribution<double> size(0.001, rect_count < 10    ? 5.0
+                                                       : rect_count < 100 ? 2.0
+                                                                          : 0.5);
     std::vector<Rect> rects;
     for (int i = 0; i < rect_count; ++i) {
       const double x = pos(rng), y = pos(rng);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 #include "crowdsim/avx2_lanes.h"
 #include "crowdsim/vector_units.h"
@@ -134,11 +135,19 @@ void ScanBeamsAvx2(std::span<const Vec2> directions, double max_range,
 
 #endif
 
-std::size_t RectsTouchingScalar(std::span<const RelRect> rects, const RelRect& box, RelRect* out) {
-  // Every rectangle is written, the next one over it unless it touches: no branch.
+namespace {
+
+// The culls' one loop, writing rectangles (Out = RelRect) or their indices (Out = int): each is
+// written at slot `kept`, which the next one overwrites unless it touches `box` (no branch).
+template <class Out>
+std::size_t CullScalar(std::span<const RelRect> rects, const RelRect& box, Out* out) {
   std::size_t kept = 0;
   for (const RelRect& r : rects) {
-    out[kept] = r;
+    if constexpr (std::is_same_v<Out, RelRect>) {
+      out[kept] = r;
+    } else {
+      out[kept] = static_cast<int>(&r - rects.data());
+    }
     kept += static_cast<std::size_t>((r.x0 <= box.x1) & (box.x0 <= r.x1) & (r.y0 <= box.y1) &
                                      (box.y0 <= r.y1));
   }
@@ -146,24 +155,53 @@ std::size_t RectsTouchingScalar(std::span<const RelRect> rects, const RelRect& b
 }
 
 #ifdef CROWDSIM_AVX2_LANES
-[[gnu::target("avx2")]] std::size_t RectsTouchingAvx2(std::span<const RelRect> rects,
-                                                      const RelRect& box, RelRect* out) {
+template <class Out>
+[[gnu::target("avx2")]] std::size_t CullAvx2(std::span<const RelRect> rects, const RelRect& box,
+                                             Out* out) {
   // One rectangle a register: (x0, y0, -x1, -y1) <= (box x1, y1, -x0, -y0) in all four lanes.
   const __m256d sign = _mm256_set_pd(-1.0, -1.0, 1.0, 1.0);
   const __m256d limit = _mm256_set_pd(-box.y0, -box.x0, box.y1, box.x1);
   std::size_t kept = 0;
   for (const RelRect& r : rects) {
     const __m256d v = _mm256_loadu_pd(&r.x0);
-    _mm256_storeu_pd(&out[kept].x0, v);
+    if constexpr (std::is_same_v<Out, RelRect>) {
+      _mm256_storeu_pd(&out[kept].x0, v);
+    } else {
+      out[kept] = static_cast<int>(&r - rects.data());
+    }
     const int lanes = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_mul_pd(v, sign), limit, _CMP_LE_OQ));
     kept += static_cast<std::size_t>(lanes == 0xF);
   }
   _mm256_zeroupper();
   return kept;
 }
+#endif
+
+}  // namespace
+
+std::size_t RectsTouchingScalar(std::span<const RelRect> rects, const RelRect& box, RelRect* out) {
+  return CullScalar(rects, box, out);
+}
+
+std::size_t RectIdsTouchingScalar(std::span<const RelRect> rects, const RelRect& box, int* ids) {
+  return CullScalar(rects, box, ids);
+}
+
+#ifdef CROWDSIM_AVX2_LANES
+std::size_t RectsTouchingAvx2(std::span<const RelRect> rects, const RelRect& box, RelRect* out) {
+  return CullAvx2(rects, box, out);
+}
+
+std::size_t RectIdsTouchingAvx2(std::span<const RelRect> rects, const RelRect& box, int* ids) {
+  return CullAvx2(rects, box, ids);
+}
 #else
 std::size_t RectsTouchingAvx2(std::span<const RelRect> rects, const RelRect& box, RelRect* out) {
-  return RectsTouchingScalar(rects, box, out);
+  return CullScalar(rects, box, out);
+}
+
+std::size_t RectIdsTouchingAvx2(std::span<const RelRect> rects, const RelRect& box, int* ids) {
+  return CullScalar(rects, box, ids);
 }
 #endif
 
@@ -173,6 +211,12 @@ std::size_t RectsTouching(std::span<const RelRect> rects, const RelRect& box, Re
   return fastest(rects, box, out);
 }
 
+std::size_t RectIdsTouching(std::span<const RelRect> rects, const RelRect& box, int* ids) {
+  using CullFn = std::size_t(std::span<const RelRect>, const RelRect&, int*);
+  static CullFn* const fastest = UseAvx2() ? &RectIdsTouchingAvx2 : &RectIdsTouchingScalar;
+  return fastest(rects, box, ids);
+}
+
 void ScanBeams(std::span<const Vec2> directions, double max_range, std::span<const RelRect> rects,
                std::span<const RelDisc> discs, double* ranges) {
   // Chosen at the first call, then called through.
@@ -180,6 +224,80 @@ void ScanBeams(std::span<const Vec2> directions, double max_range, std::span<con
                       std::span<const RelDisc>, double*);
   static ScanFn* const fastest = UseAvx2() ? &ScanBeamsAvx2 : &ScanBeamsScalar;
   fastest(directions, max_range, rects, discs, ranges);
+}
+
+namespace {
+
+// Sight lines are culled in fours by their box from this many rectangles; fewer are scanned
+// against every line, up to 64 lines a scan.
+constexpr std::size_t kSightCullFrom = 8;
+
+using CullFn = std::size_t(std::span<const RelRect>, const RelRect&, RelRect*);
+using ScanFn = void(std::span<const Vec2>, double, std::span<const RelRect>,
+                    std::span<const RelDisc>, double*);
+
+// The lines' box relative to the origin (which it holds), padded, and their longest.
+RelRect SightBox(std::span<const Vec2> offsets, const double* lengths, double* farthest) {
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+  *farthest = 0.0;
+  for (std::size_t k = 0; k < offsets.size(); ++k) {
+    lo = lo.cwiseMin(offsets[k]);
+    hi = hi.cwiseMax(offsets[k]);
+    *farthest = std::max(*farthest, lengths[k]);
+  }
+  return {lo.x() - kSightPad, lo.y() - kSightPad, hi.x() + kSightPad, hi.y() + kSightPad};
+}
+
+// The sight lines' group loop over one pair of kernels, called directly: only rectangles
+// touching a group's box can meet its lines before their ends.
+template <CullFn* Cull, ScanFn* Scan>
+void SightLinesWith(std::span<const Vec2> offsets, std::span<const Vec2> directions,
+                    const double* lengths, std::span<const RelRect> rects, RelRect* near,
+                    std::uint8_t* blocked) {
+  const bool cull = rects.size() > kSightCullFrom;
+  constexpr std::size_t kMaxGroup = 64;
+  const std::size_t group_size = cull ? 4 : kMaxGroup;
+  const std::size_t n = directions.size();
+  for (std::size_t first = 0; first < n; first += group_size) {
+    const std::size_t count = std::min(group_size, n - first);
+    double farthest = 0.0;
+    const RelRect box = SightBox(offsets.subspan(first, count), lengths + first, &farthest);
+    std::span<const RelRect> near_rects = rects;
+    if (cull) near_rects = {near, Cull(rects, box, near)};
+    double ranges[kMaxGroup];
+    if (near_rects.empty()) {
+      std::fill(ranges, ranges + count, kInfinity);
+    } else {
+      Scan(directions.subspan(first, count), farthest + 1.0, near_rects, {}, ranges);
+    }
+    for (std::size_t k = 0; k < count; ++k)
+      blocked[first + k] = ranges[k] < lengths[first + k] ? 1 : 0;
+  }
+}
+
+}  // namespace
+
+void ScanSightLinesScalar(std::span<const Vec2> offsets, std::span<const Vec2> directions,
+                          const double* lengths, std::span<const RelRect> rects, RelRect* near,
+                          std::uint8_t* blocked) {
+  SightLinesWith<&RectsTouchingScalar, &ScanBeamsScalar>(offsets, directions, lengths, rects, near,
+                                                         blocked);
+}
+
+void ScanSightLinesAvx2(std::span<const Vec2> offsets, std::span<const Vec2> directions,
+                        const double* lengths, std::span<const RelRect> rects, RelRect* near,
+                        std::uint8_t* blocked) {
+  SightLinesWith<&RectsTouchingAvx2, &ScanBeamsAvx2>(offsets, directions, lengths, rects, near,
+                                                     blocked);
+}
+
+void ScanSightLines(std::span<const Vec2> offsets, std::span<const Vec2> directions,
+                    const double* lengths, std::span<const RelRect> rects, RelRect* near,
+                    std::uint8_t* blocked) {
+  using SightFn = void(std::span<const Vec2>, std::span<const Vec2>, const double*,
+                       std::span<const RelRect>, RelRect*, std::uint8_t*);
+  static SightFn* const fastest = UseAvx2() ? &ScanSightLinesAvx2 : &ScanSightLinesScalar;
+  fastest(offsets, directions, lengths, rects, near, blocked);
 }
 
 }  // namespace crowdsim

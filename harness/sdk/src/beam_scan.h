@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 
 #include "crowdsim/geometry.h"
@@ -40,5 +41,29 @@ std::size_t RectsTouching(std::span<const RelRect> rects, const RelRect& box, Re
 std::size_t RectsTouchingScalar(std::span<const RelRect> rects, const RelRect& box, RelRect* out);
 /// One rectangle an AVX2 compare. Needs HaveAvx2().
 std::size_t RectsTouchingAvx2(std::span<const RelRect> rects, const RelRect& box, RelRect* out);
+
+/// The same cull writing the touching rectangles' indices to `ids` (holds rects.size()).
+std::size_t RectIdsTouching(std::span<const RelRect> rects, const RelRect& box, int* ids);
+std::size_t RectIdsTouchingScalar(std::span<const RelRect> rects, const RelRect& box, int* ids);
+std::size_t RectIdsTouchingAvx2(std::span<const RelRect> rects, const RelRect& box, int* ids);
+
+/// Sight lines' boxes grow by this (m): a rectangle beyond it cannot meet a line before its end,
+/// whatever the rounding.
+inline constexpr double kSightPad = 1e-6;
+
+/// blocked[k] = 1 when one of `rects` meets the line along unit directions[k] nearer than
+/// lengths[k] (as ScanBeams along it finds), else 0; offsets[k] is the line's end relative to the
+/// origin. Among more than 8 rectangles, lines are culled four at a time by their box into `near`
+/// (holds rects.size()). Dispatches to the fastest kernels, all alike.
+void ScanSightLines(std::span<const Vec2> offsets, std::span<const Vec2> directions,
+                    const double* lengths, std::span<const RelRect> rects, RelRect* near,
+                    std::uint8_t* blocked);
+void ScanSightLinesScalar(std::span<const Vec2> offsets, std::span<const Vec2> directions,
+                          const double* lengths, std::span<const RelRect> rects, RelRect* near,
+                          std::uint8_t* blocked);
+/// With the AVX2 cull and scan. Needs HaveAvx2().
+void ScanSightLinesAvx2(std::span<const Vec2> offsets, std::span<const Vec2> directions,
+                        const double* lengths, std::span<const RelRect> rects, RelRect* near,
+                        std::uint8_t* blocked);
 
 }  // namespace crowdsim

@@ -30,15 +30,12 @@ struct Scratch {
   std::vector<RelDisc> discs;
   std::vector<Vec2> directions;  // the angle overload of CastRays
   std::vector<RelRect> group;    // the rectangles near four sight lines
-  std::vector<double> ranges;    // along the sight lines
+  std::vector<Vec2> offsets;     // of the sight lines' ends from their origin
 };
 
-// Sight lines' boxes grow by this (m): a rectangle beyond it cannot meet a line before its end,
-// whatever the rounding.
-constexpr double kSightPad = 1e-6;
-
-// Sight lines are culled in fours by their box from this many rectangles near the robot.
-constexpr std::size_t kSightCullFrom = 8;
+// Up to this many rectangles, a query tests every box (one AVX2 compare each) instead of walking
+// Bullet's tree, whose traversal costs more on small maps (tests/bench/lidar_bench.cc).
+constexpr std::size_t kLinearCullUpTo = 64;
 
 // Collects the rectangle index of every proxy the broadphase reports (its client object).
 struct IndexCollector final : btBroadphaseAabbCallback {
@@ -106,9 +103,14 @@ struct BulletReferenceWorld {
   std::vector<std::unique_ptr<btCollisionObject>> objects;
 };
 
-// Every query culls with Bullet's btDbvtBroadphase, one proxy per rectangle, exactly its box.
+// Every query culls with Bullet's btDbvtBroadphase, one proxy per rectangle, exactly its box;
+// a small map by testing all the boxes.
 struct CollisionWorld::Impl {
   explicit Impl(const std::vector<Rect>& rects) : first(rects.data()) {
+    if (rects.size() <= kLinearCullUpTo) {
+      for (const Rect& r : rects) boxes.push_back({r.min.x(), r.min.y(), r.max.x(), r.max.y()});
+      return;
+    }
     proxies.reserve(rects.size());
     for (const Rect& r : rects) {
       const btVector3 lo(static_cast<btScalar>(r.min.x()), static_cast<btScalar>(r.min.y()),
@@ -128,6 +130,14 @@ struct CollisionWorld::Impl {
 
   // Appends the indices of rectangles whose AABB touches `box` padded, unsorted.
   void Broadphase(const Rect& box, std::vector<int>* out) const {
+    if (!boxes.empty()) {
+      const std::size_t old = out->size();
+      out->resize(old + boxes.size());
+      const RelRect padded{box.min.x() - kBroadphasePad, box.min.y() - kBroadphasePad,
+                           box.max.x() + kBroadphasePad, box.max.y() + kBroadphasePad};
+      out->resize(old + RectIdsTouching(boxes, padded, out->data() + old));
+      return;
+    }
     const btVector3 lo(static_cast<btScalar>(box.min.x() - kBroadphasePad),
                        static_cast<btScalar>(box.min.y() - kBroadphasePad),
                        static_cast<btScalar>(-0.5 * kBoxHalfHeight));
@@ -140,6 +150,7 @@ struct CollisionWorld::Impl {
   }
 
   const Rect* first;
+  std::vector<RelRect> boxes;  // every rectangle's, on a small map (then no proxies)
   btDbvtBroadphase broadphase;
   std::vector<btBroadphaseProxy*> proxies;
   // btDbvtBroadphase::rayTest shares one traversal stack (no BT_THREADSAFE): serialise; builds
@@ -248,54 +259,28 @@ void CollisionWorld::CastRays(const Vec2& origin, std::span<const Vec2> world_di
 void CollisionWorld::SightLines(const Vec2& origin, std::span<const Vec2> ends, double* lengths,
                                 std::uint8_t* blocked) const {
   Scratch& s = ThreadScratch<Scratch>();
-  s.directions.clear();
-  Rect box{origin, origin};
-  for (std::size_t k = 0; k < ends.size(); ++k) {
+  const std::size_t n = ends.size();
+  s.directions.resize(n);
+  s.offsets.resize(n);
+  Vec2 lo = origin, hi = origin;
+  for (std::size_t k = 0; k < n; ++k) {
     const Vec2 to = ends[k] - origin;
+    s.offsets[k] = to;
     lengths[k] = to.norm();
-    s.directions.push_back(lengths[k] > 0.0 ? Vec2(to / lengths[k]) : Vec2(1.0, 0.0));
-    box.min = box.min.cwiseMin(ends[k]);
-    box.max = box.max.cwiseMax(ends[k]);
+    s.directions[k] = lengths[k] > 0.0 ? Vec2(to / lengths[k]) : Vec2(1.0, 0.0);
+    lo = lo.cwiseMin(ends[k]);
+    hi = hi.cwiseMax(ends[k]);
   }
   s.ids.clear();
   s.rects.clear();
-  if (impl_) impl_->Broadphase(box.Inflated(kSightPad), &s.ids);
+  if (impl_) impl_->Broadphase(Rect{lo, hi}.Inflated(kSightPad), &s.ids);
   for (int i : s.ids) {
     const Rect& r = map_->rectangles[i];
     s.rects.push_back({r.min.x() - origin.x(), r.min.y() - origin.y(), r.max.x() - origin.x(),
                        r.max.y() - origin.y()});
   }
-  const std::span<const Vec2> directions = s.directions;
-  // Few rectangles: one scan of every line (culling would cost more than it saves).
-  const bool cull = s.rects.size() > kSightCullFrom;
-  const std::size_t group_size = cull ? 4 : ends.size();
   s.group.resize(s.rects.size());
-  s.ranges.resize(ends.size());
-  for (std::size_t first = 0; first < ends.size(); first += group_size) {
-    const std::size_t count = std::min(group_size, ends.size() - first);
-    std::span<const RelRect> near_rects = s.rects;
-    double farthest = 0.0;
-    for (std::size_t k = first; k < first + count; ++k) farthest = std::max(farthest, lengths[k]);
-    if (cull) {
-      // The four lines' box, relative to the origin, padded: only rectangles touching it can
-      // meet them before their ends.
-      RelRect near{-kSightPad, -kSightPad, kSightPad, kSightPad};
-      for (std::size_t k = first; k < first + count; ++k) {
-        const Vec2 e = ends[k] - origin;
-        near = {std::min(near.x0, e.x() - kSightPad), std::min(near.y0, e.y() - kSightPad),
-                std::max(near.x1, e.x() + kSightPad), std::max(near.y1, e.y() + kSightPad)};
-      }
-      near_rects = {s.group.data(), RectsTouching(s.rects, near, s.group.data())};
-    }
-    double* ranges = s.ranges.data() + first;
-    if (near_rects.empty()) {
-      std::fill(ranges, ranges + count, kInfinity);
-    } else {
-      ScanBeams(directions.subspan(first, count), farthest + 1.0, near_rects, {}, ranges);
-    }
-    for (std::size_t k = first; k < first + count; ++k)
-      blocked[k] = s.ranges[k] < lengths[k] ? 1 : 0;
-  }
+  ScanSightLines(s.offsets, s.directions, lengths, s.rects, s.group.data(), blocked);
 }
 
 void CollisionWorld::CastRaysBullet(const Vec2& origin, std::span<const double> world_angles,

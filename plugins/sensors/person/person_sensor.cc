@@ -108,6 +108,14 @@ Occlusion OcclusionFrom(const std::string& name) {
   return Occlusion::kNone;
 }
 
+// Which eighth of the circle v points into, counter-clockwise from the x axis (0-7).
+std::uint8_t Octant(const Vec2& v) {
+  static constexpr std::array<std::uint8_t, 8> kByKey{0, 1, 3, 2, 7, 6, 4, 5};
+  const unsigned key = (v.y() < 0.0 ? 4U : 0U) | (v.x() < 0.0 ? 2U : 0U) |
+                       (std::abs(v.y()) > std::abs(v.x()) ? 1U : 0U);
+  return kByKey[key];
+}
+
 // Whether the segment a-b passes closer than `radius` to `center`.
 bool SegmentMeetsDisc(const Vec2& a, const Vec2& b, const Vec2& center, double radius) {
   const Vec2 ab = b - a;
@@ -174,6 +182,8 @@ struct Memo {
 // One thread's buffers and tracker memos: one thread-local lookup a reading.
 struct PersonSensor::Scratch {
   std::vector<std::size_t> detected;  // candidates, then the seen
+  std::vector<std::uint8_t> octant;   // of each candidate's bearing
+  std::vector<std::size_t> line;      // each candidate's first sight line
   std::vector<Vec2> ends;             // of the sight lines
   std::vector<double> lengths;
   std::vector<std::uint8_t> blocked;  // by a rectangle
@@ -185,18 +195,31 @@ struct PersonSensor::Scratch {
 };
 
 void PersonSensor::Unoccluded(const SenseInput& in, Scratch& s) const {
-  // Three sight lines a person (its centre, either edge of its disc), all tested in one query:
-  // one broadphase query for the whole reading.
+  // Three sight lines a person (its centre, either edge of its disc), all tested in one query.
+  // People go to it by octant of bearing (a counting sort), so that each four lines it culls
+  // together point roughly one way.
   std::vector<std::size_t>* candidates = &s.detected;
-  s.ends.clear();
+  const std::size_t m = candidates->size();
   const Vec2& eye = in.frame.origin;
-  for (const std::size_t i : *candidates) {
-    const AgentState& h = in.humans[i];
+  std::array<std::size_t, 9> start{};
+  s.octant.resize(m);
+  for (std::size_t c = 0; c < m; ++c) {
+    s.octant[c] = Octant(in.humans[(*candidates)[c]].position - eye);
+    ++start[s.octant[c] + 1];
+  }
+  for (std::size_t o = 1; o < start.size(); ++o) start[o] += start[o - 1];
+  s.ends.resize(3 * m);
+  s.line.resize(m);
+  for (std::size_t c = 0; c < m; ++c) {
+    const std::size_t first = 3 * start[s.octant[c]]++;
+    s.line[c] = first;
+    const AgentState& h = in.humans[(*candidates)[c]];
     const Vec2 to = h.position - eye;
     const double d = to.norm();
     const Vec2 side = d > 0.0 ? Vec2(Vec2(-to.y(), to.x()) * (h.radius / d)) : Vec2::Zero();
-    for (const Vec2& end : {h.position, Vec2(h.position + side), Vec2(h.position - side)})
-      s.ends.push_back(end);
+    s.ends[first] = h.position;
+    s.ends[first + 1] = h.position + side;
+    s.ends[first + 2] = h.position - side;
   }
   if (occlusion_ == Occlusion::kObstaclesAndPeople) {
     s.near.resize(in.humans.size());
@@ -207,10 +230,11 @@ void PersonSensor::Unoccluded(const SenseInput& in, Scratch& s) const {
   s.blocked.resize(s.ends.size());
   in.world.SightLines(eye, s.ends, s.lengths.data(), s.blocked.data());
   std::size_t kept = 0;
-  for (std::size_t c = 0; c < candidates->size(); ++c) {
+  for (std::size_t c = 0; c < m; ++c) {
     const std::size_t i = (*candidates)[c];
-    bool seen = s.lengths[3 * c] <= in.humans[i].radius;  // touching: nothing lies between
-    for (std::size_t k = 3 * c; k < 3 * c + 3 && !seen; ++k) {
+    const std::size_t first = s.line[c];
+    bool seen = s.lengths[first] <= in.humans[i].radius;  // touching: nothing lies between
+    for (std::size_t k = first; k < first + 3 && !seen; ++k) {
       if (s.blocked[k]) continue;  // a rectangle first
       seen = occlusion_ != Occlusion::kObstaclesAndPeople ||
              !PersonInTheWay(in, s.ends[k], s.lengths[k], i, s.near);
